@@ -1,0 +1,27 @@
+// Runtime HLSL -> SPIR-V compilation (glslang's HLSL front end, in process),
+// with the same options and binding shifts as the build-time compile, for
+// "reload shaders" and for tests.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "d3dl/Bindings.h"
+#include "d3dl/Types.h"
+
+namespace d3dl {
+
+struct ShaderCompileDesc {
+  std::string SourcePath;   // used for #include resolution and messages
+  std::string Source;       // if empty, read from SourcePath
+  std::string EntryPoint = "main";
+  ShaderStage Stage = ShaderStage::Vertex;
+  std::vector<std::pair<std::string, std::string>> Defines;
+};
+
+// Returns S_OK and fills spirv, or E_FAIL with the compiler's messages in errors.
+HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
+                    std::string* errors);
+
+}  // namespace d3dl

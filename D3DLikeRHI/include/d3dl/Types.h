@@ -1,0 +1,521 @@
+// D3DLikeRHI public types: plain D3D11-style enums and *_DESC structs.
+//
+// Enum values are Direct3D 11's own numbers, so code and constants from the
+// D3D11 documentation (filter bit layout, formats) carry over unchanged.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace d3dl {
+
+using HRESULT = int32_t;
+using UINT = uint32_t;
+using UINT64 = uint64_t;
+using BOOL = int32_t;
+
+inline constexpr HRESULT S_OK = 0;
+inline constexpr HRESULT S_FALSE = 1;  // query data not ready yet
+inline constexpr HRESULT E_NOTIMPL = static_cast<HRESULT>(0x80004001u);
+inline constexpr HRESULT E_FAIL = static_cast<HRESULT>(0x80004005u);
+inline constexpr HRESULT E_OUTOFMEMORY = static_cast<HRESULT>(0x8007000Eu);
+inline constexpr HRESULT E_INVALIDARG = static_cast<HRESULT>(0x80070057u);
+inline constexpr HRESULT DXGI_ERROR_UNSUPPORTED = static_cast<HRESULT>(0x887A0004u);
+inline constexpr HRESULT DXGI_ERROR_DEVICE_REMOVED = static_cast<HRESULT>(0x887A0005u);
+inline constexpr HRESULT DXGI_ERROR_WAS_STILL_DRAWING = static_cast<HRESULT>(0x887A000Au);
+inline constexpr HRESULT DXGI_STATUS_OCCLUDED = static_cast<HRESULT>(0x087A0001u);
+
+inline constexpr bool SUCCEEDED(HRESULT hr) { return hr >= 0; }
+inline constexpr bool FAILED(HRESULT hr) { return hr < 0; }
+
+// Human-readable name of an HRESULT ("E_INVALIDARG", ...).
+const char* HResultName(HRESULT hr);
+
+// ---------------------------------------------------------------------------
+// Formats (DXGI_FORMAT numbering; only the subset the sample and loaders need).
+enum DXGI_FORMAT : uint32_t {
+  DXGI_FORMAT_UNKNOWN = 0,
+  DXGI_FORMAT_R32G32B32A32_FLOAT = 2,
+  DXGI_FORMAT_R32G32B32_FLOAT = 6,
+  DXGI_FORMAT_R16G16B16A16_FLOAT = 10,
+  DXGI_FORMAT_R16G16B16A16_UNORM = 11,
+  DXGI_FORMAT_R32G32_FLOAT = 16,
+  DXGI_FORMAT_R10G10B10A2_UNORM = 24,
+  DXGI_FORMAT_R11G11B10_FLOAT = 26,
+  DXGI_FORMAT_R8G8B8A8_UNORM = 28,
+  DXGI_FORMAT_R8G8B8A8_UNORM_SRGB = 29,
+  DXGI_FORMAT_R8G8B8A8_UINT = 30,
+  DXGI_FORMAT_R16G16_FLOAT = 34,
+  DXGI_FORMAT_R32_TYPELESS = 39,  // depth texture that is also sampled
+  DXGI_FORMAT_D32_FLOAT = 40,
+  DXGI_FORMAT_R32_FLOAT = 41,
+  DXGI_FORMAT_R32_UINT = 42,
+  DXGI_FORMAT_R8G8_UNORM = 49,
+  DXGI_FORMAT_R16_FLOAT = 54,
+  DXGI_FORMAT_R16_UINT = 57,
+  DXGI_FORMAT_R8_UNORM = 61,
+  DXGI_FORMAT_BC1_UNORM = 71,
+  DXGI_FORMAT_BC1_UNORM_SRGB = 72,
+  DXGI_FORMAT_BC2_UNORM = 74,
+  DXGI_FORMAT_BC2_UNORM_SRGB = 75,
+  DXGI_FORMAT_BC3_UNORM = 77,
+  DXGI_FORMAT_BC3_UNORM_SRGB = 78,
+  DXGI_FORMAT_B8G8R8A8_UNORM = 87,
+  DXGI_FORMAT_B8G8R8A8_UNORM_SRGB = 91,
+};
+
+// Bytes per texel (or per 4x4 block for BC formats); 0 for unknown formats.
+UINT FormatBytesPerElement(DXGI_FORMAT format);
+bool FormatIsBlockCompressed(DXGI_FORMAT format);
+const char* FormatName(DXGI_FORMAT format);
+
+// ---------------------------------------------------------------------------
+// Resources
+enum USAGE : uint32_t {
+  USAGE_DEFAULT = 0,
+  USAGE_IMMUTABLE = 1,
+  USAGE_DYNAMIC = 2,
+  USAGE_STAGING = 3,
+};
+
+enum BIND_FLAG : uint32_t {
+  BIND_VERTEX_BUFFER = 0x1,
+  BIND_INDEX_BUFFER = 0x2,
+  BIND_CONSTANT_BUFFER = 0x4,
+  BIND_SHADER_RESOURCE = 0x8,
+  BIND_RENDER_TARGET = 0x20,
+  BIND_DEPTH_STENCIL = 0x40,
+};
+
+enum CPU_ACCESS_FLAG : uint32_t {
+  CPU_ACCESS_WRITE = 0x10000,
+  CPU_ACCESS_READ = 0x20000,
+};
+
+enum RESOURCE_MISC_FLAG : uint32_t {
+  RESOURCE_MISC_GENERATE_MIPS = 0x1,
+};
+
+enum RESOURCE_DIMENSION : uint32_t {
+  RESOURCE_DIMENSION_UNKNOWN = 0,
+  RESOURCE_DIMENSION_BUFFER = 1,
+  RESOURCE_DIMENSION_TEXTURE1D = 2,
+  RESOURCE_DIMENSION_TEXTURE2D = 3,
+};
+
+struct BUFFER_DESC {
+  UINT ByteWidth = 0;
+  USAGE Usage = USAGE_DEFAULT;
+  UINT BindFlags = 0;
+  UINT CPUAccessFlags = 0;
+  UINT MiscFlags = 0;
+  UINT StructureByteStride = 0;
+};
+
+struct SUBRESOURCE_DATA {
+  const void* pSysMem = nullptr;
+  UINT SysMemPitch = 0;       // bytes per row (textures)
+  UINT SysMemSlicePitch = 0;  // unused for 1-D/2-D
+};
+
+struct SAMPLE_DESC {
+  UINT Count = 1;
+  UINT Quality = 0;
+};
+
+struct TEXTURE1D_DESC {
+  UINT Width = 0;
+  UINT MipLevels = 1;  // 0 = full chain
+  UINT ArraySize = 1;
+  DXGI_FORMAT Format = DXGI_FORMAT_UNKNOWN;
+  USAGE Usage = USAGE_DEFAULT;
+  UINT BindFlags = 0;
+  UINT CPUAccessFlags = 0;
+  UINT MiscFlags = 0;
+};
+
+struct TEXTURE2D_DESC {
+  UINT Width = 0;
+  UINT Height = 0;
+  UINT MipLevels = 1;  // 0 = full chain
+  UINT ArraySize = 1;
+  DXGI_FORMAT Format = DXGI_FORMAT_UNKNOWN;
+  SAMPLE_DESC SampleDesc{};
+  USAGE Usage = USAGE_DEFAULT;
+  UINT BindFlags = 0;
+  UINT CPUAccessFlags = 0;
+  UINT MiscFlags = 0;
+};
+
+// Subresource index as in D3D11: MipSlice + ArraySlice * MipLevels.
+inline constexpr UINT CalcSubresource(UINT mipSlice, UINT arraySlice, UINT mipLevels) {
+  return mipSlice + arraySlice * mipLevels;
+}
+
+struct BOX {
+  UINT left = 0, top = 0, front = 0;
+  UINT right = 0, bottom = 0, back = 1;
+};
+
+struct RECT {
+  int32_t left = 0, top = 0, right = 0, bottom = 0;
+};
+
+// ---------------------------------------------------------------------------
+// Views
+enum SRV_DIMENSION : uint32_t {
+  SRV_DIMENSION_UNKNOWN = 0,
+  SRV_DIMENSION_TEXTURE1D = 2,
+  SRV_DIMENSION_TEXTURE2D = 4,
+};
+
+enum RTV_DIMENSION : uint32_t {
+  RTV_DIMENSION_UNKNOWN = 0,
+  RTV_DIMENSION_TEXTURE1D = 2,
+  RTV_DIMENSION_TEXTURE2D = 4,
+};
+
+enum DSV_DIMENSION : uint32_t {
+  DSV_DIMENSION_UNKNOWN = 0,
+  DSV_DIMENSION_TEXTURE2D = 3,
+};
+
+struct TEX_SRV {
+  UINT MostDetailedMip = 0;
+  UINT MipLevels = ~0u;  // ~0u = all from MostDetailedMip
+};
+
+struct SHADER_RESOURCE_VIEW_DESC {
+  DXGI_FORMAT Format = DXGI_FORMAT_UNKNOWN;  // UNKNOWN = the texture's format
+  SRV_DIMENSION ViewDimension = SRV_DIMENSION_UNKNOWN;
+  TEX_SRV Texture{};
+};
+
+struct RENDER_TARGET_VIEW_DESC {
+  DXGI_FORMAT Format = DXGI_FORMAT_UNKNOWN;
+  RTV_DIMENSION ViewDimension = RTV_DIMENSION_UNKNOWN;
+  UINT MipSlice = 0;
+};
+
+struct DEPTH_STENCIL_VIEW_DESC {
+  DXGI_FORMAT Format = DXGI_FORMAT_UNKNOWN;
+  DSV_DIMENSION ViewDimension = DSV_DIMENSION_UNKNOWN;
+  UINT Flags = 0;
+  UINT MipSlice = 0;
+};
+
+// ---------------------------------------------------------------------------
+// Sampler (D3D11_FILTER bit layout: min<<4 | mag<<2 | mip, 0x40 anisotropic,
+// 0x80 comparison, 0x100 minimum, 0x180 maximum reduction).
+enum FILTER : uint32_t {
+  FILTER_MIN_MAG_MIP_POINT = 0x0,
+  FILTER_MIN_MAG_POINT_MIP_LINEAR = 0x1,
+  FILTER_MIN_POINT_MAG_LINEAR_MIP_POINT = 0x4,
+  FILTER_MIN_POINT_MAG_MIP_LINEAR = 0x5,
+  FILTER_MIN_LINEAR_MAG_MIP_POINT = 0x10,
+  FILTER_MIN_LINEAR_MAG_POINT_MIP_LINEAR = 0x11,
+  FILTER_MIN_MAG_LINEAR_MIP_POINT = 0x14,
+  FILTER_MIN_MAG_MIP_LINEAR = 0x15,
+  FILTER_ANISOTROPIC = 0x55,
+  FILTER_COMPARISON_MIN_MAG_MIP_POINT = 0x80,
+  FILTER_COMPARISON_MIN_MAG_POINT_MIP_LINEAR = 0x81,
+  FILTER_COMPARISON_MIN_POINT_MAG_LINEAR_MIP_POINT = 0x84,
+  FILTER_COMPARISON_MIN_POINT_MAG_MIP_LINEAR = 0x85,
+  FILTER_COMPARISON_MIN_LINEAR_MAG_MIP_POINT = 0x90,
+  FILTER_COMPARISON_MIN_LINEAR_MAG_POINT_MIP_LINEAR = 0x91,
+  FILTER_COMPARISON_MIN_MAG_LINEAR_MIP_POINT = 0x94,
+  FILTER_COMPARISON_MIN_MAG_MIP_LINEAR = 0x95,
+  FILTER_COMPARISON_ANISOTROPIC = 0xD5,
+  FILTER_MINIMUM_MIN_MAG_MIP_POINT = 0x100,
+  FILTER_MINIMUM_MIN_MAG_MIP_LINEAR = 0x115,
+  FILTER_MINIMUM_ANISOTROPIC = 0x155,
+  FILTER_MAXIMUM_MIN_MAG_MIP_POINT = 0x180,
+  FILTER_MAXIMUM_MIN_MAG_MIP_LINEAR = 0x195,
+  FILTER_MAXIMUM_ANISOTROPIC = 0x1D5,
+};
+
+enum TEXTURE_ADDRESS_MODE : uint32_t {
+  TEXTURE_ADDRESS_WRAP = 1,
+  TEXTURE_ADDRESS_MIRROR = 2,
+  TEXTURE_ADDRESS_CLAMP = 3,
+  TEXTURE_ADDRESS_BORDER = 4,
+  TEXTURE_ADDRESS_MIRROR_ONCE = 5,
+};
+
+enum COMPARISON_FUNC : uint32_t {
+  COMPARISON_NEVER = 1,
+  COMPARISON_LESS = 2,
+  COMPARISON_EQUAL = 3,
+  COMPARISON_LESS_EQUAL = 4,
+  COMPARISON_GREATER = 5,
+  COMPARISON_NOT_EQUAL = 6,
+  COMPARISON_GREATER_EQUAL = 7,
+  COMPARISON_ALWAYS = 8,
+};
+
+inline constexpr float FLOAT32_MAX = 3.402823466e+38f;
+
+struct SAMPLER_DESC {
+  FILTER Filter = FILTER_MIN_MAG_MIP_LINEAR;
+  TEXTURE_ADDRESS_MODE AddressU = TEXTURE_ADDRESS_CLAMP;
+  TEXTURE_ADDRESS_MODE AddressV = TEXTURE_ADDRESS_CLAMP;
+  TEXTURE_ADDRESS_MODE AddressW = TEXTURE_ADDRESS_CLAMP;
+  float MipLODBias = 0.0f;
+  UINT MaxAnisotropy = 1;
+  COMPARISON_FUNC ComparisonFunc = COMPARISON_NEVER;
+  float BorderColor[4] = {1.0f, 1.0f, 1.0f, 1.0f};
+  float MinLOD = -FLOAT32_MAX;
+  float MaxLOD = FLOAT32_MAX;
+};
+
+// ---------------------------------------------------------------------------
+// Output merger / rasterizer state
+enum BLEND : uint32_t {
+  BLEND_ZERO = 1,
+  BLEND_ONE = 2,
+  BLEND_SRC_COLOR = 3,
+  BLEND_INV_SRC_COLOR = 4,
+  BLEND_SRC_ALPHA = 5,
+  BLEND_INV_SRC_ALPHA = 6,
+  BLEND_DEST_ALPHA = 7,
+  BLEND_INV_DEST_ALPHA = 8,
+  BLEND_DEST_COLOR = 9,
+  BLEND_INV_DEST_COLOR = 10,
+  BLEND_SRC_ALPHA_SAT = 11,
+  BLEND_BLEND_FACTOR = 14,
+  BLEND_INV_BLEND_FACTOR = 15,
+};
+
+enum BLEND_OP : uint32_t {
+  BLEND_OP_ADD = 1,
+  BLEND_OP_SUBTRACT = 2,
+  BLEND_OP_REV_SUBTRACT = 3,
+  BLEND_OP_MIN = 4,
+  BLEND_OP_MAX = 5,
+};
+
+enum COLOR_WRITE_ENABLE : uint8_t {
+  COLOR_WRITE_ENABLE_RED = 1,
+  COLOR_WRITE_ENABLE_GREEN = 2,
+  COLOR_WRITE_ENABLE_BLUE = 4,
+  COLOR_WRITE_ENABLE_ALPHA = 8,
+  COLOR_WRITE_ENABLE_ALL = 15,
+};
+
+inline constexpr UINT SIMULTANEOUS_RENDER_TARGET_COUNT = 8;
+
+struct RENDER_TARGET_BLEND_DESC {
+  BOOL BlendEnable = 0;
+  BLEND SrcBlend = BLEND_ONE;
+  BLEND DestBlend = BLEND_ZERO;
+  BLEND_OP BlendOp = BLEND_OP_ADD;
+  BLEND SrcBlendAlpha = BLEND_ONE;
+  BLEND DestBlendAlpha = BLEND_ZERO;
+  BLEND_OP BlendOpAlpha = BLEND_OP_ADD;
+  uint8_t RenderTargetWriteMask = COLOR_WRITE_ENABLE_ALL;
+};
+
+struct BLEND_DESC {
+  BOOL AlphaToCoverageEnable = 0;
+  BOOL IndependentBlendEnable = 0;
+  RENDER_TARGET_BLEND_DESC RenderTarget[SIMULTANEOUS_RENDER_TARGET_COUNT]{};
+};
+
+enum DEPTH_WRITE_MASK : uint32_t {
+  DEPTH_WRITE_MASK_ZERO = 0,
+  DEPTH_WRITE_MASK_ALL = 1,
+};
+
+enum STENCIL_OP : uint32_t {
+  STENCIL_OP_KEEP = 1,
+  STENCIL_OP_ZERO = 2,
+  STENCIL_OP_REPLACE = 3,
+  STENCIL_OP_INCR_SAT = 4,
+  STENCIL_OP_DECR_SAT = 5,
+  STENCIL_OP_INVERT = 6,
+  STENCIL_OP_INCR = 7,
+  STENCIL_OP_DECR = 8,
+};
+
+struct DEPTH_STENCILOP_DESC {
+  STENCIL_OP StencilFailOp = STENCIL_OP_KEEP;
+  STENCIL_OP StencilDepthFailOp = STENCIL_OP_KEEP;
+  STENCIL_OP StencilPassOp = STENCIL_OP_KEEP;
+  COMPARISON_FUNC StencilFunc = COMPARISON_ALWAYS;
+};
+
+struct DEPTH_STENCIL_DESC {
+  BOOL DepthEnable = 1;
+  DEPTH_WRITE_MASK DepthWriteMask = DEPTH_WRITE_MASK_ALL;
+  COMPARISON_FUNC DepthFunc = COMPARISON_LESS;
+  BOOL StencilEnable = 0;
+  uint8_t StencilReadMask = 0xff;
+  uint8_t StencilWriteMask = 0xff;
+  DEPTH_STENCILOP_DESC FrontFace{};
+  DEPTH_STENCILOP_DESC BackFace{};
+};
+
+enum FILL_MODE : uint32_t {
+  FILL_WIREFRAME = 2,
+  FILL_SOLID = 3,
+};
+
+enum CULL_MODE : uint32_t {
+  CULL_NONE = 1,
+  CULL_FRONT = 2,
+  CULL_BACK = 3,
+};
+
+struct RASTERIZER_DESC {
+  FILL_MODE FillMode = FILL_SOLID;
+  CULL_MODE CullMode = CULL_BACK;
+  BOOL FrontCounterClockwise = 0;  // D3D default: clockwise triangles face front
+  int32_t DepthBias = 0;
+  float DepthBiasClamp = 0.0f;
+  float SlopeScaledDepthBias = 0.0f;
+  BOOL DepthClipEnable = 1;
+  BOOL ScissorEnable = 0;
+  BOOL MultisampleEnable = 0;
+  BOOL AntialiasedLineEnable = 0;
+};
+
+// ---------------------------------------------------------------------------
+// Input assembler
+enum PRIMITIVE_TOPOLOGY : uint32_t {
+  PRIMITIVE_TOPOLOGY_UNDEFINED = 0,
+  PRIMITIVE_TOPOLOGY_POINTLIST = 1,
+  PRIMITIVE_TOPOLOGY_LINELIST = 2,
+  PRIMITIVE_TOPOLOGY_LINESTRIP = 3,
+  PRIMITIVE_TOPOLOGY_TRIANGLELIST = 4,
+  PRIMITIVE_TOPOLOGY_TRIANGLESTRIP = 5,
+};
+
+enum INPUT_CLASSIFICATION : uint32_t {
+  INPUT_PER_VERTEX_DATA = 0,
+  INPUT_PER_INSTANCE_DATA = 1,
+};
+
+inline constexpr UINT APPEND_ALIGNED_ELEMENT = 0xffffffffu;
+inline constexpr UINT IA_VERTEX_INPUT_RESOURCE_SLOT_COUNT = 16;
+
+struct INPUT_ELEMENT_DESC {
+  const char* SemanticName = nullptr;
+  UINT SemanticIndex = 0;
+  DXGI_FORMAT Format = DXGI_FORMAT_UNKNOWN;
+  UINT InputSlot = 0;
+  UINT AlignedByteOffset = APPEND_ALIGNED_ELEMENT;
+  INPUT_CLASSIFICATION InputSlotClass = INPUT_PER_VERTEX_DATA;
+  UINT InstanceDataStepRate = 0;
+};
+
+struct VIEWPORT {
+  float TopLeftX = 0.0f;
+  float TopLeftY = 0.0f;
+  float Width = 0.0f;
+  float Height = 0.0f;
+  float MinDepth = 0.0f;
+  float MaxDepth = 1.0f;
+};
+
+// ---------------------------------------------------------------------------
+// Context operations
+enum MAP : uint32_t {
+  MAP_READ = 1,
+  MAP_WRITE = 2,
+  MAP_READ_WRITE = 3,
+  MAP_WRITE_DISCARD = 4,
+  MAP_WRITE_NO_OVERWRITE = 5,
+};
+
+enum MAP_FLAG : uint32_t {
+  MAP_FLAG_DO_NOT_WAIT = 0x100000,
+};
+
+struct MAPPED_SUBRESOURCE {
+  void* pData = nullptr;
+  UINT RowPitch = 0;
+  UINT DepthPitch = 0;
+};
+
+enum CLEAR_FLAG : uint32_t {
+  CLEAR_DEPTH = 0x1,
+  CLEAR_STENCIL = 0x2,
+};
+
+// ---------------------------------------------------------------------------
+// Queries
+enum QUERY : uint32_t {
+  QUERY_EVENT = 0,
+  QUERY_TIMESTAMP = 2,
+  QUERY_TIMESTAMP_DISJOINT = 3,
+};
+
+struct QUERY_DESC {
+  QUERY Query = QUERY_EVENT;
+  UINT MiscFlags = 0;
+};
+
+struct QUERY_DATA_TIMESTAMP_DISJOINT {
+  UINT64 Frequency = 0;  // ticks per second
+  BOOL Disjoint = 0;
+};
+
+enum ASYNC_GETDATA_FLAG : uint32_t {
+  ASYNC_GETDATA_DONOTFLUSH = 0x1,
+};
+
+// ---------------------------------------------------------------------------
+// Swap chain
+struct SWAP_CHAIN_DESC {
+  UINT Width = 0;   // 0 = the window's framebuffer size
+  UINT Height = 0;
+  DXGI_FORMAT Format = DXGI_FORMAT_R8G8B8A8_UNORM;
+  UINT BufferCount = 2;
+};
+
+// ---------------------------------------------------------------------------
+// Device creation and diagnostics
+enum class LogLevel : uint32_t { Info, Warning, Error, Validation };
+
+// Receives every message of the RHI, including Vulkan validation messages
+// (LogLevel::Validation). Called from the thread that made the API call.
+using LogCallback = void (*)(LogLevel level, const char* message, void* user);
+
+enum class ValidationMode : uint32_t {
+  FromEnvironment,  // D3DL_VALIDATION=0|1|sync decides (default: off)
+  Off,
+  Core,             // VK_LAYER_KHRONOS_validation
+  CoreAndSync,      // plus synchronization validation
+};
+
+struct DEVICE_CREATE_DESC {
+  ValidationMode Validation = ValidationMode::FromEnvironment;
+  LogCallback Log = nullptr;  // nullptr = print warnings and errors to stderr
+  void* LogUser = nullptr;
+  UINT FramesInFlight = 2;    // frames the CPU may record ahead of the GPU
+  bool EnableWindowSurfaces = true;  // request the GLFW surface extensions
+  const char* AdapterNameFilter = nullptr;  // substring of the adapter name, or D3DL_ADAPTER
+  const char* ApplicationName = "D3DLikeRHI";
+};
+
+struct ADAPTER_DESC {
+  char Description[256] = {};  // "llvmpipe (LLVM 15.0.6, 256 bits)", "NVIDIA H100 ..."
+  char Driver[256] = {};       // "Mesa 22.3.6 (LLVM 15.0.6)"
+  UINT VendorId = 0;
+  UINT DeviceId = 0;
+  UINT ApiVersion = 0;
+  bool IsSoftware = false;
+  bool SupportsBC = false;
+  float TimestampPeriodNs = 1.0f;
+};
+
+struct DEVICE_STATS {
+  UINT64 ValidationMessages = 0;  // since device creation
+  UINT64 PipelinesCreated = 0;
+  UINT64 DescriptorSetsAllocated = 0;
+  UINT64 DrawCalls = 0;
+  UINT64 RingBytesAllocated = 0;
+  UINT64 FramesSubmitted = 0;
+};
+
+}  // namespace d3dl

@@ -1,0 +1,58 @@
+# HLSL -> SPIR-V at build time with glslang's HLSL front end.
+#
+# D3D register slots map to Vulkan bindings (descriptor set 0) by ONE formula,
+# the same one D3DLikeRHI/include/d3dl/Bindings.h states and the RHI tests check:
+#
+#   binding = 64 * stage + classBase + slot
+#   stage:     VS = 0, PS = 1
+#   classBase: b# (cbuffer) = 0   (slots 0..13)
+#              t# (texture) = 16  (slots 0..31)
+#              s# (sampler) = 48  (slots 0..15)
+#
+# It is applied with glslang's per-stage binding shifts, so the HLSL keeps its
+# register(b0)/register(t3)/register(s1) annotations unchanged.
+set(D3DL_STAGE_STRIDE 64)
+set(D3DL_CBUFFER_BASE 0)
+set(D3DL_TEXTURE_BASE 16)
+set(D3DL_SAMPLER_BASE 48)
+
+# d3dl_hlsl_shift_args(<out-var> <stage: vert|frag>)
+function(d3dl_hlsl_shift_args out stage)
+  if(stage STREQUAL "vert")
+    set(index 0)
+  elseif(stage STREQUAL "frag")
+    set(index 1)
+  else()
+    message(FATAL_ERROR "d3dl: unsupported shader stage '${stage}'")
+  endif()
+  math(EXPR base "${D3DL_STAGE_STRIDE} * ${index}")
+  math(EXPR cb "${base} + ${D3DL_CBUFFER_BASE}")
+  math(EXPR tex "${base} + ${D3DL_TEXTURE_BASE}")
+  math(EXPR smp "${base} + ${D3DL_SAMPLER_BASE}")
+  set(${out}
+      --shift-UBO-binding ${stage} ${cb}
+      --shift-texture-binding ${stage} ${tex}
+      --shift-sampler-binding ${stage} ${smp}
+      PARENT_SCOPE)
+endfunction()
+
+# d3dl_compile_hlsl(OUTPUT <spv> SOURCE <hlsl> ENTRY <name> STAGE <vert|frag>
+#                   [DEFINES A=1 B ...] [DEPENDS extra headers...])
+# Produces one .spv; only this shader rebuilds when its source or headers change.
+function(d3dl_compile_hlsl)
+  cmake_parse_arguments(A "" "OUTPUT;SOURCE;ENTRY;STAGE" "DEFINES;DEPENDS" ${ARGN})
+  d3dl_hlsl_shift_args(shifts ${A_STAGE})
+  set(defs)
+  foreach(d IN LISTS A_DEFINES)
+    list(APPEND defs "-D${d}")
+  endforeach()
+  get_filename_component(src_dir ${A_SOURCE} DIRECTORY)
+  add_custom_command(
+    OUTPUT ${A_OUTPUT}
+    COMMAND ${GLSLANG_VALIDATOR} -D -V --target-env vulkan1.3 -fhlsl_functionality1
+            --hlsl-offsets -S ${A_STAGE} -e ${A_ENTRY} ${shifts} ${defs}
+            -I${src_dir} -o ${A_OUTPUT} ${A_SOURCE}
+    DEPENDS ${A_SOURCE} ${A_DEPENDS}
+    COMMENT "HLSL ${A_ENTRY} (${A_STAGE}) -> ${A_OUTPUT}"
+    VERBATIM)
+endfunction()
