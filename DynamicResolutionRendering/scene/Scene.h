@@ -1,0 +1,85 @@
+// The scene of the sample: models listed in a scene description (or a single
+// model file), their animation, the cameras, and the forward renderer that
+// writes colour (RT0) and velocity (RT1), as the original's Scene class.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <glm/gtc/constants.hpp>
+
+#include "scene/SceneVertex.h"
+
+namespace d3dl {
+class Device;
+class DeviceContext;
+}  // namespace d3dl
+
+namespace drr {
+
+struct SceneLoadOptions {
+  std::string shaderDir;  // folder of the compiled scene_*.spv; empty = the build's shader folder
+  bool verbose = false;   // print what is loaded (and the warnings) to stdout
+};
+
+struct CameraPose {
+  glm::mat4 view;
+  glm::vec3 position;
+  float fovY = glm::radians(45.f);
+  float nearZ = 20.f;
+  float farZ = 400000.f;
+};
+
+struct SceneRenderParams {
+  glm::mat4 view{1.f};
+  glm::mat4 proj{1.f};          // glm::perspectiveRH_ZO: right-handed world, clip depth 0..1, +Y up (D3D clip)
+  glm::vec2 jitterNdc{0.f};     // added to NDC x,y: clip = T(jitter) * proj * view * world, on current AND previous WVP
+  bool mipBiasSampler = false;  // TAA on: sampler with MipLODBias = -0.5 instead of the anisotropic x16 wrap sampler
+  bool writeVelocity = true;    // RT1 (R16G16_FLOAT) is bound; false = shader variant without the velocity output
+  bool resetHistory = false;    // camera cut / first frame: previous WVP := current WVP
+  bool showCameras = false;     // draw CAMERA entries' models
+};
+
+struct SceneStats {
+  uint32_t drawsIssued = 0, drawsCulled = 0, shaderVariantsUsed = 0, texturesLoaded = 0;
+  uint64_t textureBytes = 0, vertexBytes = 0, indexBytes = 0;
+  uint64_t triangles = 0;  // of the whole scene (drawn or not)
+  std::string ToString() const;
+};
+
+struct SceneImpl;
+
+class Scene {
+ public:
+  // path: a scene description file, or a single model file (framed by an automatic camera).
+  static std::unique_ptr<Scene> Load(d3dl::Device* device, const std::string& path,
+                                     const SceneLoadOptions& opts, std::string* error);
+  ~Scene();
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  void Update(double timeSeconds);  // animation (bell, cinematic camera path), loops
+  int CameraCount() const;
+  const std::string& CameraName(int i) const;
+  CameraPose Camera(int i) const;
+  int DefaultCamera() const;  // 1 as in the original (0 = cinematic, 1 and 2 = static)
+  // Caller has set RTVs, DSV and viewport; Render sets everything else it needs.
+  void Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p);
+  SceneStats Stats() const;
+  bool ReloadShaders(std::string* error);  // F4
+
+  // Additions: warnings gathered while loading (missing textures, repaired data).
+  const std::vector<std::string>& Warnings() const;
+  // World-space bounds of everything drawn (for framing and tests).
+  glm::vec3 BoundsMin() const;
+  glm::vec3 BoundsMax() const;
+
+ private:
+  Scene();
+  std::unique_ptr<SceneImpl> impl_;
+};
+
+}  // namespace drr
