@@ -1,0 +1,135 @@
+// drr_rhi_bench: CPU cost of recording N draws with changing constants,
+// D3DLikeRHI against hand-written Vulkan, in one process, side by side.
+// Only recording is timed; submission and the wait are excluded for both.
+//
+//   drr_rhi_bench [--draws N] [google benchmark flags]   timings + ratio
+//   drr_rhi_bench --smoke                                  correctness only
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "Recorder.h"
+
+namespace drrbench {
+
+DrawConstants ConstantsForDraw(uint32_t i, uint32_t n) {
+  // A grid of triangles over the target, colours from the index.
+  const uint32_t side = static_cast<uint32_t>(std::ceil(std::sqrt(double(n))));
+  const float fx = (float(i % side) + 0.5f) / float(side);
+  const float fy = (float(i / side) + 0.5f) / float(side);
+  DrawConstants c{};
+  c.offset[0] = fx * 2.0f - 1.0f;
+  c.offset[1] = 1.0f - fy * 2.0f;
+  c.color[0] = float(i % 7) / 6.0f;
+  c.color[1] = float(i % 5) / 4.0f;
+  c.color[2] = float(i % 3) / 2.0f;
+  c.color[3] = 1.0f;
+  return c;
+}
+
+namespace {
+
+std::unique_ptr<Recorder> Make(bool rhi) {
+  std::unique_ptr<Recorder> r(rhi ? CreateRhiRecorder() : CreateRawVulkanRecorder());
+  std::string error;
+  if (!r->Init(&error)) {
+    std::fprintf(stderr, "%s recorder: %s\n", rhi ? "rhi" : "raw", error.c_str());
+    std::exit(1);
+  }
+  return r;
+}
+
+void RecordDraws(benchmark::State& state, bool rhi) {
+  static std::unique_ptr<Recorder> recorders[2];
+  auto& rec = recorders[rhi ? 1 : 0];
+  if (!rec) rec = Make(rhi);
+  const auto n = static_cast<uint32_t>(state.range(0));
+  for (auto _ : state) {
+    rec->Record(n);
+    state.PauseTiming();
+    rec->SubmitAndWait();
+    state.ResumeTiming();
+  }
+  state.SetItemsProcessed(int64_t(state.iterations()) * n);
+}
+
+void BM_RawVulkan(benchmark::State& s) { RecordDraws(s, false); }
+void BM_D3DLikeRHI(benchmark::State& s) { RecordDraws(s, true); }
+
+// Keeps the mean real time of each benchmark to print the ratio at the end.
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& run : runs) {
+      if (run.run_type == Run::RT_Aggregate && run.aggregate_name != "median") continue;
+      const std::string name = run.run_name.function_name;
+      times[name] = run.GetAdjustedRealTime();
+    }
+  }
+  std::map<std::string, double> times;
+};
+
+int Smoke() {
+  constexpr uint32_t kDraws = 200;
+  auto raw = Make(false);
+  auto rhi = Make(true);
+  raw->Record(kDraws);
+  raw->SubmitAndWait();
+  rhi->Record(kDraws);
+  rhi->SubmitAndWait();
+  const auto a = raw->ReadBack();
+  const auto b = rhi->ReadBack();
+  size_t differing = 0, lit = 0;
+  for (size_t i = 0; i + 3 < a.size() && i + 3 < b.size(); i += 4) {
+    if (std::memcmp(&a[i], &b[i], 4) != 0) ++differing;
+    if (a[i + 3] != 0) ++lit;
+  }
+  const uint64_t messages = raw->ValidationMessages() + rhi->ValidationMessages();
+  std::printf("smoke: %u draws, %zu lit pixels, %zu differing pixels, %llu validation messages\n",
+              kDraws, lit, differing, static_cast<unsigned long long>(messages));
+  const bool ok = a.size() == b.size() && !a.empty() && differing == 0 && lit > 0 && messages == 0;
+  std::printf("%d passed, %d failed\n", ok ? 1 : 0, ok ? 0 : 1);
+  return ok ? 0 : 1;
+}
+
+}  // namespace
+}  // namespace drrbench
+
+int main(int argc, char** argv) {
+  int64_t draws = 10000;
+  std::vector<char*> args;
+  for (int i = 0; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--smoke") == 0) return drrbench::Smoke();
+    if (std::strcmp(argv[i], "--draws") == 0 && i + 1 < argc) {
+      char* end = nullptr;
+      draws = std::strtoll(argv[++i], &end, 10);
+      if (!end || *end || draws < 1 || draws > 1000000) {
+        std::fprintf(stderr, "--draws: expected an integer in [1, 1000000], got '%s'\n", argv[i]);
+        return 2;
+      }
+      continue;
+    }
+    args.push_back(argv[i]);
+  }
+  benchmark::RegisterBenchmark("BM_RawVulkan", drrbench::BM_RawVulkan)->Arg(draws)->Unit(benchmark::kMillisecond);
+  benchmark::RegisterBenchmark("BM_D3DLikeRHI", drrbench::BM_D3DLikeRHI)->Arg(draws)->Unit(benchmark::kMillisecond);
+  int n = static_cast<int>(args.size());
+  benchmark::Initialize(&n, args.data());
+  drrbench::RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  const auto raw = reporter.times.find("BM_RawVulkan");
+  const auto rhi = reporter.times.find("BM_D3DLikeRHI");
+  if (raw != reporter.times.end() && rhi != reporter.times.end() && raw->second > 0) {
+    std::printf("ratio D3DLikeRHI / raw Vulkan recording (%lld draws): %.3f\n",
+                static_cast<long long>(draws), rhi->second / raw->second);
+  }
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,37 @@
+// Two ways of recording the same frame: N draws of one triangle whose
+// constants (offset, colour) change every draw. Used by RecordBenchmark.cpp.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace drrbench {
+
+inline constexpr uint32_t kTargetSize = 64;
+
+struct DrawConstants {
+  float offset[4];
+  float color[4];
+};
+
+// Deterministic constants for draw i of n (positions spread over the target).
+DrawConstants ConstantsForDraw(uint32_t i, uint32_t n);
+
+class Recorder {
+ public:
+  virtual ~Recorder() = default;
+  virtual bool Init(std::string* error) = 0;
+  // Records the frame (timed part): the target is cleared, then n draws.
+  virtual void Record(uint32_t n) = 0;
+  // Submits what Record recorded and waits for it (not timed).
+  virtual void SubmitAndWait() = 0;
+  // RGBA8 pixels of the target after SubmitAndWait.
+  virtual std::vector<uint8_t> ReadBack() = 0;
+  virtual uint64_t ValidationMessages() const = 0;
+};
+
+Recorder* CreateRawVulkanRecorder();
+Recorder* CreateRhiRecorder();
+
+}  // namespace drrbench
