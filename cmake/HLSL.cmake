@@ -47,6 +47,10 @@ function(d3dl_compile_hlsl)
     list(APPEND defs "-D${d}")
   endforeach()
   get_filename_component(src_dir ${A_SOURCE} DIRECTORY)
+  # Remembered for the manifest that the runtime-compiler test replays.
+  string(JOIN "," joined_defines ${A_DEFINES})
+  set_property(GLOBAL APPEND PROPERTY D3DL_HLSL_MANIFEST
+               "${A_SOURCE}|${A_ENTRY}|${A_STAGE}|${joined_defines}|${A_OUTPUT}")
   add_custom_command(
     OUTPUT ${A_OUTPUT}
     COMMAND ${GLSLANG_VALIDATOR} -D -V --target-env vulkan1.3 -fhlsl_functionality1
@@ -55,4 +59,12 @@ function(d3dl_compile_hlsl)
     DEPENDS ${A_SOURCE} ${A_DEPENDS}
     COMMENT "HLSL ${A_ENTRY} (${A_STAGE}) -> ${A_OUTPUT}"
     VERBATIM)
+endfunction()
+
+# Writes build/shader_manifest.txt: one line per compiled shader,
+# "source|entry|stage|DEF=1,DEF2|output.spv". Call once, after every unit.
+function(d3dl_write_hlsl_manifest)
+  get_property(entries GLOBAL PROPERTY D3DL_HLSL_MANIFEST)
+  string(JOIN "\n" text ${entries})
+  file(WRITE ${CMAKE_BINARY_DIR}/shader_manifest.txt "${text}\n")
 endfunction()

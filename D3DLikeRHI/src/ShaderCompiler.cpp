@@ -93,10 +93,11 @@ HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
     }
   }
 
-  // Defines go into a preamble, as -D does on the command line.
+  // Defines go into a preamble, as glslangValidator's -DNAME[=VALUE] does
+  // (an empty value defines the name as empty, not as 1).
   std::string preamble;
   for (const auto& [name, value] : desc.Defines) {
-    preamble += "#define " + name + (value.empty() ? std::string(" 1") : " " + value) + "\n";
+    preamble += "#define " + name + (value.empty() ? std::string() : " " + value) + "\n";
   }
 
   EnsureGlslangInitialised();
