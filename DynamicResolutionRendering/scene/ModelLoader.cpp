@@ -1,0 +1,544 @@
+#include "scene/ModelLoader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <limits>
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace drr {
+namespace fs = std::filesystem;
+
+namespace {
+
+glm::mat4 ToGlm(const aiMatrix4x4& m) {
+  // aiMatrix4x4 is row-major (a1..a4 = first row); glm is column-major.
+  return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4);
+}
+glm::vec3 ToGlm(const aiVector3D& v) { return {v.x, v.y, v.z}; }
+bool Finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+bool Finite(const glm::vec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+
+void OrthoBasis(const glm::vec3& n, glm::vec3* t, glm::vec3* b) {
+  glm::vec3 a = std::fabs(n.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);
+  *t = glm::normalize(glm::cross(a, n));
+  *b = glm::cross(n, *t);
+}
+
+template <class K, class V, class F>
+V SampleKeys(const std::vector<K>& keys, double t, const V& def, F interp) {
+  if (keys.empty()) return def;
+  if (keys.size() == 1 || t <= keys.front().time) return keys.front().value;
+  if (t >= keys.back().time) return keys.back().value;
+  auto it = std::upper_bound(keys.begin(), keys.end(), t, [](double v, const K& k) { return v < k.time; });
+  const K& b = *it;
+  const K& a = *(it - 1);
+  double span = b.time - a.time;
+  float f = span > 0 ? static_cast<float>((t - a.time) / span) : 0.f;
+  return interp(a.value, b.value, f);
+}
+
+std::string TexRef(const aiScene* sc, const aiMaterial* mat, aiTextureType type, const fs::path& folder) {
+  if (mat->GetTextureCount(type) == 0) return {};
+  aiString p;
+  if (mat->GetTexture(type, 0, &p) != AI_SUCCESS || p.length == 0) return {};
+  std::string s(p.C_Str());
+  if (!s.empty() && s[0] == '*') return s;
+  if (sc->GetEmbeddedTexture(s.c_str())) {
+    // Embedded by name (glb, fbx): find its index.
+    for (unsigned i = 0; i < sc->mNumTextures; ++i)
+      if (sc->mTextures[i] == sc->GetEmbeddedTexture(s.c_str())) return "*" + std::to_string(i);
+  }
+  std::replace(s.begin(), s.end(), '\\', '/');
+  if (s.rfind("file://", 0) == 0) s = s.substr(7);
+  fs::path rp(s);
+  fs::path full = rp.is_absolute() ? rp : folder / rp;
+  std::error_code ec;
+  if (!fs::exists(full, ec)) {
+    // Models often carry absolute paths of their author's machine: try the file name next to the model.
+    fs::path alt = folder / rp.filename();
+    if (fs::exists(alt, ec)) full = alt;
+  }
+  return full.lexically_normal().string();
+}
+
+}  // namespace
+
+uint64_t ModelData::Triangles() const {
+  uint64_t n = 0;
+  for (const auto& m : meshes) n += m.indices.size() / 3;
+  return n;
+}
+uint64_t ModelData::Vertices() const {
+  uint64_t n = 0;
+  for (const auto& m : meshes) n += m.vertices.size();
+  return n;
+}
+int ModelData::FindNode(const std::string& name) const {
+  for (size_t i = 0; i < nodes.size(); ++i)
+    if (nodes[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+void ModelData::Evaluate(double t, std::vector<glm::mat4>* globals, double loopSeconds) const {
+  std::vector<glm::mat4> local(nodes.size());
+  for (size_t i = 0; i < nodes.size(); ++i) local[i] = nodes[i].local;
+  if (!animations.empty()) {
+    const AnimationData& a = animations[0];
+    double period = loopSeconds > 0 ? loopSeconds : a.duration;
+    double tt = 0;
+    if (period > 0 && std::isfinite(t)) {
+      tt = std::fmod(t, period);
+      if (tt < 0) tt += period;
+    }
+    for (const auto& ch : a.channels) {
+      if (ch.node < 0 || ch.node >= static_cast<int>(nodes.size())) continue;
+      const NodeData& n = nodes[ch.node];
+      auto lerp = [](const glm::vec3& x, const glm::vec3& y, float f) { return glm::mix(x, y, f); };
+      auto slerp = [](const glm::quat& x, const glm::quat& y, float f) {
+        glm::quat yy = glm::dot(x, y) < 0.f ? -y : y;
+        return glm::normalize(glm::slerp(x, yy, f));
+      };
+      glm::vec3 T = SampleKeys(ch.positions, tt, n.baseT, lerp);
+      glm::quat R = SampleKeys(ch.rotations, tt, n.baseR, slerp);
+      glm::vec3 S = SampleKeys(ch.scalings, tt, n.baseS, lerp);
+      local[ch.node] = glm::translate(glm::mat4(1.f), T) * glm::mat4_cast(R) * glm::scale(glm::mat4(1.f), S);
+    }
+  }
+  globals->resize(nodes.size());
+  for (size_t i = 0; i < nodes.size(); ++i)
+    (*globals)[i] = nodes[i].parent >= 0 ? (*globals)[nodes[i].parent] * local[i] : local[i];
+}
+
+void ModelData::Bounds(glm::vec3* mn, glm::vec3* mx) const {
+  std::vector<glm::mat4> g;
+  Evaluate(0.0, &g);
+  *mn = glm::vec3(std::numeric_limits<float>::max());
+  *mx = glm::vec3(-std::numeric_limits<float>::max());
+  for (size_t i = 0; i < nodes.size(); ++i)
+    for (uint32_t mi : nodes[i].meshes) {
+      const MeshData& m = meshes[mi];
+      for (int c = 0; c < 8; ++c) {
+        glm::vec3 p((c & 1) ? m.boundsMax.x : m.boundsMin.x, (c & 2) ? m.boundsMax.y : m.boundsMin.y,
+                    (c & 4) ? m.boundsMax.z : m.boundsMin.z);
+        glm::vec3 w = glm::vec3(g[i] * glm::vec4(p, 1.f));
+        if (!Finite(w)) continue;
+        *mn = glm::min(*mn, w);
+        *mx = glm::max(*mx, w);
+      }
+    }
+  if (mn->x > mx->x) *mn = *mx = glm::vec3(0.f);
+}
+
+bool RepairMesh(MeshData* mesh, std::vector<std::string>* messages) {
+  const std::string who = "mesh '" + mesh->name + "'";
+  auto& V = mesh->vertices;
+  auto& I = mesh->indices;
+  size_t badIndex = 0, badPos = 0, degenerate = 0;
+  std::vector<uint8_t> posOk(V.size());
+  for (size_t i = 0; i < V.size(); ++i) posOk[i] = Finite(V[i].position);
+  std::vector<uint32_t> kept;
+  kept.reserve(I.size());
+  for (size_t t = 0; t + 2 < I.size(); t += 3) {
+    uint32_t a = I[t], b = I[t + 1], c = I[t + 2];
+    if (a >= V.size() || b >= V.size() || c >= V.size()) { ++badIndex; continue; }
+    if (!posOk[a] || !posOk[b] || !posOk[c]) { ++badPos; continue; }
+    glm::vec3 e1 = V[b].position - V[a].position, e2 = V[c].position - V[a].position;
+    float area2 = glm::length(glm::cross(e1, e2));
+    float scale = std::max({glm::dot(e1, e1), glm::dot(e2, e2), 1e-30f});
+    if (a == b || b == c || a == c || !(area2 > 1e-7f * scale)) { ++degenerate; continue; }
+    kept.insert(kept.end(), {a, b, c});
+  }
+  if (I.size() % 3) messages->push_back(who + ": index count not a multiple of 3, dropped the trailing " +
+                                        std::to_string(I.size() % 3) + " indices");
+  if (badIndex) messages->push_back(who + ": dropped " + std::to_string(badIndex) + " triangles with out-of-range indices");
+  if (badPos) messages->push_back(who + ": dropped " + std::to_string(badPos) + " triangles with non-finite (NaN/Inf) vertex positions");
+  if (degenerate) messages->push_back(who + ": dropped " + std::to_string(degenerate) + " degenerate (zero-area) triangles");
+  I.swap(kept);
+
+  // Remove unreferenced vertices (among them every non-finite one).
+  std::vector<uint32_t> remap(V.size(), UINT32_MAX);
+  std::vector<SceneVertex> nv;
+  nv.reserve(V.size());
+  for (uint32_t& idx : I) {
+    if (remap[idx] == UINT32_MAX) {
+      remap[idx] = static_cast<uint32_t>(nv.size());
+      nv.push_back(V[idx]);
+    }
+    idx = remap[idx];
+  }
+  V.swap(nv);
+  if (I.empty()) return false;
+
+  // Normals: accumulate face normals for the vertices whose normal is unusable.
+  std::vector<glm::vec3> faceN(V.size(), glm::vec3(0.f));
+  std::vector<uint8_t> needN(V.size());
+  size_t fixedN = 0, fixedUV = 0, fixedT = 0;
+  for (size_t i = 0; i < V.size(); ++i) {
+    float l = glm::length(V[i].normal);
+    needN[i] = !Finite(V[i].normal) || !(l > 1e-6f);
+  }
+  for (size_t t = 0; t < I.size(); t += 3) {
+    glm::vec3 n = glm::cross(V[I[t + 1]].position - V[I[t]].position, V[I[t + 2]].position - V[I[t]].position);
+    for (int k = 0; k < 3; ++k)
+      if (needN[I[t + k]]) faceN[I[t + k]] += n;
+  }
+  for (size_t i = 0; i < V.size(); ++i) {
+    SceneVertex& v = V[i];
+    if (needN[i]) {
+      ++fixedN;
+      float l = glm::length(faceN[i]);
+      v.normal = (std::isfinite(l) && l > 0) ? faceN[i] / l : glm::vec3(0, 1, 0);
+    } else {
+      v.normal = glm::normalize(v.normal);
+    }
+    if (!Finite(v.texcoord)) { v.texcoord = glm::vec2(0.f); ++fixedUV; }
+    // Tangent frame: orthonormalise against the normal, rebuild when unusable.
+    glm::vec3 t = v.tangent - v.normal * glm::dot(v.normal, v.tangent);
+    float tl = glm::length(t);
+    if (!Finite(v.tangent) || !Finite(v.binormal) || !std::isfinite(tl) || tl < 1e-6f) {
+      OrthoBasis(v.normal, &v.tangent, &v.binormal);
+      ++fixedT;
+    } else {
+      t /= tl;
+      float hand = glm::dot(glm::cross(v.normal, t), v.binormal) < 0.f ? -1.f : 1.f;
+      v.tangent = t;
+      v.binormal = glm::cross(v.normal, t) * hand;
+    }
+  }
+  if (fixedN) messages->push_back(who + ": rebuilt " + std::to_string(fixedN) + " missing or non-finite normals");
+  if (fixedUV) messages->push_back(who + ": replaced " + std::to_string(fixedUV) + " non-finite texture coordinates by 0");
+  (void)fixedT;  // tangents are rebuilt silently: many files have no UVs, so no tangents
+
+  glm::vec3 mn(std::numeric_limits<float>::max()), mx(-std::numeric_limits<float>::max());
+  for (const auto& v : V) {
+    mn = glm::min(mn, v.position);
+    mx = glm::max(mx, v.position);
+  }
+  mesh->boundsMin = mn;
+  mesh->boundsMax = mx;
+  mesh->sphereCenter = (mn + mx) * 0.5f;
+  float r2 = 0;
+  for (const auto& v : V) r2 = std::max(r2, glm::dot(v.position - mesh->sphereCenter, v.position - mesh->sphereCenter));
+  mesh->sphereRadius = std::sqrt(r2);
+  return true;
+}
+
+bool LoadModel(const std::string& path, const ModelLoadOptions& opts, ModelData* out, std::string* error) {
+  *out = ModelData{};
+  out->file = path;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    *error = path + ": model file not found";
+    return false;
+  }
+  Assimp::Importer importer;
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  importer.SetPropertyBool(AI_CONFIG_PP_FD_REMOVE, true);
+  importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.f);
+  unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType |
+                   aiProcess_FindInvalidData | aiProcess_FindDegenerates | aiProcess_GenSmoothNormals |
+                   aiProcess_GenUVCoords | aiProcess_TransformUVCoords | aiProcess_CalcTangentSpace |
+                   aiProcess_JoinIdenticalVertices | aiProcess_ImproveCacheLocality |
+                   aiProcess_RemoveRedundantMaterials | aiProcess_FlipUVs;
+  if (opts.animationsOnly) flags = aiProcess_ValidateDataStructure;
+  const aiScene* sc = nullptr;
+  try {
+    sc = importer.ReadFile(path, flags);
+  } catch (const std::exception& e) {
+    *error = path + ": import failed (" + e.what() + ")";
+    return false;
+  } catch (...) {
+    *error = path + ": import failed (unknown exception)";
+    return false;
+  }
+  if (!sc) {
+    std::string e = importer.GetErrorString();
+    *error = path + ": Assimp could not import the file" + (e.empty() ? std::string() : " (" + e + ")");
+    return false;
+  }
+  if (!sc->mRootNode) {
+    *error = path + ": the file has no node hierarchy";
+    return false;
+  }
+  const fs::path folder = fs::path(path).parent_path();
+
+  try {
+    // Meshes.
+    std::vector<int> meshMap(sc->mNumMeshes, -1);
+    uint64_t totalV = 0, totalT = 0;
+    if (!opts.animationsOnly) {
+      for (unsigned mi = 0; mi < sc->mNumMeshes; ++mi) {
+        const aiMesh* am = sc->mMeshes[mi];
+        std::string name = am->mName.length ? am->mName.C_Str() : "mesh" + std::to_string(mi);
+        if (!(am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) || !am->HasPositions() || am->mNumVertices == 0 ||
+            am->mNumFaces == 0) {
+          continue;  // points and lines are not drawn by this renderer
+        }
+        totalV += am->mNumVertices;
+        totalT += am->mNumFaces;
+        if (totalV > opts.maxVertices || totalT > opts.maxTriangles) {
+          *error = path + ": too large (more than " + std::to_string(opts.maxVertices) + " vertices or " +
+                   std::to_string(opts.maxTriangles) + " triangles)";
+          return false;
+        }
+        MeshData m;
+        m.name = name;
+        m.material = am->mMaterialIndex < sc->mNumMaterials ? am->mMaterialIndex : 0;
+        m.vertices.resize(am->mNumVertices);
+        const bool hasUV = am->HasTextureCoords(0);
+        const bool hasTB = am->HasTangentsAndBitangents();
+        for (unsigned v = 0; v < am->mNumVertices; ++v) {
+          SceneVertex& sv = m.vertices[v];
+          sv.position = ToGlm(am->mVertices[v]);
+          sv.normal = am->HasNormals() ? ToGlm(am->mNormals[v]) : glm::vec3(std::nanf(""));
+          sv.texcoord = hasUV ? glm::vec2(am->mTextureCoords[0][v].x, am->mTextureCoords[0][v].y) : glm::vec2(0.f);
+          sv.tangent = hasTB ? ToGlm(am->mTangents[v]) : glm::vec3(0.f);
+          sv.binormal = hasTB ? ToGlm(am->mBitangents[v]) : glm::vec3(0.f);
+        }
+        m.indices.reserve(size_t(am->mNumFaces) * 3);
+        for (unsigned f = 0; f < am->mNumFaces; ++f) {
+          const aiFace& face = am->mFaces[f];
+          if (face.mNumIndices != 3) continue;
+          m.indices.insert(m.indices.end(), {face.mIndices[0], face.mIndices[1], face.mIndices[2]});
+        }
+        if (!RepairMesh(&m, &out->warnings)) {
+          out->warnings.push_back("mesh '" + name + "': no valid triangles left, skipped");
+          continue;
+        }
+        meshMap[mi] = static_cast<int>(out->meshes.size());
+        out->meshes.push_back(std::move(m));
+      }
+      // Materials.
+      for (unsigned i = 0; i < std::max(1u, sc->mNumMaterials); ++i) {
+        MaterialData md;
+        if (i < sc->mNumMaterials) {
+          const aiMaterial* am = sc->mMaterials[i];
+          aiString n;
+          if (am->Get(AI_MATKEY_NAME, n) == AI_SUCCESS) md.name = n.C_Str();
+          md.diffuseTex = TexRef(sc, am, aiTextureType_DIFFUSE, folder);
+          if (md.diffuseTex.empty()) md.diffuseTex = TexRef(sc, am, aiTextureType_BASE_COLOR, folder);
+          md.normalTex = TexRef(sc, am, aiTextureType_NORMALS, folder);
+          md.specularTex = TexRef(sc, am, aiTextureType_SPECULAR, folder);
+          aiColor4D c;
+          if (am->Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS || am->Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS)
+            md.diffuseColor = glm::vec4(c.r, c.g, c.b, c.a);
+          float opacity = 1.f;
+          if (am->Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && std::isfinite(opacity) && opacity < 1.f && opacity > 0.f) {
+            md.diffuseColor.a *= opacity;
+          }
+          for (int k = 0; k < 4; ++k)
+            if (!std::isfinite(md.diffuseColor[k])) md.diffuseColor[k] = 1.f;
+          md.diffuseColor = glm::clamp(md.diffuseColor, 0.f, 16.f);
+          md.diffuseColor.a = std::min(md.diffuseColor.a, 1.f);
+          int two = 0;
+          if (am->Get(AI_MATKEY_TWOSIDED, two) == AI_SUCCESS) md.twoSided = two != 0;
+          aiString alphaMode;
+          if (am->Get("$mat.gltf.alphaMode", 0, 0, alphaMode) == AI_SUCCESS) md.alphaBlend = std::string(alphaMode.C_Str()) == "BLEND";
+        }
+        if (md.name.empty()) md.name = "material" + std::to_string(i);
+        out->materials.push_back(std::move(md));
+      }
+      // Embedded textures.
+      for (unsigned i = 0; i < sc->mNumTextures; ++i) {
+        const aiTexture* t = sc->mTextures[i];
+        EmbeddedTexture et;
+        if (t && t->pcData) {
+          if (t->mHeight == 0) {
+            et.hint = t->achFormatHint;
+            et.bytes.assign(reinterpret_cast<const uint8_t*>(t->pcData), reinterpret_cast<const uint8_t*>(t->pcData) + t->mWidth);
+          } else if (uint64_t(t->mWidth) * t->mHeight <= (1ull << 28)) {
+            et.width = t->mWidth;
+            et.height = t->mHeight;
+            et.bytes.resize(size_t(t->mWidth) * t->mHeight * 4);
+            for (size_t p = 0; p < size_t(t->mWidth) * t->mHeight; ++p) {
+              const aiTexel& x = t->pcData[p];
+              et.bytes[p * 4 + 0] = x.r; et.bytes[p * 4 + 1] = x.g; et.bytes[p * 4 + 2] = x.b; et.bytes[p * 4 + 3] = x.a;
+            }
+          }
+        }
+        out->embedded.push_back(std::move(et));
+      }
+    }
+
+    // Node hierarchy (depth first, parents before children).
+    std::function<void(const aiNode*, int, int)> walk = [&](const aiNode* n, int parent, int depth) {
+      if (depth > 256) {
+        out->warnings.push_back("node hierarchy deeper than 256 levels, truncated");
+        return;
+      }
+      NodeData nd;
+      nd.name = n->mName.C_Str();
+      nd.parent = parent;
+      nd.local = ToGlm(n->mTransformation);
+      for (int k = 0; k < 16; ++k)
+        if (!std::isfinite(glm::value_ptr(nd.local)[k])) {
+          out->warnings.push_back("node '" + nd.name + "': non-finite transform replaced by identity");
+          nd.local = glm::mat4(1.f);
+          break;
+        }
+      aiVector3D s, p;
+      aiQuaternion r;
+      n->mTransformation.Decompose(s, r, p);
+      nd.baseT = ToGlm(p);
+      nd.baseS = ToGlm(s);
+      nd.baseR = glm::quat(r.w, r.x, r.y, r.z);
+      if (!Finite(nd.baseT) || !Finite(nd.baseS) || !std::isfinite(nd.baseR.w)) {
+        nd.baseT = glm::vec3(0.f); nd.baseS = glm::vec3(1.f); nd.baseR = glm::quat(1, 0, 0, 0);
+      }
+      for (unsigned k = 0; k < n->mNumMeshes; ++k)
+        if (n->mMeshes[k] < meshMap.size() && meshMap[n->mMeshes[k]] >= 0) nd.meshes.push_back(meshMap[n->mMeshes[k]]);
+      int self = static_cast<int>(out->nodes.size());
+      out->nodes.push_back(std::move(nd));
+      for (unsigned c = 0; c < n->mNumChildren; ++c)
+        if (n->mChildren[c]) walk(n->mChildren[c], self, depth + 1);
+    };
+    walk(sc->mRootNode, -1, 0);
+
+    // Animations.
+    for (unsigned ai = 0; ai < sc->mNumAnimations; ++ai) {
+      const aiAnimation* an = sc->mAnimations[ai];
+      AnimationData ad;
+      ad.name = an->mName.C_Str();
+      double tps = an->mTicksPerSecond > 0 && std::isfinite(an->mTicksPerSecond) ? an->mTicksPerSecond : 25.0;
+      double maxKey = 0;
+      for (unsigned c = 0; c < an->mNumChannels; ++c) {
+        const aiNodeAnim* na = an->mChannels[c];
+        NodeChannel ch;
+        ch.node = out->FindNode(na->mNodeName.C_Str());
+        if (ch.node < 0) continue;
+        auto addV = [&](const aiVectorKey* keys, unsigned n, std::vector<VecKey>* dst) {
+          for (unsigned k = 0; k < n; ++k) {
+            double t = keys[k].mTime / tps;
+            glm::vec3 v = ToGlm(keys[k].mValue);
+            if (!std::isfinite(t) || !Finite(v)) continue;
+            if (!dst->empty() && t < dst->back().time) continue;  // keys must be sorted
+            dst->push_back({t, v});
+            maxKey = std::max(maxKey, t);
+          }
+        };
+        addV(na->mPositionKeys, na->mNumPositionKeys, &ch.positions);
+        addV(na->mScalingKeys, na->mNumScalingKeys, &ch.scalings);
+        for (unsigned k = 0; k < na->mNumRotationKeys; ++k) {
+          double t = na->mRotationKeys[k].mTime / tps;
+          const aiQuaternion& q = na->mRotationKeys[k].mValue;
+          glm::quat g(q.w, q.x, q.y, q.z);
+          float l = glm::length(g);
+          if (!std::isfinite(t) || !std::isfinite(l) || l < 1e-6f) continue;
+          if (!ch.rotations.empty() && t < ch.rotations.back().time) continue;
+          ch.rotations.push_back({t, g / l});
+          maxKey = std::max(maxKey, t);
+        }
+        ad.channels.push_back(std::move(ch));
+      }
+      double dur = an->mDuration / tps;
+      ad.duration = std::isfinite(dur) && dur > 0 ? std::max(dur, maxKey) : maxKey;
+      if (!ad.channels.empty()) out->animations.push_back(std::move(ad));
+    }
+
+    // Cameras.
+    for (unsigned ci = 0; ci < sc->mNumCameras; ++ci) {
+      const aiCamera* c = sc->mCameras[ci];
+      CameraData cd;
+      cd.name = c->mName.C_Str();
+      cd.node = out->FindNode(cd.name);
+      cd.position = ToGlm(c->mPosition);
+      cd.lookAt = ToGlm(c->mLookAt);
+      cd.up = ToGlm(c->mUp);
+      if (!Finite(cd.position)) cd.position = glm::vec3(0.f);
+      if (!Finite(cd.lookAt) || glm::length(cd.lookAt) < 1e-6f) cd.lookAt = glm::vec3(0, 0, -1);
+      if (!Finite(cd.up) || glm::length(cd.up) < 1e-6f) cd.up = glm::vec3(0, 1, 0);
+      float hfov = c->mHorizontalFOV, aspect = c->mAspect;
+      if (std::isfinite(hfov) && hfov > 0.01f && hfov < 3.1f) {
+        cd.fovY = (std::isfinite(aspect) && aspect > 0.01f) ? 2.f * std::atan(std::tan(hfov * 0.5f) / aspect) : hfov;
+      }
+      out->cameras.push_back(cd);
+    }
+  } catch (const std::bad_alloc&) {
+    *error = path + ": out of memory while converting the model";
+    return false;
+  }
+
+  if (!opts.animationsOnly && out->meshes.empty() && out->cameras.empty()) {
+    *error = path + ": no triangle meshes in the file (nothing to draw)";
+    return false;
+  }
+  return true;
+}
+
+int AttachAnimations(ModelData* model, const ModelData& source) {
+  int matched = 0;
+  model->animations.clear();
+  for (const auto& a : source.animations) {
+    AnimationData ad;
+    ad.name = a.name;
+    ad.duration = a.duration;
+    for (const auto& ch : a.channels) {
+      if (ch.node < 0 || ch.node >= static_cast<int>(source.nodes.size())) continue;
+      int n = model->FindNode(source.nodes[ch.node].name);
+      if (n < 0) continue;
+      NodeChannel c = ch;
+      c.node = n;
+      ad.channels.push_back(std::move(c));
+      ++matched;
+    }
+    if (!ad.channels.empty()) model->animations.push_back(std::move(ad));
+  }
+  return matched;
+}
+
+std::shared_ptr<const TextureData> TextureCache::Fallback(TextureKind kind) {
+  auto& f = fallbacks_[static_cast<int>(kind)];
+  if (!f) f = std::make_shared<TextureData>(FallbackTexture(kind));
+  return f;
+}
+
+uint64_t TextureCache::LoadedBytes() const {
+  uint64_t b = 0;
+  for (const auto& [k, t] : cache_) b += t->Bytes();
+  return b;
+}
+
+std::shared_ptr<const TextureData> TextureCache::Get(const ModelData& model, const std::string& ref, TextureKind kind,
+                                                     std::vector<std::string>* warnings) {
+  if (ref.empty()) return Fallback(kind);
+  std::string key = (ref[0] == '*' ? model.file + ref : ref) + "|" + TextureKindName(kind);
+  if (auto it = cache_.find(key); it != cache_.end()) return it->second;
+  std::string failKey = ref[0] == '*' ? model.file + ref : ref;
+  if (failed_.count(failKey)) return Fallback(kind);
+  auto tex = std::make_shared<TextureData>();
+  std::string err;
+  bool ok;
+  if (ref[0] == '*') {
+    char* end = nullptr;
+    long idx = std::strtol(ref.c_str() + 1, &end, 10);
+    if (*end != '\0' || idx < 0 || idx >= static_cast<long>(model.embedded.size()) || model.embedded[idx].bytes.empty()) {
+      err = model.file + ": embedded texture " + ref + " is missing";
+      ok = false;
+    } else {
+      const EmbeddedTexture& et = model.embedded[idx];
+      std::string name = model.file + " (embedded texture " + ref + ")";
+      ok = et.width ? MakeTextureRGBA8(et.bytes.data(), et.width, et.height, name, kind, opts_, tex.get(), &err)
+                    : LoadTextureMemory(et.bytes.data(), et.bytes.size(), et.hint, name, kind, opts_, tex.get(), &err);
+    }
+  } else {
+    ok = LoadTextureFile(ref, kind, opts_, tex.get(), &err);
+  }
+  if (!ok) {
+    failed_.insert(failKey);
+    if (warnings)
+      warnings->push_back(err + "; using the " + FallbackTexture(kind).source.substr(1, FallbackTexture(kind).source.size() - 2) +
+                          " texture instead");
+    return Fallback(kind);
+  }
+  cache_[key] = tex;
+  return tex;
+}
+
+}  // namespace drr

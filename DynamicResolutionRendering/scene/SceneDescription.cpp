@@ -1,0 +1,283 @@
+#include "scene/SceneDescription.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace drr {
+namespace fs = std::filesystem;
+
+const char* EntryTypeName(EntryType t) {
+  switch (t) {
+    case EntryType::Lit: return "LIT";
+    case EntryType::Unlit: return "UNLIT";
+    case EntryType::Camera: return "CAMERA";
+    case EntryType::Decal: return "DECAL";
+  }
+  return "?";
+}
+
+glm::mat4 SceneEntry::Transform() const {
+  glm::mat4 m = glm::translate(glm::mat4(1.f), translate);
+  m = glm::rotate(m, glm::radians(rotateDeg.z), glm::vec3(0, 0, 1));
+  m = glm::rotate(m, glm::radians(rotateDeg.y), glm::vec3(0, 1, 0));
+  m = glm::rotate(m, glm::radians(rotateDeg.x), glm::vec3(1, 0, 0));
+  return glm::scale(m, scale);
+}
+
+bool IsSceneDescriptionPath(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext == ".txt" || ext == ".scene";
+}
+
+namespace {
+
+struct Token {
+  std::string text;
+  int line = 0;
+  bool quoted = false;
+};
+
+std::string Loc(const std::string& file, int line) { return file + ":" + std::to_string(line) + ": "; }
+
+std::string Printable(const std::string& s, size_t maxLen = 60) {
+  std::string r;
+  for (char c : s.substr(0, maxLen)) {
+    unsigned char u = static_cast<unsigned char>(c);
+    if (u < 32 || u == 127) {
+      char buf[8];
+      snprintf(buf, sizeof buf, "\\x%02x", u);
+      r += buf;
+    } else {
+      r += c;
+    }
+  }
+  if (s.size() > maxLen) r += "...";
+  return r;
+}
+
+bool ParseFloats(const std::string& v, int wanted, float* out) {
+  std::stringstream ss(v);
+  std::string part;
+  int n = 0;
+  while (std::getline(ss, part, ',')) {
+    if (n >= wanted) return false;
+    if (part.empty()) return false;
+    char* end = nullptr;
+    errno = 0;
+    float f = std::strtof(part.c_str(), &end);
+    if (end == part.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(f)) return false;
+    out[n++] = f;
+  }
+  return n == wanted;
+}
+
+bool ApplyOption(SceneEntry& e, const std::string& key, const std::string& value, std::string* why) {
+  float f[3];
+  if (key == "name") {
+    if (value.empty()) { *why = "name= needs a value"; return false; }
+    e.name = value;
+  } else if (key == "translate") {
+    if (!ParseFloats(value, 3, f)) { *why = "translate= expects x,y,z (three finite numbers)"; return false; }
+    e.translate = {f[0], f[1], f[2]};
+  } else if (key == "rotate") {
+    if (!ParseFloats(value, 3, f)) { *why = "rotate= expects x,y,z in degrees (three finite numbers)"; return false; }
+    e.rotateDeg = {f[0], f[1], f[2]};
+  } else if (key == "scale") {
+    if (ParseFloats(value, 1, f)) {
+      e.scale = glm::vec3(f[0]);
+    } else if (ParseFloats(value, 3, f)) {
+      e.scale = {f[0], f[1], f[2]};
+    } else {
+      *why = "scale= expects s or x,y,z (finite numbers)";
+      return false;
+    }
+    if (e.scale.x == 0.f || e.scale.y == 0.f || e.scale.z == 0.f) { *why = "scale= must not be zero"; return false; }
+  } else if (key == "hidden") {
+    if (value != "0" && value != "1") { *why = "hidden= expects 0 or 1"; return false; }
+    e.hidden = value == "1";
+  } else if (key == "loop") {
+    if (!ParseFloats(value, 1, f) || f[0] <= 0.f) { *why = "loop= expects a positive number of seconds"; return false; }
+    e.loopSeconds = f[0];
+  } else {
+    *why = "unknown option '" + Printable(key) + "' (expected name=, translate=, rotate=, scale=, hidden=, loop=)";
+    return false;
+  }
+  return true;
+}
+
+bool ParseType(const std::string& s, EntryType* t) {
+  std::string u = s;
+  std::transform(u.begin(), u.end(), u.begin(), [](unsigned char c) { return std::toupper(c); });
+  if (u == "LIT") *t = EntryType::Lit;
+  else if (u == "UNLIT") *t = EntryType::Unlit;
+  else if (u == "CAMERA") *t = EntryType::Camera;
+  else if (u == "DECAL") *t = EntryType::Decal;
+  else return false;
+  return true;
+}
+
+bool IsNoAnim(const std::string& s) {
+  std::string u = s;
+  std::transform(u.begin(), u.end(), u.begin(), [](unsigned char c) { return std::toupper(c); });
+  return u == "NO_ANIM";
+}
+
+}  // namespace
+
+bool ParseSceneDescription(const std::string& text, const std::string& file, const ParseOptions& opts,
+                           SceneDescription* out, std::string* error) {
+  auto fail = [&](int line, const std::string& msg) {
+    if (error) *error = line > 0 ? Loc(file, line) + msg : file + ": " + msg;
+    return false;
+  };
+  *out = SceneDescription{};
+  out->file = file;
+  out->folder = fs::path(file).parent_path().string();
+
+  // 1. Tokenise, line by line, with the line numbers kept.
+  std::vector<Token> tokens;
+  size_t pos = 0;
+  int line = 0;
+  if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF &&
+      static_cast<unsigned char>(text[1]) == 0xBB && static_cast<unsigned char>(text[2]) == 0xBF)
+    pos = 3;  // UTF-8 byte order mark
+  while (pos < text.size()) {
+    ++line;
+    size_t end = text.find('\n', pos);
+    if (end == std::string::npos) end = text.size();
+    std::string l = text.substr(pos, end - pos);
+    pos = end + 1;
+    if (!l.empty() && l.back() == '\r') l.pop_back();  // CRLF
+    if (l.size() > opts.maxLineLength)
+      return fail(line, "line too long (" + std::to_string(l.size()) + " characters, at most " +
+                            std::to_string(opts.maxLineLength) + " expected)");
+    for (size_t i = 0; i < l.size(); ++i) {
+      unsigned char c = static_cast<unsigned char>(l[i]);
+      if ((c < 32 && c != '\t') || c == 127)
+        return fail(line, "unexpected binary data (byte 0x" +
+                              [&] { char b[4]; snprintf(b, sizeof b, "%02x", c); return std::string(b); }() +
+                              " in column " + std::to_string(i + 1) +
+                              "); expected a text file of 'mesh animation|NO_ANIM LIT|UNLIT|CAMERA|DECAL' entries");
+    }
+    size_t i = 0;
+    while (i < l.size()) {
+      while (i < l.size() && (l[i] == ' ' || l[i] == '\t')) ++i;
+      if (i >= l.size() || l[i] == '#') break;
+      Token t;
+      t.line = line;
+      if (l[i] == '"') {
+        size_t close = l.find('"', i + 1);
+        if (close == std::string::npos) return fail(line, "unterminated quoted path (expected a closing '\"')");
+        t.text = l.substr(i + 1, close - i - 1);
+        t.quoted = true;
+        i = close + 1;
+      } else {
+        size_t s = i;
+        while (i < l.size() && l[i] != ' ' && l[i] != '\t' && l[i] != '#') ++i;
+        t.text = l.substr(s, i - s);
+      }
+      tokens.push_back(std::move(t));
+    }
+  }
+  if (tokens.empty())
+    return fail(0, "no entries (empty file, or only comments); expected lines of 'mesh animation|NO_ANIM LIT|UNLIT|CAMERA|DECAL'");
+
+  // 2. Group: mesh, anim, type, then key=value options.
+  auto isOption = [](const Token& t) { return !t.quoted && t.text.find('=') != std::string::npos; };
+  auto resolve = [&](const std::string& p) {
+    fs::path rp(p);
+    if (rp.is_absolute()) return rp.lexically_normal().string();
+    return (fs::path(out->folder) / rp).lexically_normal().string();
+  };
+  size_t k = 0;
+  while (k < tokens.size()) {
+    if (out->entries.size() >= opts.maxEntries)
+      return fail(tokens[k].line, "too many entries (more than " + std::to_string(opts.maxEntries) + ")");
+    SceneEntry e;
+    const Token& mesh = tokens[k];
+    e.line = mesh.line;
+    if (isOption(mesh))
+      return fail(mesh.line, "option '" + Printable(mesh.text) + "' where a mesh path was expected (options follow the type)");
+    {
+      EntryType dummy;
+      if (ParseType(mesh.text, &dummy) && !mesh.quoted)
+        return fail(mesh.line, "type '" + mesh.text + "' where a mesh path was expected (entry: mesh animation|NO_ANIM type)");
+    }
+    e.meshPath = mesh.text;
+    std::replace(e.meshPath.begin(), e.meshPath.end(), '\\', '/');
+    if (e.meshPath.empty()) return fail(mesh.line, "empty mesh path");
+    if (k + 1 >= tokens.size())
+      return fail(mesh.line, "entry '" + Printable(mesh.text) + "' is missing its animation path (or NO_ANIM) and type (LIT|UNLIT|CAMERA|DECAL)");
+    const Token& anim = tokens[k + 1];
+    {
+      EntryType dummy;
+      if (!anim.quoted && ParseType(anim.text, &dummy))
+        return fail(anim.line, "found type '" + anim.text + "' where the animation path or NO_ANIM was expected");
+      if (isOption(anim))
+        return fail(anim.line, "option '" + Printable(anim.text) + "' where the animation path or NO_ANIM was expected");
+    }
+    if (!IsNoAnim(anim.text) || anim.quoted) {
+      e.animPath = anim.text;
+      std::replace(e.animPath.begin(), e.animPath.end(), '\\', '/');
+      if (e.animPath.empty()) return fail(anim.line, "empty animation path (write NO_ANIM for none)");
+    }
+    if (k + 2 >= tokens.size())
+      return fail(anim.line, "entry '" + Printable(mesh.text) + "' is missing its type (expected LIT, UNLIT, CAMERA or DECAL)");
+    const Token& type = tokens[k + 2];
+    if (type.quoted || !ParseType(type.text, &e.type))
+      return fail(type.line, "unknown type '" + Printable(type.text) + "' (expected LIT, UNLIT, CAMERA or DECAL)");
+    k += 3;
+    while (k < tokens.size() && isOption(tokens[k])) {
+      const Token& o = tokens[k];
+      size_t eq = o.text.find('=');
+      std::string why;
+      if (!ApplyOption(e, o.text.substr(0, eq), o.text.substr(eq + 1), &why)) return fail(o.line, why);
+      ++k;
+    }
+    e.meshFile = resolve(e.meshPath);
+    if (!e.animPath.empty()) e.animFile = resolve(e.animPath);
+    if (opts.checkFiles) {
+      std::error_code ec;
+      if (!fs::is_regular_file(e.meshFile, ec))
+        return fail(e.line, "mesh file '" + Printable(e.meshPath, 200) + "' not found (looked for " + e.meshFile + ")");
+      if (!e.animFile.empty() && !fs::is_regular_file(e.animFile, ec))
+        return fail(anim.line, "animation file '" + Printable(e.animPath, 200) + "' not found (looked for " + e.animFile +
+                                   "; write NO_ANIM for none)");
+    }
+    if (e.name.empty()) e.name = fs::path(e.meshPath).stem().string();
+    out->entries.push_back(std::move(e));
+  }
+  return true;
+}
+
+bool LoadSceneDescription(const std::string& file, const ParseOptions& opts, SceneDescription* out,
+                          std::string* error) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) {
+    if (error) *error = file + ": cannot open scene description (no such file)";
+    return false;
+  }
+  auto size = fs::file_size(file, ec);
+  if (ec || size > (64u << 20)) {
+    if (error) *error = file + ": scene description is too large (" + std::to_string(size) + " bytes, at most 64 MiB expected)";
+    return false;
+  }
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    if (error) *error = file + ": cannot open scene description";
+    return false;
+  }
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return ParseSceneDescription(text, file, opts, out, error);
+}
+
+}  // namespace drr

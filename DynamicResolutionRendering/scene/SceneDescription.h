@@ -1,0 +1,69 @@
+// Scene description files, as in the original sample: a text file of entries,
+// each "mesh path", "animation path or NO_ANIM" and a type LIT | UNLIT |
+// CAMERA | DECAL; paths are relative to the file.
+//
+// Accepted forms (both of the original's layouts load):
+//   arena.gltf NO_ANIM LIT                 (one entry per line)
+//   arena.gltf                             (or one token per line; tokens are
+//   NO_ANIM                                 grouped three by three)
+//   LIT
+// Extensions: '#' starts a comment (to the end of the line); paths with
+// spaces may be quoted ("my model.obj"); Windows '\' separators are accepted;
+// after the type, optional key=value tokens belong to that entry:
+//   name=<text>  translate=x,y,z  rotate=x,y,z (degrees, applied Z*Y*X)  scale=s or x,y,z
+//   hidden=0|1   loop=<seconds>   (overrides the animation's own duration)
+// Errors are reported as "file:line: what was found, what was expected".
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace drr {
+
+enum class EntryType { Lit, Unlit, Camera, Decal };
+
+const char* EntryTypeName(EntryType t);
+
+struct SceneEntry {
+  std::string meshPath;       // as written (separators normalised to '/')
+  std::string animPath;       // empty for NO_ANIM
+  std::string meshFile;       // resolved against the description's folder
+  std::string animFile;       // resolved, empty for NO_ANIM
+  EntryType type = EntryType::Lit;
+  int line = 0;               // line of the entry's first token
+  // Options (extensions of the original format).
+  std::string name;           // defaults to the mesh file's stem
+  glm::vec3 translate{0.f};
+  glm::vec3 rotateDeg{0.f};
+  glm::vec3 scale{1.f};
+  bool hidden = false;
+  double loopSeconds = 0.0;   // 0 = use the animation's duration
+  glm::mat4 Transform() const;
+};
+
+struct SceneDescription {
+  std::string file;   // path of the description
+  std::string folder; // folder the paths are relative to
+  std::vector<SceneEntry> entries;
+};
+
+struct ParseOptions {
+  bool checkFiles = true;        // the mesh and animation files must exist
+  size_t maxLineLength = 4096;   // longer lines are an error
+  size_t maxEntries = 100000;
+};
+
+// Parses text as if it were the content of 'file' (used for messages and to
+// resolve relative paths). Returns false with error = "file:line: ...".
+bool ParseSceneDescription(const std::string& text, const std::string& file,
+                           const ParseOptions& opts, SceneDescription* out, std::string* error);
+// Reads and parses a file.
+bool LoadSceneDescription(const std::string& file, const ParseOptions& opts,
+                          SceneDescription* out, std::string* error);
+
+// Whether a path looks like a scene description (by extension .txt / .scene).
+bool IsSceneDescriptionPath(const std::string& path);
+
+}  // namespace drr
