@@ -1,0 +1,296 @@
+// Resolution control laws. See ResolutionController.h and Docs/Controller.md.
+#include "ResolutionController.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace drr {
+namespace {
+
+bool FinitePositive(double v) { return std::isfinite(v) && v > 0.0; }
+
+double Median(std::vector<double> values) {  // by value: sorted copy
+  const std::size_t n = values.size();
+  if (n == 0) return 0.0;
+  std::sort(values.begin(), values.end());
+  return (n % 2) ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+double AimOf(const ControlTarget& sanitized) { return sanitized.budgetSeconds * (1.0 - sanitized.headroom); }
+
+}  // namespace
+
+double TargetFrameSeconds(double refreshHz, ResolutionControlMode mode) {
+  if (!FinitePositive(refreshHz)) refreshHz = 60.0;
+  const double period = 1.0 / refreshHz;
+  return mode == ResolutionControlMode::VSyncHalf ? 2.0 * period : period;
+}
+
+ControlTarget SanitizeTarget(const ControlTarget& in) {
+  ControlTarget t = in;
+  if (!FinitePositive(t.budgetSeconds)) t.budgetSeconds = 1.0 / 60.0;
+  if (!(std::isfinite(t.headroom) && t.headroom >= 0.0 && t.headroom <= 0.9)) t.headroom = 0.1;
+  if (!FinitePositive(t.minScale)) t.minScale = 0.3;
+  if (!(std::isfinite(t.maxScale) && t.maxScale >= t.minScale)) t.maxScale = std::max(1.0, t.minScale);
+  return t;
+}
+
+double ClampScale(double scale, const ControlTarget& t) {
+  if (!std::isfinite(scale)) scale = 1.0;
+  return std::clamp(scale, t.minScale, t.maxScale);
+}
+
+double ResolutionController::AimSeconds(const ControlTarget& target) const {
+  return AimOf(SanitizeTarget(target));
+}
+
+bool IsCpuBoundFrame(const FrameTiming& timing, const ControlTarget& target) {
+  const ControlTarget t = SanitizeTarget(target);
+  // 2 % tolerance: a vsync-quantised frame of exactly T is not "late".
+  return FinitePositive(timing.frameSeconds) && FinitePositive(timing.gpuInnerSeconds) &&
+         timing.frameSeconds > t.budgetSeconds * 1.02 && timing.gpuInnerSeconds <= t.budgetSeconds;
+}
+
+// ---------------------------------------------------------------- article law
+
+ArticleController::ArticleController(double gain) : m_Gain(gain) {}
+
+double ArticleController::AimSeconds(const ControlTarget& target) const {
+  return SanitizeTarget(target).budgetSeconds;  // the original steers t to T
+}
+
+double ArticleController::MeasuredSeconds(const FrameTiming& timing) {
+  const double gpu = timing.gpuInnerSeconds;
+  const double frame = timing.frameSeconds;
+  if (!(std::isfinite(gpu) && gpu >= 0.0)) return std::nan("");
+  if (!FinitePositive(frame)) return gpu;  // unusable frame time: GPU time only
+  if (frame > 2.0 * gpu) return gpu;       // original: ignore CPU-side spikes
+  return 0.5 * (gpu + frame);              // original: average of GPU and frame time
+}
+
+double ArticleController::Step(double currentScale, const FrameTiming& timing, const ControlTarget& target,
+                               double gain) {
+  const ControlTarget tgt = SanitizeTarget(target);
+  // The current scale is used as is (the original did not clamp it before the
+  // law); only a non-finite or non-positive one is replaced.
+  double s = FinitePositive(currentScale) ? currentScale : ClampScale(1.0, tgt);
+  if (!std::isfinite(gain)) gain = kDefaultGain;
+  const double k = std::clamp(gain, kMinGain, kMaxGain);
+  const double t = MeasuredSeconds(timing);
+  if (std::isnan(t)) return ClampScale(s, tgt);  // unusable sample: hold
+  const double next = s * (1.0 + k * (1.0 - t / tgt.budgetSeconds));
+  if (std::isnan(next)) return ClampScale(s, tgt);
+  return std::clamp(next, tgt.minScale, tgt.maxScale);  // +-Inf land on the limits
+}
+
+double ArticleController::Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) {
+  return Step(currentScale, timing, target, m_Gain);
+}
+
+// -------------------------------------------------------------- UE-style law
+
+UEStyleController::UEStyleController() : UEStyleController(Params{}) {}
+
+UEStyleController::UEStyleController(const Params& params) : m_Params(params) {
+  m_Params.historySize = std::max(1, m_Params.historySize);
+  m_Params.panicFrames = std::max(1, m_Params.panicFrames);
+  if (!(m_Params.frameWeightExponent > 0.0 && m_Params.frameWeightExponent <= 1.0)) m_Params.frameWeightExponent = 0.9;
+  if (!(m_Params.increaseBlend >= 0.0 && m_Params.increaseBlend < 1.0)) m_Params.increaseBlend = 0.9;
+  if (!(m_Params.changeThreshold >= 0.0)) m_Params.changeThreshold = 0.02;
+}
+
+void UEStyleController::Reset() {
+  m_History.clear();
+  m_OverBudget = 0;
+}
+
+double UEStyleController::Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) {
+  const ControlTarget tgt = SanitizeTarget(target);
+  const double s = ClampScale(currentScale, tgt);
+  const double aim = AimOf(tgt);
+  const double gpu = timing.gpuInnerSeconds;
+  if (!FinitePositive(gpu)) return s;  // no usable measurement
+  if (IsCpuBoundFrame(timing, tgt)) {  // CPU-bound: the GPU time does not predict the frame
+    m_OverBudget = 0;
+    return s;
+  }
+
+  m_History.push_back({gpu, s});
+  if (static_cast<int>(m_History.size()) > m_Params.historySize) m_History.erase(m_History.begin());
+  m_OverBudget = gpu > tgt.budgetSeconds ? m_OverBudget + 1 : 0;
+
+  if (m_OverBudget >= m_Params.panicFrames) {  // panic: trust the newest frame alone
+    const double next = s * std::sqrt(aim / gpu);
+    m_History.clear();
+    m_OverBudget = 0;
+    return ClampScale(next, tgt);
+  }
+
+  // Each sample suggests the scale that would have hit the aim with a
+  // quadratic cost model; newer samples weigh more.
+  double weight = 1.0, sumW = 0.0, sum = 0.0;
+  for (auto it = m_History.rbegin(); it != m_History.rend(); ++it) {
+    sum += weight * it->scale * std::sqrt(aim / it->gpuSeconds);
+    sumW += weight;
+    weight *= m_Params.frameWeightExponent;
+  }
+  const double suggested = sum / sumW;
+  if (!std::isfinite(suggested)) return s;
+  if (std::abs(suggested - s) < m_Params.changeThreshold * s) return s;
+  double next = suggested;
+  if (suggested > s) next = s + (suggested - s) * (1.0 - m_Params.increaseBlend);  // amortised increase
+  return ClampScale(next, tgt);
+}
+
+// ---------------------------------------------------------------- robust law
+
+RobustController::RobustController() : RobustController(Params{}) {}
+
+RobustController::RobustController(const Params& params) : m_Params(params) {
+  Params& p = m_Params;
+  p.medianWindow = std::max(1, p.medianWindow);
+  p.minSamples = std::clamp(p.minSamples, 1, p.medianWindow);
+  if (!(p.deadband >= 0.0 && p.deadband < 1.0)) p.deadband = 0.03;
+  if (!(p.outlierFactor > 1.0)) p.outlierFactor = 4.0;
+  p.outlierPersistFrames = std::max(1, p.outlierPersistFrames);
+  p.panicFrames = std::max(1, p.panicFrames);
+  if (!(p.panicRatio >= 1.0)) p.panicRatio = 1.25;
+  if (!(p.gammaMin > 0.0 && p.gammaMax >= p.gammaMin)) {
+    p.gammaMin = 0.5;
+    p.gammaMax = 3.0;
+  }
+  if (!(p.maxStepDown > 0.0 && p.maxStepDown <= 1.0)) p.maxStepDown = 0.5;
+  if (!(p.maxStepUp >= 1.0)) p.maxStepUp = 1.5;
+  p.latencyFrames = std::max(0, p.latencyFrames);
+}
+
+void RobustController::Reset() {
+  m_Samples.clear();
+  m_Outliers.clear();
+  m_SkipFrames = 0;
+  m_OverBudget = 0;
+  m_LastAppliedScale = -1.0;
+  m_HaveSecant = false;
+  m_Gamma = 2.0;
+}
+
+double RobustController::Correct(double s, double measured, const ControlTarget& tgt, bool panic) {
+  const double aim = AimOf(tgt);
+  const double ls = std::log(s);
+  const double lt = std::log(measured);
+  double gamma = 2.0;  // quadratic cost model: time ~ pixels ~ s^2
+  if (m_HaveSecant && !panic) {
+    const double dls = ls - m_PrevLogScale;
+    if (std::abs(dls) > 0.01) {
+      const double slope = (lt - m_PrevLogTime) / dls;
+      if (std::isfinite(slope)) gamma = std::clamp(slope, m_Params.gammaMin, m_Params.gammaMax);
+    }
+  }
+  m_Gamma = gamma;
+  double step = std::log(aim / measured) / gamma;
+  step = std::clamp(step, std::log(m_Params.maxStepDown), std::log(m_Params.maxStepUp));
+  const double next = ClampScale(std::exp(ls + step), tgt);
+  if (next != s) {
+    m_HaveSecant = true;  // the next correction of this episode refines gamma
+    m_PrevLogScale = ls;
+    m_PrevLogTime = lt;
+    m_Samples.clear();
+    m_Outliers.clear();
+    m_OverBudget = 0;
+    m_SkipFrames = m_Params.latencyFrames;
+  }
+  return next;
+}
+
+double RobustController::Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) {
+  const ControlTarget tgt = SanitizeTarget(target);
+  const double s = ClampScale(currentScale, tgt);
+  const double aim = AimOf(tgt);
+  auto finish = [&](double next) {
+    m_LastAppliedScale = next;
+    return next;
+  };
+
+  // Someone else changed the scale (manual slider, resize, re-init): the
+  // samples and the secant no longer describe it. 1 % tolerance absorbs the
+  // viewport quantisation of what we returned.
+  if (m_LastAppliedScale > 0.0 && std::abs(std::log(s / m_LastAppliedScale)) > 0.01) {
+    m_Samples.clear();
+    m_Outliers.clear();
+    m_OverBudget = 0;
+    m_HaveSecant = false;
+  }
+  if (m_SkipFrames > 0) {  // still measuring frames rendered at the previous scale
+    --m_SkipFrames;
+    return finish(s);
+  }
+  const double t = timing.gpuInnerSeconds;
+  if (!FinitePositive(t)) return finish(s);  // NaN / Inf / zero / negative: hold
+  if (IsCpuBoundFrame(timing, tgt)) {        // the GPU is not what limits the frame
+    m_OverBudget = 0;
+    return finish(s);
+  }
+
+  // Outliers relative to the running median (or, right after a correction, to
+  // the aim we just steered to).
+  const double reference = m_Samples.empty() ? (m_HaveSecant ? aim : 0.0) : Median(m_Samples);
+  const bool outlier =
+      reference > 0.0 && (t > m_Params.outlierFactor * reference || t * m_Params.outlierFactor < reference);
+  if (outlier) {
+    m_Outliers.push_back(t);
+    if (static_cast<int>(m_Outliers.size()) < m_Params.outlierPersistFrames) return finish(s);
+    // Persistent: this is the new load, not a spike.
+    m_Samples = m_Outliers;
+    m_Outliers.clear();
+  } else {
+    m_Outliers.clear();
+    m_Samples.push_back(t);
+  }
+  if (static_cast<int>(m_Samples.size()) > m_Params.medianWindow) m_Samples.erase(m_Samples.begin());
+
+  // Panic on sustained (or a large, plausible) overload.
+  m_OverBudget = t > tgt.budgetSeconds ? m_OverBudget + 1 : 0;
+  const bool bigOverload = t > tgt.budgetSeconds * m_Params.panicRatio;
+  if (m_OverBudget >= m_Params.panicFrames || bigOverload || outlier) {
+    const int n = std::min<int>(std::max(m_OverBudget, 1), static_cast<int>(m_Samples.size()));
+    const double least = *std::min_element(m_Samples.end() - n, m_Samples.end());
+    if (least > tgt.budgetSeconds || outlier) return finish(Correct(s, outlier ? Median(m_Samples) : least, tgt, true));
+  }
+
+  if (static_cast<int>(m_Samples.size()) < m_Params.minSamples) return finish(s);
+  const double median = Median(m_Samples);
+  if (std::abs(std::log(median / aim)) <= m_Params.deadband) return finish(s);  // deadband: no swimming
+  return finish(Correct(s, median, tgt, false));
+}
+
+// ------------------------------------------------------------------ factory
+
+std::unique_ptr<ResolutionController> MakeController(ControllerKind kind) {
+  switch (kind) {
+    case ControllerKind::Article: return std::make_unique<ArticleController>();
+    case ControllerKind::UEStyle: return std::make_unique<UEStyleController>();
+    case ControllerKind::Robust: return std::make_unique<RobustController>();
+  }
+  return std::make_unique<RobustController>();
+}
+
+bool ParseControllerKind(std::string_view name, ControllerKind* kind) {
+  ControllerKind k;
+  if (name == "article") k = ControllerKind::Article;
+  else if (name == "ue-style" || name == "ue") k = ControllerKind::UEStyle;
+  else if (name == "robust") k = ControllerKind::Robust;
+  else return false;
+  if (kind) *kind = k;
+  return true;
+}
+
+std::string_view ToString(ControllerKind kind) {
+  switch (kind) {
+    case ControllerKind::Article: return "article";
+    case ControllerKind::UEStyle: return "ue-style";
+    case ControllerKind::Robust: return "robust";
+  }
+  return "?";
+}
+
+}  // namespace drr

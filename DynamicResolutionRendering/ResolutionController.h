@@ -1,0 +1,196 @@
+// Resolution control laws: pure CPU code, no GPU needed. The sample's
+// ControlResolution() calls one of them once per frame:
+//
+//   FrameTiming timing{averagedInnerGpuSeconds, 1.0 / fps};
+//   ControlTarget target{TargetFrameSeconds(refreshHz, mode), ...};
+//   double s = controller.Update(dynamicResolution.GetScaleX(), timing, target);
+//   dynamicResolution.SetScale(float(s), float(s));
+//
+// Every Update() returns a finite scale inside [target.minScale, target.maxScale]
+// (after SanitizeTarget) for any input, including NaN, infinities, zero and
+// negative times and a non-finite current scale.
+//
+// Laws (details and stability analysis in Docs/Controller.md):
+//  - ArticleController: the 2011 article / original sample, unchanged for valid
+//    inputs: S' = S (1 + k (1 - t/T)).
+//  - UEStyleController: our implementation of the idea Unreal Engine published
+//    for its dynamic resolution heuristic: weighted GPU-time history, quadratic
+//    cost model, change threshold, panic on consecutive over-budget frames,
+//    CPU-bound frame rejection.
+//  - RobustController: median-filtered GPU time with outlier/NaN rejection,
+//    quadratic feed-forward refined by a secant estimate of the cost exponent,
+//    log-domain integration clamped at the limits (anti-windup), deadband
+//    (zero changes under a still load), fast panic on overload.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string_view>
+#include <vector>
+
+namespace drr {
+
+// Inputs measured for the frame that just ended.
+struct FrameTiming {
+  double gpuInnerSeconds = 0.0;  // GPU time of the dynamic-resolution part of the frame (averaged timer)
+  double frameSeconds = 0.0;     // whole frame period, 1 / FPS (CPU + GPU + present, vsync included)
+};
+
+// What the controller must achieve.
+struct ControlTarget {
+  double budgetSeconds = 1.0 / 60.0;  // T: frame period to hold (1/refresh, or 2/refresh for VSync/2)
+  double headroom = 0.10;             // fraction of T kept free by UE-style and robust laws (aim = T (1 - headroom));
+                                      // the article law aims at T itself, as the original
+  double minScale = 0.3;              // the original's lower clamp
+  double maxScale = 1.0;              // the maximum scaling (1, or 2 with super sampling)
+};
+
+enum class ResolutionControlMode { Manual, VSyncHalf, VSync };
+
+// T = 1/refresh (VSync) or 2/refresh (VSync/2); Manual returns 1/refresh.
+// A refresh rate that is not finite and > 0 is replaced by 60 Hz.
+double TargetFrameSeconds(double refreshHz, ResolutionControlMode mode);
+
+// Makes a target usable: budget finite > 0 (else 1/60), headroom in [0, 0.9]
+// (else 0.1), minScale finite > 0 (else 0.3), maxScale finite >= minScale
+// (else max(1, minScale)).
+ControlTarget SanitizeTarget(const ControlTarget& target);
+
+// Clamps to [minScale, maxScale]; a non-finite scale becomes 1 clamped to the range.
+double ClampScale(double scale, const ControlTarget& sanitizedTarget);
+
+class ResolutionController {
+public:
+  virtual ~ResolutionController() = default;
+  virtual std::string_view Name() const = 0;
+  // GPU time the law steers to (used by the simulator's metrics).
+  virtual double AimSeconds(const ControlTarget& target) const;
+  // New scale per axis from the current (applied, quantised) scale and the
+  // timing of the last frame. Always finite and inside the target's range.
+  virtual double Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) = 0;
+  // Forget all history (after a resize, a mode switch, a camera cut).
+  virtual void Reset() {}
+};
+
+// The original sample's law, kept exactly for valid inputs.
+//   t = (t_gpuInner + t_frame) / 2, or t_gpuInner when t_frame > 2 t_gpuInner
+//   S' = S (1 + k (1 - t/T)), clamped to [minScale, maxScale]
+// Robustness (only for inputs the original mishandled): a GPU time that is NaN,
+// infinite or negative leaves the scale unchanged; a frame time that is not
+// finite and > 0 is ignored (t = t_gpuInner); a non-finite product is clamped.
+class ArticleController final : public ResolutionController {
+public:
+  static constexpr double kDefaultGain = 0.01;
+  static constexpr double kMinGain = 0.001;  // documented gain range; values outside are clamped into it
+  static constexpr double kMaxGain = 10.0;
+
+  explicit ArticleController(double gain = kDefaultGain);
+  std::string_view Name() const override { return "article"; }
+  double AimSeconds(const ControlTarget& target) const override;
+  double Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) override;
+  double Gain() const { return m_Gain; }
+
+  // The law as a pure function (same rules as Update).
+  static double Step(double currentScale, const FrameTiming& timing, const ControlTarget& target, double gain);
+  // The "t" the original feeds into the law (NaN when the GPU time is unusable).
+  static double MeasuredSeconds(const FrameTiming& timing);
+
+private:
+  double m_Gain;
+};
+
+// Returns true for a frame that was late although the GPU fitted the budget:
+// the CPU (or something else) set the pace, so the GPU time says nothing about
+// what a different resolution would do to the frame time.
+bool IsCpuBoundFrame(const FrameTiming& timing, const ControlTarget& target);
+
+// Our implementation of the idea behind Unreal Engine's dynamic resolution
+// heuristic (written from the published description, no engine code).
+class UEStyleController final : public ResolutionController {
+public:
+  struct Params {
+    int historySize = 16;              // frames of GPU time kept
+    double frameWeightExponent = 0.9;  // weight of a sample = exponent^age
+    double changeThreshold = 0.02;     // relative scale change below which nothing changes
+    int panicFrames = 2;               // consecutive over-budget frames that trigger a panic drop
+    double increaseBlend = 0.9;        // increases move (1 - blend) of the way per frame (amortised)
+  };
+  UEStyleController();
+  explicit UEStyleController(const Params& params);
+  std::string_view Name() const override { return "ue-style"; }
+  double Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) override;
+  void Reset() override;
+
+private:
+  struct Sample {
+    double gpuSeconds;
+    double scale;
+  };
+  Params m_Params;
+  std::vector<Sample> m_History;  // newest last
+  int m_OverBudget = 0;
+};
+
+// The project's law. Per frame:
+//  1. reject unusable samples (NaN, Inf, <= 0) and CPU-bound frames;
+//  2. reject isolated outliers (> outlierFactor x the running median) unless
+//     they persist for outlierPersistFrames frames (then they are the new load);
+//  3. median of the samples measured at the current scale (window medianWindow,
+//     at least minSamples before acting; samples still in flight after a change,
+//     latencyFrames, are skipped);
+//  4. deadband: act only when the median is more than `deadband` away from the
+//     aim (relative), so a still load changes the scale zero times;
+//  5. step in log scale: dlog s = log(aim / t) / gamma, gamma = 2 (quadratic
+//     cost model: pixels ~ s^2) for the first correction of an episode, then the
+//     secant slope measured between the last two corrections (clamped to
+//     [gammaMin, gammaMax]), which absorbs the fixed, resolution-independent
+//     part of the frame; the step is limited to [maxStepDown, maxStepUp];
+//  6. panic: panicFrames consecutive usable frames over the budget, or one
+//     frame over the budget by more than panicRatio, act at once on the
+//     smallest of those samples without waiting for the median.
+// The scale itself is the integrator state and is clamped to [min, max], so
+// nothing winds up while the scale sits at a limit (anti-windup).
+class RobustController final : public ResolutionController {
+public:
+  struct Params {
+    int medianWindow = 5;
+    int minSamples = 3;
+    double deadband = 0.03;
+    double outlierFactor = 4.0;
+    int outlierPersistFrames = 3;
+    int panicFrames = 2;
+    double panicRatio = 1.25;
+    double gammaMin = 0.5;
+    double gammaMax = 3.0;
+    double maxStepDown = 0.5;   // smallest factor per correction
+    double maxStepUp = 1.5;     // largest factor per correction
+    int latencyFrames = 0;      // frames between a scale change and the first GPU time measured at it
+  };
+  RobustController();
+  explicit RobustController(const Params& params);
+  std::string_view Name() const override { return "robust"; }
+  double Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) override;
+  void Reset() override;
+
+private:
+  double Correct(double scale, double measured, const ControlTarget& target, bool panic);
+  Params m_Params;
+  std::vector<double> m_Samples;  // usable samples at the current scale, newest last
+  std::vector<double> m_Outliers; // consecutive rejected outliers
+  int m_SkipFrames = 0;
+  int m_OverBudget = 0;
+  double m_LastAppliedScale = -1.0;  // scale we returned last (to notice external changes)
+  // Secant memory: the previous correction's (log scale, log time) pair.
+  bool m_HaveSecant = false;
+  double m_PrevLogScale = 0.0;
+  double m_PrevLogTime = 0.0;
+  double m_Gamma = 2.0;
+};
+
+enum class ControllerKind { Article, UEStyle, Robust };
+std::unique_ptr<ResolutionController> MakeController(ControllerKind kind);
+// "article", "ue-style" (or "ue"), "robust"; false for an unknown name.
+bool ParseControllerKind(std::string_view name, ControllerKind* kind);
+std::string_view ToString(ControllerKind kind);
+
+}  // namespace drr

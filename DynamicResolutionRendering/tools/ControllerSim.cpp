@@ -1,0 +1,177 @@
+// drr_controller_sim: closed-loop comparison of the resolution control laws.
+// Run with --help for the options. The model and metrics live in
+// ControllerSimCore.cpp (shared with the tests).
+#include "ControllerSim.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace {
+
+using drr::ControllerKind;
+using drr::sim::Scenario;
+
+void Usage(std::ostream& out) {
+  out << "usage: drr_controller_sim [options]\n"
+         "  --controller NAME   article | ue-style | robust | all (default all); repeatable or comma list\n"
+         "  --scenario NAME     step2x | step-half | ramp | periodic | cpu-bound | spikes | nan | vsync60 |\n"
+         "                      still | all (default all); repeatable or comma list\n"
+         "  --frames N          frames per run, " << drr::sim::kMinFrames << "..1000000 (default 900)\n"
+         "  --seed N            noise seed, 0..4294967295 (default 20110228)\n"
+         "  --noise X           relative GPU-time noise, 0..0.5 (default 0.01; still uses min(X, 0.002))\n"
+         "  --latency N         frames before a GPU time reaches the controller, 0..16 (default 0)\n"
+         "  --gain K            gain of the article law, 0.001..10 (default 0.01)\n"
+         "  --csv PATH          also write the table (or the sweep) as CSV\n"
+         "  --sweep-k           sweep the article law's gain k over 0.001..10 instead of the matrix\n"
+         "  --help              this text\n"
+         "Plant: gpu = (2 ms + 30 ms * sx * sy * load) * (1 + noise N(0,1)), budget 1/60 s, headroom 10 %,\n"
+         "scale in [0.3, 1], back buffer 1280x720; disturbance at frame 300.\n";
+}
+
+[[noreturn]] void Fail(const std::string& message) {
+  std::cerr << "drr_controller_sim: " << message << "\n\n";
+  Usage(std::cerr);
+  std::exit(2);
+}
+
+bool ParseDouble(std::string_view text, double* out) {
+  if (text.empty()) return false;
+  std::string s(text);
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (end != s.c_str() + s.size() || !std::isfinite(v)) return false;
+  *out = v;
+  return true;
+}
+
+bool ParseInt(std::string_view text, long long lo, long long hi, long long* out) {
+  long long v = 0;
+  const auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || p != text.data() + text.size() || v < lo || v > hi) return false;
+  *out = v;
+  return true;
+}
+
+std::vector<std::string_view> SplitCommas(std::string_view s) {
+  std::vector<std::string_view> parts;
+  while (true) {
+    const auto comma = s.find(',');
+    parts.push_back(s.substr(0, comma));
+    if (comma == std::string_view::npos) break;
+    s.remove_prefix(comma + 1);
+  }
+  return parts;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<ControllerKind> kinds;
+  std::vector<Scenario> scenarios;
+  drr::sim::SimConfig config;
+  double gain = drr::ArticleController::kDefaultGain;
+  bool gainSet = false;
+  std::string csvPath;
+  bool sweep = false;
+
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    auto value = [&](std::string_view name) -> std::string_view {
+      if (i + 1 >= argc) Fail("missing value after " + std::string(name));
+      return argv[++i];
+    };
+    if (arg == "--help" || arg == "-h") {
+      Usage(std::cout);
+      return 0;
+    } else if (arg == "--controller") {
+      for (std::string_view name : SplitCommas(value(arg))) {
+        if (name == "all") {
+          kinds = {ControllerKind::Article, ControllerKind::UEStyle, ControllerKind::Robust};
+          continue;
+        }
+        ControllerKind k;
+        if (!drr::ParseControllerKind(name, &k)) Fail("unknown controller '" + std::string(name) + "'");
+        kinds.push_back(k);
+      }
+    } else if (arg == "--scenario") {
+      for (std::string_view name : SplitCommas(value(arg))) {
+        if (name == "all") {
+          scenarios = drr::sim::AllScenarios();
+          continue;
+        }
+        Scenario s;
+        if (!drr::sim::ParseScenario(name, &s)) Fail("unknown scenario '" + std::string(name) + "'");
+        scenarios.push_back(s);
+      }
+    } else if (arg == "--frames") {
+      long long v;
+      if (!ParseInt(value(arg), drr::sim::kMinFrames, 1000000, &v)) Fail("--frames needs an integer in range");
+      config.frames = static_cast<int>(v);
+    } else if (arg == "--seed") {
+      long long v;
+      if (!ParseInt(value(arg), 0, 4294967295LL, &v)) Fail("--seed needs an integer 0..4294967295");
+      config.seed = static_cast<std::uint32_t>(v);
+    } else if (arg == "--noise") {
+      double v;
+      if (!ParseDouble(value(arg), &v) || v < 0.0 || v > 0.5) Fail("--noise needs a number 0..0.5");
+      config.plant.noise = v;
+    } else if (arg == "--latency") {
+      long long v;
+      if (!ParseInt(value(arg), 0, 16, &v)) Fail("--latency needs an integer 0..16");
+      config.plant.latencyFrames = static_cast<int>(v);
+    } else if (arg == "--gain") {
+      if (!ParseDouble(value(arg), &gain) || gain < drr::ArticleController::kMinGain ||
+          gain > drr::ArticleController::kMaxGain)
+        Fail("--gain needs a number 0.001..10");
+      gainSet = true;
+    } else if (arg == "--csv") {
+      csvPath = std::string(value(arg));
+      if (csvPath.empty()) Fail("--csv needs a path");
+    } else if (arg == "--sweep-k") {
+      sweep = true;
+    } else {
+      Fail("unknown argument '" + std::string(arg) + "'");
+    }
+  }
+  if (kinds.empty()) kinds = {ControllerKind::Article, ControllerKind::UEStyle, ControllerKind::Robust};
+  if (scenarios.empty()) scenarios = drr::sim::AllScenarios();
+
+  std::ofstream csv;
+  if (!csvPath.empty()) {
+    csv.open(csvPath);
+    if (!csv) {
+      std::cerr << "drr_controller_sim: cannot write '" << csvPath << "'\n";
+      return 1;
+    }
+  }
+
+  if (sweep) {
+    const auto rows = drr::sim::SweepArticleGain(config);
+    drr::sim::PrintSweep(std::cout, rows, config);
+    if (csv.is_open()) drr::sim::WriteSweepCsv(csv, rows);
+    return 0;
+  }
+
+  std::vector<drr::sim::SimResult> results;
+  for (ControllerKind k : kinds) {
+    for (Scenario s : scenarios) {
+      std::unique_ptr<drr::ResolutionController> controller =
+          (k == ControllerKind::Article && gainSet) ? std::make_unique<drr::ArticleController>(gain)
+                                                    : drr::MakeController(k);
+      results.push_back(drr::sim::RunScenario(*controller, drr::sim::ConfigFor(s, config)));
+    }
+  }
+  std::cout << "Plant: gpu = (2 ms + 30 ms * sx * sy * load) * (1 + " << config.plant.noise
+            << " N(0,1)), budget 16.67 ms, aim 15.0 ms (article: 16.67 ms), latency "
+            << config.plant.latencyFrames << ", seed " << config.seed << ", " << config.frames
+            << " frames, disturbance at 300\n\n";
+  drr::sim::PrintTable(std::cout, results);
+  if (csv.is_open()) drr::sim::WriteCsv(csv, results);
+  return 0;
+}

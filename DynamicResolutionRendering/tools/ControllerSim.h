@@ -1,0 +1,117 @@
+// Closed-loop simulator of the resolution controllers: the plant model, the
+// scenarios and the metrics. Shared by the drr_controller_sim tool and the
+// tests (Tests/controller), so both drive one model.
+//
+// Plant (per frame n, s = applied scale per axis after the viewport
+// quantisation of DynamicResolution, so the pixel fraction is sx * sy ~ s^2):
+//   gpu(n)   = (fixed + pixel * sx * sy * load(n)) * (1 + noise * N(0,1))
+//   frame(n) = max(cpu(n), gpu(n)), rounded up to a multiple of 1/60 s in vsync60
+// The controller sees gpu (optionally delayed by latencyFrames, optionally
+// replaced by a corrupt value in the nan scenario) and frame. Noise comes from
+// std::mt19937 (fully specified) through our own Box-Muller transform, so a
+// seed gives the same run with any standard library.
+#pragma once
+
+#include "ResolutionController.h"
+
+#include <cstdint>
+#include <iosfwd>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace drr::sim {
+
+struct PlantModel {
+  double fixedSeconds = 0.002;   // resolution-independent GPU work (c)
+  double pixelSeconds = 0.030;   // GPU work at scale 1, load 1 (p)
+  double noise = 0.01;           // relative standard deviation of the GPU time
+  double cpuSeconds = 0.005;     // CPU time per frame when not CPU-bound
+  int latencyFrames = 0;         // frames before a GPU time reaches the controller
+  double GpuSeconds(double pixelFraction, double load) const { return fixedSeconds + pixelSeconds * pixelFraction * load; }
+};
+
+enum class Scenario { Step2x, StepHalf, Ramp, Periodic, CpuBound, Spikes, NaN, VSync60, Still };
+
+const std::vector<Scenario>& AllScenarios();
+std::string_view ToString(Scenario scenario);
+bool ParseScenario(std::string_view name, Scenario* scenario);
+std::string_view Describe(Scenario scenario);
+
+struct SimConfig {
+  Scenario scenario = Scenario::Step2x;
+  int frames = 900;            // >= kMinFrames
+  int disturbanceFrame = 300;  // also the end of the warm-up (metrics start here)
+  PlantModel plant;
+  ControlTarget target;        // budget 1/60 s, headroom 10 %, scale [0.3, 1]
+  std::uint32_t seed = 20110228u;
+  unsigned int backBufferWidth = 1280;
+  unsigned int backBufferHeight = 720;
+  double settleBand = 0.05;    // +-5 % of the controller's aim
+  int stillAfterFrames = 150;  // a load is "still" once unchanged for this many frames
+};
+constexpr int kMinFrames = 600;
+
+// Per-scenario adjustments of a base configuration (noise of `still`, ...).
+SimConfig ConfigFor(Scenario scenario, const SimConfig& base);
+
+struct FrameRecord {
+  int frame = 0;
+  double load = 1.0;
+  double scale = 1.0;        // applied scale X at the start of the frame
+  double modelGpu = 0.0;     // noise-free GPU time at that scale and load
+  double measuredGpu = 0.0;  // what the controller was given
+  double frameSeconds = 0.0;
+  bool changed = false;      // viewport changed after this frame
+};
+
+struct SimResult {
+  std::string controller;
+  std::string scenario;
+  double aimSeconds = 0.0;
+  int settleFrames = -1;        // frames after the disturbance until the model GPU time stays within the band; -1 never
+  bool settleApplies = true;    // false for periodic (never still)
+  double overshootPct = 0.0;    // largest excursion past the aim, opposite to the initial error (or the largest deviation)
+  double steadyErrorPct = 0.0;  // mean (model / aim - 1) over the last 100 frames
+  int stillChanges = 0;         // viewport changes while the load was still
+  int overBudget = 0;           // frames after warm-up whose GPU time exceeded the budget (injected spikes excluded)
+  int changes = 0;              // viewport changes after warm-up
+  double finalScale = 0.0;
+  std::vector<FrameRecord> trace;  // filled when asked
+};
+
+SimResult RunScenario(ResolutionController& controller, const SimConfig& config, bool keepTrace = false);
+// Fresh controller of each kind for each scenario.
+std::vector<SimResult> RunMatrix(const std::vector<ControllerKind>& kinds, const std::vector<Scenario>& scenarios,
+                                 const SimConfig& base);
+
+// Totals per controller over a matrix.
+struct Totals {
+  std::string controller;
+  int overBudget = 0;
+  int stillChanges = 0;
+};
+std::vector<Totals> Summarise(const std::vector<SimResult>& results);
+
+void PrintTable(std::ostream& out, const std::vector<SimResult>& results);
+void WriteCsv(std::ostream& out, const std::vector<SimResult>& results);
+
+// --sweep-k: the article law on step2x (quantised viewport, noise as configured)
+// for gains 0.001..10 in log steps.
+struct SweepRow {
+  double gain = 0.0;
+  double multiplier = 0.0;      // analytic error multiplier 1 - 2 k alpha at the post-step fixed point
+  int settleFrames = -1;
+  double amplitudePct = 0.0;    // (max - min) / mean of the scale over the last 200 frames
+  double alternation = 0.0;     // fraction of frame-to-frame scale changes that reverse direction
+  bool hitsClamp = false;       // the scale touched a limit in the last 200 frames
+  std::string verdict;          // "monotone", "oscillating, converges", "unstable: bounded by clamp", ...
+};
+// alpha = fraction of the GPU time that scales with pixels at the article law's
+// post-step fixed point (t = T): alpha = 1 - fixed / T.
+double ArticleAlpha(const PlantModel& plant, const ControlTarget& target);
+std::vector<SweepRow> SweepArticleGain(const SimConfig& base, int stepsPerDecade = 4);
+void PrintSweep(std::ostream& out, const std::vector<SweepRow>& rows, const SimConfig& base);
+void WriteSweepCsv(std::ostream& out, const std::vector<SweepRow>& rows);
+
+}  // namespace drr::sim
