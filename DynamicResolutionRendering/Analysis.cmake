@@ -3,4 +3,4 @@ add_library(drr_analysis STATIC
   ${CMAKE_CURRENT_LIST_DIR}/analysis/ImageMetrics.cpp
   ${CMAKE_CURRENT_LIST_DIR}/analysis/Plot.cpp)
 target_include_directories(drr_analysis PUBLIC ${CMAKE_CURRENT_LIST_DIR})
-target_link_libraries(drr_analysis PUBLIC OpenImageIO::OpenImageIO PRIVATE PkgConfig::IMGUI)
+target_link_libraries(drr_analysis PUBLIC drr_imageio PRIVATE PkgConfig::IMGUI)

@@ -1,8 +1,7 @@
 #include "analysis/Plot.h"
+#include "imageio/ImageFile.h"
 
 #include <imgui.h>
-
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cmath>
@@ -86,18 +85,7 @@ class Canvas {
   }
 
   bool Save(const std::string& path, std::string* error) const {
-    auto out = OIIO::ImageOutput::create(path);
-    if (!out) {
-      if (error) *error = "cannot create '" + path + "': " + OIIO::geterror();
-      return false;
-    }
-    OIIO::ImageSpec spec(int(w_), int(h_), 3, OIIO::TypeDesc::UINT8);
-    if (!out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgb_.data())) {
-      if (error) *error = "cannot write '" + path + "': " + out->geterror();
-      return false;
-    }
-    out->close();
-    return true;
+    return WriteImageFile(path, w_, h_, 3, rgb_.data(), error);
   }
 
  private:

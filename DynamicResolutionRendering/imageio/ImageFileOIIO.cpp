@@ -1,0 +1,80 @@
+// OpenImageIO backend of ImageFile.h.
+#include <OpenImageIO/imageio.h>
+
+#include "imageio/ImageFile.h"
+
+namespace drr {
+
+bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* error) {
+  // Keep straight (unassociated) alpha as stored: decals and masks need it.
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  auto in = OIIO::ImageInput::open(path, &config);
+  if (!in) {
+    if (error) *error = path + ": " + OIIO::geterror();
+    return false;
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.width > 32768 ||
+      spec.height > 32768) {
+    if (error) {
+      *error = path + ": unsupported image size " + std::to_string(spec.width) + "x" +
+               std::to_string(spec.height) + "x" + std::to_string(spec.nchannels);
+    }
+    return false;
+  }
+  image->width = uint32_t(spec.width);
+  image->height = uint32_t(spec.height);
+  image->channels = uint32_t(std::min(spec.nchannels, 4));
+  image->isFloat = spec.format.basetype != OIIO::TypeDesc::UINT8 &&
+                   spec.format.basetype != OIIO::TypeDesc::INT8;
+  const size_t count = size_t(image->width) * image->height * image->channels;
+  bool ok;
+  if (image->isFloat) {
+    image->f32.resize(count);
+    ok = in->read_image(0, 0, 0, int(image->channels), OIIO::TypeDesc::FLOAT, image->f32.data());
+  } else {
+    image->u8.resize(count);
+    ok = in->read_image(0, 0, 0, int(image->channels), OIIO::TypeDesc::UINT8, image->u8.data());
+  }
+  if (!ok) {
+    if (error) *error = path + ": " + in->geterror();
+    return false;
+  }
+  return true;
+}
+
+namespace {
+bool Write(const std::string& path, uint32_t w, uint32_t h, uint32_t channels,
+           OIIO::TypeDesc type, const void* pixels, size_t rowPitch, std::string* error) {
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) {
+    if (error) *error = path + ": " + OIIO::geterror();
+    return false;
+  }
+  OIIO::ImageSpec spec(int(w), int(h), int(channels), type);
+  spec.attribute("oiio:UnassociatedAlpha", 1);  // the pixels are not premultiplied
+  if (!out->open(path, spec) ||
+      !out->write_image(type, pixels, OIIO::AutoStride, OIIO::stride_t(rowPitch))) {
+    if (error) *error = path + ": " + out->geterror();
+    return false;
+  }
+  return out->close();
+}
+}  // namespace
+
+bool WriteImageFile(const std::string& path, uint32_t width, uint32_t height, uint32_t channels,
+                    const uint8_t* pixels, std::string* error, uint32_t rowPitch) {
+  const size_t pitch = rowPitch ? rowPitch : size_t(width) * channels;
+  return Write(path, width, height, channels, OIIO::TypeDesc::UINT8, pixels, pitch, error);
+}
+
+bool WriteImageFileFloat(const std::string& path, uint32_t width, uint32_t height,
+                         uint32_t channels, const float* pixels, std::string* error) {
+  return Write(path, width, height, channels, OIIO::TypeDesc::FLOAT, pixels,
+               size_t(width) * channels * sizeof(float), error);
+}
+
+std::string ImageFileBackend() { return std::string("OpenImageIO ") + OIIO_VERSION_STRING; }
+
+}  // namespace drr

@@ -1,0 +1,88 @@
+// stb backend of ImageFile.h (Debian's libstb: the implementation is in the
+// shared library, so only the declarations are included here).
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+
+#include "imageio/ImageFile.h"
+
+namespace drr {
+
+bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* error) {
+  int w = 0, h = 0, n = 0;
+  if (!stbi_info(path.c_str(), &w, &h, &n)) {
+    if (error) *error = path + ": " + (stbi_failure_reason() ? stbi_failure_reason() : "unreadable");
+    return false;
+  }
+  if (w <= 0 || h <= 0 || w > 32768 || h > 32768) {
+    if (error) *error = path + ": unsupported image size";
+    return false;
+  }
+  image->width = uint32_t(w);
+  image->height = uint32_t(h);
+  image->channels = uint32_t(std::clamp(n, 1, 4));
+  image->isFloat = stbi_is_hdr(path.c_str()) || stbi_is_16_bit(path.c_str());
+  const size_t count = size_t(w) * h * image->channels;
+  if (image->isFloat) {
+    float* data = stbi_loadf(path.c_str(), &w, &h, &n, int(image->channels));
+    if (!data) {
+      if (error) *error = path + ": " + stbi_failure_reason();
+      return false;
+    }
+    image->f32.assign(data, data + count);
+    stbi_image_free(data);
+  } else {
+    stbi_uc* data = stbi_load(path.c_str(), &w, &h, &n, int(image->channels));
+    if (!data) {
+      if (error) *error = path + ": " + stbi_failure_reason();
+      return false;
+    }
+    image->u8.assign(data, data + count);
+    stbi_image_free(data);
+  }
+  return true;
+}
+
+bool WriteImageFile(const std::string& path, uint32_t width, uint32_t height, uint32_t channels,
+                    const uint8_t* pixels, std::string* error, uint32_t rowPitch) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  const int w = int(width), h = int(height), c = int(channels);
+  const int pitch = int(rowPitch ? rowPitch : width * channels);
+  int ok = 0;
+  if (ext == ".png") {
+    ok = stbi_write_png(path.c_str(), w, h, c, pixels, pitch);
+  } else {
+    // The other writers take tightly packed rows.
+    std::vector<uint8_t> packed(size_t(width) * height * channels);
+    for (uint32_t y = 0; y < height; ++y)
+      std::memcpy(&packed[size_t(y) * width * channels], pixels + size_t(y) * pitch, width * channels);
+    if (ext == ".jpg" || ext == ".jpeg") ok = stbi_write_jpg(path.c_str(), w, h, c, packed.data(), 95);
+    else if (ext == ".tga") ok = stbi_write_tga(path.c_str(), w, h, c, packed.data());
+    else if (ext == ".bmp") ok = stbi_write_bmp(path.c_str(), w, h, c, packed.data());
+    else {
+      if (error) *error = path + ": format not supported by the stb image backend (use .png, .jpg, .tga, .bmp)";
+      return false;
+    }
+  }
+  if (!ok && error) *error = path + ": cannot write the file";
+  return ok != 0;
+}
+
+bool WriteImageFileFloat(const std::string& path, uint32_t width, uint32_t height,
+                         uint32_t channels, const float* pixels, std::string* error) {
+  if (std::filesystem::path(path).extension() != ".hdr") {
+    if (error) *error = path + ": the stb image backend writes float images only as .hdr";
+    return false;
+  }
+  const int ok = stbi_write_hdr(path.c_str(), int(width), int(height), int(channels), pixels);
+  if (!ok && error) *error = path + ": cannot write the file";
+  return ok != 0;
+}
+
+std::string ImageFileBackend() { return "stb"; }
+
+}  // namespace drr
