@@ -5,6 +5,7 @@
 // cannot carry OpenImageIO's dependencies.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -22,6 +23,11 @@ struct ImageFileData {
 // high-dynamic-range sources (EXR, HDR, 16/32-bit) come back as float.
 // On failure returns false and names the file and the reason.
 bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* error);
+
+// Same, from an encoded file held in memory (textures embedded in a model);
+// name is used in messages only.
+bool ReadImageMemory(const void* data, size_t size, const std::string& name, ImageFileData* image,
+                     std::string* error);
 
 // Writes 8-bit pixels (rows tightly packed unless rowPitch is given); the
 // format follows the extension (.png, .jpg, .tga, .bmp; .exr with OpenImageIO).

@@ -1,24 +1,20 @@
 // OpenImageIO backend of ImageFile.h.
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "imageio/ImageFile.h"
 
 namespace drr {
 
-bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* error) {
-  // Keep straight (unassociated) alpha as stored: decals and masks need it.
-  OIIO::ImageSpec config;
-  config.attribute("oiio:UnassociatedAlpha", 1);
-  auto in = OIIO::ImageInput::open(path, &config);
-  if (!in) {
-    if (error) *error = path + ": " + OIIO::geterror();
-    return false;
-  }
+namespace {
+
+bool ReadFrom(OIIO::ImageInput* in, const std::string& name, ImageFileData* image,
+              std::string* error) {
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.width > 32768 ||
       spec.height > 32768) {
     if (error) {
-      *error = path + ": unsupported image size " + std::to_string(spec.width) + "x" +
+      *error = name + ": unsupported image size " + std::to_string(spec.width) + "x" +
                std::to_string(spec.height) + "x" + std::to_string(spec.nchannels);
     }
     return false;
@@ -38,10 +34,43 @@ bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* e
     ok = in->read_image(0, 0, 0, int(image->channels), OIIO::TypeDesc::UINT8, image->u8.data());
   }
   if (!ok) {
-    if (error) *error = path + ": " + in->geterror();
+    if (error) *error = name + ": " + in->geterror();
     return false;
   }
   return true;
+}
+
+// Keep straight (unassociated) alpha as stored: decals and masks need it.
+OIIO::ImageSpec ReadConfig() {
+  OIIO::ImageSpec config;
+  config.attribute("oiio:UnassociatedAlpha", 1);
+  return config;
+}
+
+}  // namespace
+
+bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* error) {
+  const OIIO::ImageSpec config = ReadConfig();
+  auto in = OIIO::ImageInput::open(path, &config);
+  if (!in) {
+    if (error) *error = path + ": " + OIIO::geterror();
+    return false;
+  }
+  return ReadFrom(in.get(), path, image, error);
+}
+
+bool ReadImageMemory(const void* data, size_t size, const std::string& name, ImageFileData* image,
+                     std::string* error) {
+  OIIO::Filesystem::IOMemReader reader(const_cast<void*>(data), size);
+  OIIO::ImageSpec config = ReadConfig();
+  // The format is sniffed from the bytes; the name only needs an extension OIIO knows.
+  auto in = OIIO::ImageInput::open(name.find('.') == std::string::npos ? name + ".png" : name,
+                                   &config, &reader);
+  if (!in) {
+    if (error) *error = name + ": " + OIIO::geterror();
+    return false;
+  }
+  return ReadFrom(in.get(), name, image, error);
 }
 
 namespace {

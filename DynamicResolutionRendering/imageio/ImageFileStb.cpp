@@ -6,44 +6,68 @@
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "imageio/ImageFile.h"
 
 namespace drr {
 
-bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* error) {
+namespace {
+
+// Decodes through stb's memory API, so files and embedded images share it.
+bool Decode(const uint8_t* bytes, size_t size, const std::string& name, ImageFileData* image,
+            std::string* error) {
   int w = 0, h = 0, n = 0;
-  if (!stbi_info(path.c_str(), &w, &h, &n)) {
-    if (error) *error = path + ": " + (stbi_failure_reason() ? stbi_failure_reason() : "unreadable");
+  const int len = int(std::min<size_t>(size, 0x7fffffff));
+  if (!stbi_info_from_memory(bytes, len, &w, &h, &n)) {
+    if (error) *error = name + ": " + (stbi_failure_reason() ? stbi_failure_reason() : "unreadable");
     return false;
   }
   if (w <= 0 || h <= 0 || w > 32768 || h > 32768) {
-    if (error) *error = path + ": unsupported image size";
+    if (error) *error = name + ": unsupported image size";
     return false;
   }
   image->width = uint32_t(w);
   image->height = uint32_t(h);
   image->channels = uint32_t(std::clamp(n, 1, 4));
-  image->isFloat = stbi_is_hdr(path.c_str()) || stbi_is_16_bit(path.c_str());
+  image->isFloat = stbi_is_hdr_from_memory(bytes, len) || stbi_is_16_bit_from_memory(bytes, len);
   const size_t count = size_t(w) * h * image->channels;
   if (image->isFloat) {
-    float* data = stbi_loadf(path.c_str(), &w, &h, &n, int(image->channels));
+    float* data = stbi_loadf_from_memory(bytes, len, &w, &h, &n, int(image->channels));
     if (!data) {
-      if (error) *error = path + ": " + stbi_failure_reason();
+      if (error) *error = name + ": " + stbi_failure_reason();
       return false;
     }
     image->f32.assign(data, data + count);
     stbi_image_free(data);
   } else {
-    stbi_uc* data = stbi_load(path.c_str(), &w, &h, &n, int(image->channels));
+    stbi_uc* data = stbi_load_from_memory(bytes, len, &w, &h, &n, int(image->channels));
     if (!data) {
-      if (error) *error = path + ": " + stbi_failure_reason();
+      if (error) *error = name + ": " + stbi_failure_reason();
       return false;
     }
     image->u8.assign(data, data + count);
     stbi_image_free(data);
   }
   return true;
+}
+
+}  // namespace
+
+bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* error) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    if (error) *error = path + ": cannot open the file";
+    return false;
+  }
+  const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return Decode(bytes.data(), bytes.size(), path, image, error);
+}
+
+bool ReadImageMemory(const void* data, size_t size, const std::string& name, ImageFileData* image,
+                     std::string* error) {
+  return Decode(static_cast<const uint8_t*>(data), size, name, image, error);
 }
 
 bool WriteImageFile(const std::string& path, uint32_t width, uint32_t height, uint32_t channels,
