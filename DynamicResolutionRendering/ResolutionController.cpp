@@ -162,6 +162,9 @@ RobustController::RobustController(const Params& params) : m_Params(params) {
   if (!(p.maxStepDown > 0.0 && p.maxStepDown <= 1.0)) p.maxStepDown = 0.5;
   if (!(p.maxStepUp >= 1.0)) p.maxStepUp = 1.5;
   p.latencyFrames = std::max(0, p.latencyFrames);
+  if (!(p.noiseZ >= 0.0)) p.noiseZ = 3.5;
+  if (!(p.initialNoise >= 0.0 && p.initialNoise < 1.0)) p.initialNoise = 0.01;
+  m_Noise = p.initialNoise;
 }
 
 void RobustController::Reset() {
@@ -172,10 +175,22 @@ void RobustController::Reset() {
   m_LastAppliedScale = -1.0;
   m_HaveSecant = false;
   m_Gamma = 2.0;
+  m_Noise = m_Params.initialNoise;
+  m_LastSample = 0.0;
+  m_Diffs.clear();
+}
+
+double RobustController::Band(int samples) const {
+  const double sigmaMedian = 1.25 * m_Noise / std::sqrt(static_cast<double>(std::max(1, samples)));
+  return std::max(m_Params.deadband, m_Params.noiseZ * sigmaMedian);
+}
+
+double RobustController::SetPoint(const ControlTarget& tgt) const {
+  return AimOf(tgt) * std::exp(-(Band(m_Params.medianWindow) - m_Params.deadband));
 }
 
 double RobustController::Correct(double s, double measured, const ControlTarget& tgt, bool panic) {
-  const double aim = AimOf(tgt);
+  const double aim = SetPoint(tgt);
   const double ls = std::log(s);
   const double lt = std::log(measured);
   double gamma = 2.0;  // quadratic cost model: time ~ pixels ~ s^2
@@ -245,6 +260,14 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
   } else {
     m_Outliers.clear();
     m_Samples.push_back(t);
+    // Noise: successive log differences of accepted samples (a step or drift
+    // moves one difference, not their median). sigma = 1.4826 MAD / sqrt(2).
+    if (m_LastSample > 0.0) {
+      m_Diffs.push_back(std::abs(std::log(t / m_LastSample)));
+      if (m_Diffs.size() > 31) m_Diffs.erase(m_Diffs.begin());
+      if (m_Diffs.size() >= 7) m_Noise = 1.4826 * Median(m_Diffs) / std::sqrt(2.0);
+    }
+    m_LastSample = t;
   }
   if (static_cast<int>(m_Samples.size()) > m_Params.medianWindow) m_Samples.erase(m_Samples.begin());
 
@@ -259,7 +282,12 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
 
   if (static_cast<int>(m_Samples.size()) < m_Params.minSamples) return finish(s);
   const double median = Median(m_Samples);
-  if (std::abs(std::log(median / aim)) <= m_Params.deadband) return finish(s);  // deadband: no swimming
+  // Deadband, widened to the noise of the median (~1.25 sigma / sqrt(n)), and
+  // a set point lowered by the part of the band that exceeds `deadband`, so a
+  // noisy timer does not let the GPU time drift past aim + deadband.
+  const double bandNow = Band(static_cast<int>(m_Samples.size()));
+  const double setPoint = SetPoint(tgt);
+  if (std::abs(std::log(median / setPoint)) <= bandNow) return finish(s);  // no swimming
   return finish(Correct(s, median, tgt, false));
 }
 

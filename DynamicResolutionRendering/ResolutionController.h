@@ -138,8 +138,11 @@ private:
 //  3. median of the samples measured at the current scale (window medianWindow,
 //     at least minSamples before acting; samples still in flight after a change,
 //     latencyFrames, are skipped);
-//  4. deadband: act only when the median is more than `deadband` away from the
-//     aim (relative), so a still load changes the scale zero times;
+//  4. deadband: act only when the median is more than max(deadband,
+//     noiseZ x sigma_median) away from the aim (relative), sigma_median from a
+//     running robust estimate of the sample noise (median of successive log
+//     differences, insensitive to drifts and steps), so a still load changes
+//     the scale zero times even when the GPU timer is noisy;
 //  5. step in log scale: dlog s = log(aim / t) / gamma, gamma = 2 (quadratic
 //     cost model: pixels ~ s^2) for the first correction of an episode, then the
 //     secant slope measured between the last two corrections (clamped to
@@ -153,9 +156,11 @@ private:
 class RobustController final : public ResolutionController {
 public:
   struct Params {
-    int medianWindow = 5;
-    int minSamples = 3;
-    double deadband = 0.03;
+    int medianWindow = 9;       // most samples (at the current scale) in the median
+    int minSamples = 2;         // fewest samples before a (non-panic) correction
+    double deadband = 0.03;     // smallest relative error acted on
+    double noiseZ = 3.5;        // the deadband widens to noiseZ x the median's estimated noise
+    double initialNoise = 0.01; // relative noise assumed before any estimate
     double outlierFactor = 4.0;
     int outlierPersistFrames = 3;
     int panicFrames = 2;
@@ -174,6 +179,8 @@ public:
 
 private:
   double Correct(double scale, double measured, const ControlTarget& target, bool panic);
+  double Band(int samples) const;                    // relative deadband for a median of `samples`
+  double SetPoint(const ControlTarget& target) const; // GPU time steered to
   Params m_Params;
   std::vector<double> m_Samples;  // usable samples at the current scale, newest last
   std::vector<double> m_Outliers; // consecutive rejected outliers
@@ -185,6 +192,9 @@ private:
   double m_PrevLogScale = 0.0;
   double m_PrevLogTime = 0.0;
   double m_Gamma = 2.0;
+  double m_Noise = 0.01;             // estimated relative noise of one sample (log domain)
+  double m_LastSample = 0.0;         // previous usable sample (for the noise estimate)
+  std::vector<double> m_Diffs;       // recent |log(t_i / t_i-1)|
 };
 
 enum class ControllerKind { Article, UEStyle, Robust };
