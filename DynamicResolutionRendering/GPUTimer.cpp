@@ -1,0 +1,90 @@
+#include "GPUTimer.h"
+
+namespace drr {
+
+d3dl::HRESULT GPUTimer::Init(d3dl::Device* device) {
+  Release();
+  for (auto& s : m_Sets) {
+    d3dl::QUERY_DESC d;
+    d.Query = d3dl::QUERY_TIMESTAMP_DISJOINT;
+    d3dl::HRESULT hr = device->CreateQuery(&d, s.disjoint.ReleaseAndGetAddressOf());
+    if (d3dl::FAILED(hr)) return hr;
+    d.Query = d3dl::QUERY_TIMESTAMP;
+    hr = device->CreateQuery(&d, s.begin.ReleaseAndGetAddressOf());
+    if (d3dl::FAILED(hr)) return hr;
+    hr = device->CreateQuery(&d, s.end.ReleaseAndGetAddressOf());
+    if (d3dl::FAILED(hr)) return hr;
+  }
+  m_Ready = true;
+  return d3dl::S_OK;
+}
+
+void GPUTimer::Release() {
+  for (auto& s : m_Sets) s = QuerySet{};
+  m_Next = m_Oldest = m_Outstanding = 0;
+  m_Active = false;
+  m_Ready = false;
+}
+
+void GPUTimer::Start(d3dl::DeviceContext* ctx) {
+  m_Active = false;
+  if (!m_Ready || m_Outstanding == kPipelineDepth) return;  // all in flight: skip
+  QuerySet& s = m_Sets[m_Next];
+  ctx->Begin(s.disjoint.Get());
+  ctx->End(s.begin.Get());
+  m_Active = true;
+}
+
+void GPUTimer::Stop(d3dl::DeviceContext* ctx) {
+  if (!m_Active) return;
+  QuerySet& s = m_Sets[m_Next];
+  ctx->End(s.end.Get());
+  ctx->End(s.disjoint.Get());
+  m_Next = (m_Next + 1) % kPipelineDepth;
+  ++m_Outstanding;
+  m_Active = false;
+}
+
+bool GPUTimer::Poll(d3dl::DeviceContext* ctx, double* ms) {
+  bool got = false;
+  while (m_Outstanding > 0) {
+    QuerySet& s = m_Sets[m_Oldest];
+    d3dl::QUERY_DATA_TIMESTAMP_DISJOINT dj{};
+    if (ctx->GetData(s.disjoint.Get(), &dj, sizeof(dj), d3dl::ASYNC_GETDATA_DONOTFLUSH) != d3dl::S_OK)
+      break;
+    uint64_t t0 = 0, t1 = 0;
+    if (ctx->GetData(s.begin.Get(), &t0, sizeof(t0), d3dl::ASYNC_GETDATA_DONOTFLUSH) != d3dl::S_OK ||
+        ctx->GetData(s.end.Get(), &t1, sizeof(t1), d3dl::ASYNC_GETDATA_DONOTFLUSH) != d3dl::S_OK)
+      break;
+    m_Oldest = (m_Oldest + 1) % kPipelineDepth;
+    --m_Outstanding;
+    if (!dj.Disjoint && dj.Frequency > 0 && t1 >= t0) {
+      *ms = double(t1 - t0) * 1000.0 / double(dj.Frequency);
+      got = true;
+      break;  // one result per call, so the average sees every one
+    }
+  }
+  return got;
+}
+
+bool AveragedGPUTimer::Update(d3dl::DeviceContext* ctx) {
+  double ms = 0.0;
+  bool newAverage = false;
+  while (m_Timer.Poll(ctx, &ms)) {
+    m_Last = ms;
+    ++m_Results;
+    m_Sum += ms;
+    if (++m_Count >= m_AverageCount) {
+      m_Average = m_Sum / m_Count;
+      m_Sum = 0.0;
+      m_Count = 0;
+      m_HasResult = true;
+      newAverage = true;
+    } else if (!m_HasResult) {
+      m_Average = m_Sum / m_Count;  // something to show before the first full set
+    }
+  }
+  return newAverage;
+}
+
+}  // namespace drr

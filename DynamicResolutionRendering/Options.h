@@ -1,0 +1,83 @@
+// Command line of the sample. Option names are stable (scripts use them).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace drr {
+
+// Resolve (scaling) filters, in the order of the original's combo box.
+enum class Filter : int {
+  None = 0,        // debug: the raw dynamic RT
+  Point,
+  Bilinear,
+  Bicubic,
+  Noise,
+  NoiseOffset,
+  TAA,
+  TAANoiseOffset,
+  TAABasic,
+  Count
+};
+const char* FilterName(Filter f);     // GUI name ("Temporal AA")
+const char* FilterOption(Filter f);   // command-line value ("taa")
+bool IsTAA(Filter f);
+
+enum class ControlMode : int { Manual = 0, HalfVSync, VSync, Count };
+const char* ControlModeName(ControlMode m);    // "VSync/2"
+const char* ControlModeOption(ControlMode m);  // "half-vsync"
+
+struct Options {
+  bool headless = false;
+  uint32_t width = 1280, height = 720;
+  int64_t frames = -1;  // -1: headless 300, windowed until closed
+  std::string scene;    // empty: the build's default Arena (or DRR_MEDIA_DIR)
+  std::string shaderDir;  // empty: the build's shader folder (or DRR_SHADER_DIR)
+  int camera = -1;      // -1: the scene's default camera
+  Filter filter = Filter::TAA;
+  float scaleX = 1.0f, scaleY = 1.0f;
+  bool scaleGiven = false;
+  bool dynamicResolution = true;
+  bool superSampling = false;
+  ControlMode control = ControlMode::VSync;
+  bool controlGiven = false;
+  double refresh = 0.0;  // 0: the monitor's rate (60 headless)
+  bool motionBlur = true;
+  bool symmetricTAA = false;
+  bool psClear = true;
+  bool pause = false;
+  bool zoom = false;
+  bool showCameras = false;
+  bool gui = true;
+  bool aspectLock = true;
+  bool vsync = true;
+  bool fullscreen = false;
+  std::string screenshot;
+  bool screenshotNoGui = false;
+  std::string report;
+  bool validation = false;
+  bool stats = false;
+  double time = -1.0;    // >= 0: fixed animation time
+  double fixedDt = 0.0;  // > 0: animation advances by this per frame
+  // Test aid: fill the dynamic colour/velocity RTs outside the viewport with a
+  // marker before the scene, to prove that nothing outside the viewport leaks.
+  bool debugMarkerOutside = false;
+
+  int64_t EffectiveFrames() const { return frames >= 0 ? frames : (headless ? 300 : -1); }
+  float MaxScale() const { return superSampling ? 2.0f : 1.0f; }
+};
+
+enum class ParseStatus { Ok, Help, Error };
+
+// args excludes the program name. On Error, message names the option, the
+// value and the allowed range; on Help, message is the usage text.
+ParseStatus ParseCommandLine(const std::vector<std::string>& args, Options* options,
+                             std::string* message);
+ParseStatus ParseCommandLine(int argc, char** argv, Options* options, std::string* message);
+std::string Usage();
+// "--filter taa --scale-x 0.71 ..." : what the options are, for reports.
+std::string OptionsToJson(const Options& o);
+
+}  // namespace drr

@@ -1,0 +1,141 @@
+#include "Utility.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+namespace drr::Utility {
+
+d3dl::HRESULT RenderTarget::Create(d3dl::Device* device, uint32_t w, uint32_t h,
+                                   d3dl::DXGI_FORMAT fmt, const char* name) {
+  Release();
+  const bool depth = fmt == d3dl::DXGI_FORMAT_D32_FLOAT;
+  d3dl::TEXTURE2D_DESC d;
+  d.Width = w;
+  d.Height = h;
+  d.MipLevels = 1;
+  d.Format = fmt;
+  d.BindFlags = depth ? d3dl::BIND_DEPTH_STENCIL
+                      : (d3dl::BIND_RENDER_TARGET | d3dl::BIND_SHADER_RESOURCE);
+  d3dl::HRESULT hr = device->CreateTexture2D(&d, nullptr, texture.ReleaseAndGetAddressOf());
+  if (d3dl::FAILED(hr)) return hr;
+  texture->SetDebugName(name);
+  if (depth) {
+    hr = device->CreateDepthStencilView(texture.Get(), nullptr, dsv.ReleaseAndGetAddressOf());
+  } else {
+    hr = device->CreateRenderTargetView(texture.Get(), nullptr, rtv.ReleaseAndGetAddressOf());
+    if (d3dl::SUCCEEDED(hr))
+      hr = device->CreateShaderResourceView(texture.Get(), nullptr, srv.ReleaseAndGetAddressOf());
+  }
+  if (d3dl::FAILED(hr)) {
+    Release();
+    return hr;
+  }
+  width = w;
+  height = h;
+  format = fmt;
+  return d3dl::S_OK;
+}
+
+void RenderTarget::Release() {
+  dsv = nullptr;
+  srv = nullptr;
+  rtv = nullptr;
+  texture = nullptr;
+  width = height = 0;
+  format = d3dl::DXGI_FORMAT_UNKNOWN;
+}
+
+bool ReadFile(const std::string& path, std::vector<uint32_t>* words, std::string* error) {
+  std::ifstream f(path, std::ios::binary | std::ios::ate);
+  if (!f) {
+    if (error) *error = "cannot open " + path;
+    return false;
+  }
+  const std::streamsize size = f.tellg();
+  if (size <= 0 || size % 4 != 0) {
+    if (error) *error = path + ": not a SPIR-V file (size " + std::to_string(size) + ")";
+    return false;
+  }
+  words->resize(size_t(size) / 4);
+  f.seekg(0);
+  f.read(reinterpret_cast<char*>(words->data()), size);
+  return bool(f);
+}
+
+bool SaveImageRGBA8(const std::string& path, uint32_t w, uint32_t h, const uint8_t* rgba,
+                    std::string* error) {
+  auto out = OIIO::ImageOutput::create(path);
+  if (!out) {
+    if (error) *error = "cannot write " + path + ": " + OIIO::geterror();
+    return false;
+  }
+  std::string ext = path.substr(path.find_last_of('.') + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  const bool isFloat = ext == "exr" || ext == "hdr";
+  OIIO::ImageSpec spec(int(w), int(h), 4, isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+  if (!out->open(path, spec)) {
+    if (error) *error = "cannot write " + path + ": " + out->geterror();
+    return false;
+  }
+  bool ok;
+  if (isFloat) {
+    // The back buffer holds sRGB-encoded values; EXR stores linear light.
+    std::vector<float> f(size_t(w) * h * 4);
+    for (size_t i = 0; i < f.size(); ++i) {
+      const float c = rgba[i] / 255.0f;
+      f[i] = (i % 4 == 3) ? c
+                          : (c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f));
+    }
+    ok = out->write_image(OIIO::TypeDesc::FLOAT, f.data());
+  } else {
+    ok = out->write_image(OIIO::TypeDesc::UINT8, rgba);
+  }
+  if (!ok && error) *error = "cannot write " + path + ": " + out->geterror();
+  out->close();
+  return ok;
+}
+
+bool LoadImageRGBA8(const std::string& path, uint32_t* w, uint32_t* h, std::vector<uint8_t>* rgba,
+                    std::string* error) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) {
+    if (error) *error = "cannot read " + path + ": " + OIIO::geterror();
+    return false;
+  }
+  const OIIO::ImageSpec& spec = in->spec();
+  *w = uint32_t(spec.width);
+  *h = uint32_t(spec.height);
+  rgba->assign(size_t(*w) * *h * 4, 255);
+  std::vector<uint8_t> tmp(size_t(*w) * *h * spec.nchannels);
+  bool ok = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, tmp.data());
+  for (size_t p = 0; ok && p < size_t(*w) * *h; ++p)
+    for (int c = 0; c < std::min(4, spec.nchannels); ++c) (*rgba)[p * 4 + c] = tmp[p * spec.nchannels + c];
+  in->close();
+  if (!ok && error) *error = "cannot read " + path;
+  return ok;
+}
+
+d3dl::HRESULT LoadVertexShader(d3dl::Device* device, const std::string& dir, const std::string& name,
+                               d3dl::VertexShader** vs, std::vector<uint32_t>* bytecode,
+                               std::string* error) {
+  std::vector<uint32_t> words;
+  if (!ReadFile(dir + "/" + name + ".spv", &words, error)) return d3dl::E_FAIL;
+  d3dl::HRESULT hr = device->CreateVertexShader(words.data(), words.size() * 4, vs);
+  if (d3dl::FAILED(hr) && error) *error = "CreateVertexShader(" + name + ") failed";
+  if (bytecode) *bytecode = std::move(words);
+  return hr;
+}
+
+d3dl::HRESULT LoadPixelShader(d3dl::Device* device, const std::string& dir, const std::string& name,
+                              d3dl::PixelShader** ps, std::string* error) {
+  std::vector<uint32_t> words;
+  if (!ReadFile(dir + "/" + name + ".spv", &words, error)) return d3dl::E_FAIL;
+  d3dl::HRESULT hr = device->CreatePixelShader(words.data(), words.size() * 4, ps);
+  if (d3dl::FAILED(hr) && error) *error = "CreatePixelShader(" + name + ") failed";
+  return hr;
+}
+
+}  // namespace drr::Utility
