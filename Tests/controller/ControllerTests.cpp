@@ -1,0 +1,261 @@
+// Control laws: the article law's exact arithmetic, bounded outputs for any
+// input, stiff gains, and the robust law's headline properties, driving the
+// simulator's plant model (tools/ControllerSim.h) so tests and the simulator
+// share one model.
+#include "ControllerSim.h"
+#include "ResolutionController.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace {
+
+using namespace drr;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kT = 1.0 / 60.0;
+
+ControlTarget Target() { return ControlTarget{kT, 0.1, 0.3, 1.0}; }
+
+TEST(TargetFrameSeconds, VSyncAndHalf) {
+  EXPECT_DOUBLE_EQ(TargetFrameSeconds(60.0, ResolutionControlMode::VSync), 1.0 / 60.0);
+  EXPECT_DOUBLE_EQ(TargetFrameSeconds(60.0, ResolutionControlMode::VSyncHalf), 2.0 / 60.0);
+  EXPECT_DOUBLE_EQ(TargetFrameSeconds(144.0, ResolutionControlMode::VSync), 1.0 / 144.0);
+  EXPECT_DOUBLE_EQ(TargetFrameSeconds(0.0, ResolutionControlMode::VSync), 1.0 / 60.0);
+  EXPECT_DOUBLE_EQ(TargetFrameSeconds(kNaN, ResolutionControlMode::VSyncHalf), 2.0 / 60.0);
+}
+
+TEST(ArticleController, ExactLaw) {
+  const ControlTarget tg = Target();
+  // frame <= 2 gpu: t = (gpu + frame) / 2 = 0.0155; S' = 0.8 (1 + 0.01 (1 - 0.0155 * 60)).
+  EXPECT_DOUBLE_EQ(ArticleController::Step(0.8, {0.015, 0.016}, tg, 0.01), 0.8 * (1.0 + 0.01 * (1.0 - 0.0155 / kT)));
+  // frame > 2 gpu (CPU spike): t = gpu.
+  EXPECT_DOUBLE_EQ(ArticleController::MeasuredSeconds({0.010, 0.030}), 0.010);
+  EXPECT_DOUBLE_EQ(ArticleController::Step(0.8, {0.010, 0.030}, tg, 0.01), 0.8 * (1.0 + 0.01 * (1.0 - 0.010 / kT)));
+  // exactly 2x: still the average (strict >).
+  EXPECT_DOUBLE_EQ(ArticleController::MeasuredSeconds({0.010, 0.020}), 0.015);
+  // VSync/2 target.
+  ControlTarget half = tg;
+  half.budgetSeconds = TargetFrameSeconds(60.0, ResolutionControlMode::VSyncHalf);
+  EXPECT_DOUBLE_EQ(ArticleController::Step(0.5, {0.02, 0.03}, half, 0.01), 0.5 * (1.0 + 0.01 * (1.0 - 0.025 * 30.0)));
+  // clamps [0.3, max]
+  EXPECT_DOUBLE_EQ(ArticleController::Step(0.3, {1.0, 1.0}, tg, 0.01), 0.3);
+  EXPECT_DOUBLE_EQ(ArticleController::Step(1.0, {0.0, 0.001}, tg, 0.01), 1.0);
+  ControlTarget ss = tg;
+  ss.maxScale = 2.0;
+  EXPECT_DOUBLE_EQ(ArticleController::Step(1.0, {0.0, 0.001}, ss, 0.01), 1.01);
+  // the default object is the article's k = 0.01
+  ArticleController law;
+  EXPECT_DOUBLE_EQ(law.Gain(), 0.01);
+  EXPECT_DOUBLE_EQ(law.Update(0.8, {0.015, 0.016}, tg), ArticleController::Step(0.8, {0.015, 0.016}, tg, 0.01));
+  EXPECT_DOUBLE_EQ(law.AimSeconds(tg), kT);
+}
+
+const double kTimes[] = {0.0, 1e-9, 1e-300, 0.001, kT, 100.0 * kT, 1e300, kNaN, kInf, -kInf, -1.0, -0.0};
+const double kScales[] = {0.3, 0.7, 1.0, 0.0, -1.0, 1e-9, 5.0, kNaN, kInf, -kInf};
+
+void ExpectBoundedForAnyInput(ResolutionController& c, const ControlTarget& tg) {
+  for (double s : kScales)
+    for (double gpu : kTimes)
+      for (double frame : kTimes) {
+        const double out = c.Update(s, {gpu, frame}, tg);
+        ASSERT_TRUE(std::isfinite(out)) << c.Name() << " s " << s << " gpu " << gpu << " frame " << frame;
+        ASSERT_GE(out, tg.minScale) << c.Name();
+        ASSERT_LE(out, tg.maxScale) << c.Name();
+      }
+}
+
+TEST(AllControllers, BoundedForAnyInput) {
+  const double gains[] = {0.001, 0.01, 0.1, 0.5, 1.0, 2.0, 10.0, 0.0, -5.0, 1e6, kNaN, kInf};
+  for (double k : gains) {
+    ArticleController law(k);
+    ExpectBoundedForAnyInput(law, Target());
+  }
+  for (ControllerKind kind : {ControllerKind::UEStyle, ControllerKind::Robust}) {
+    auto c = MakeController(kind);
+    ExpectBoundedForAnyInput(*c, Target());
+    ControlTarget ss{kT / 2, 0.2, 0.5, 2.0};
+    ExpectBoundedForAnyInput(*c, ss);
+  }
+}
+
+TEST(AllControllers, BadTargetIsSanitised) {
+  const ControlTarget bad[] = {{kNaN, kNaN, kNaN, kNaN}, {-1.0, 2.0, 0.0, -1.0}, {kInf, -1.0, 0.9, 0.2}};
+  for (const ControlTarget& tg : bad) {
+    const ControlTarget s = SanitizeTarget(tg);
+    EXPECT_TRUE(std::isfinite(s.budgetSeconds) && s.budgetSeconds > 0.0);
+    EXPECT_TRUE(s.minScale > 0.0 && s.maxScale >= s.minScale);
+    for (ControllerKind kind : {ControllerKind::Article, ControllerKind::UEStyle, ControllerKind::Robust}) {
+      auto c = MakeController(kind);
+      for (double gpu : kTimes) {
+        const double out = c->Update(0.7, {gpu, kT}, tg);
+        ASSERT_TRUE(std::isfinite(out));
+        ASSERT_GE(out, s.minScale);
+        ASSERT_LE(out, s.maxScale);
+      }
+    }
+  }
+}
+
+// Closed loop on the simulator's plant, with the quantised viewport, checking
+// every frame for range and finiteness.
+std::vector<double> ClosedLoop(ResolutionController& c, sim::Scenario scenario, int frames = 900) {
+  sim::SimConfig cfg = sim::ConfigFor(scenario, sim::SimConfig{});
+  cfg.frames = frames;
+  const sim::SimResult r = sim::RunScenario(c, cfg, true);
+  std::vector<double> scales;
+  for (const auto& f : r.trace) scales.push_back(f.scale);
+  return scales;
+}
+
+TEST(ArticleController, StiffGainsStayBoundedByTheClamp) {
+  for (double k : {0.5, 1.0, 2.0, 5.0, 10.0}) {
+    ArticleController law(k);
+    for (sim::Scenario s : sim::AllScenarios()) {
+      for (double scale : ClosedLoop(law, s)) {
+        ASSERT_TRUE(std::isfinite(scale)) << k;
+        ASSERT_GE(scale, 0.3 - 1e-3) << k;  // quantised viewport of the clamp value
+        ASSERT_LE(scale, 1.0) << k;
+      }
+    }
+  }
+}
+
+TEST(ArticleController, GainBelowHalfConvergesAboveOneOverAlphaOscillates) {
+  // alpha = (T - c) / T with the simulator's plant: linear analysis says
+  // alternation above 1/(2 alpha), growth (held by the clamp) above 1/alpha.
+  const sim::SimConfig base;
+  const double alpha = sim::ArticleAlpha(base.plant, base.target);
+  ASSERT_NEAR(alpha, 1.0 - 0.002 * 60.0, 1e-12);
+  for (double k : {0.2, 0.4}) {
+    ArticleController law(k);
+    const auto s = ClosedLoop(law, sim::Scenario::Step2x);
+    double lo = 1, hi = 0;
+    for (std::size_t i = s.size() - 100; i < s.size(); ++i) lo = std::min(lo, s[i]), hi = std::max(hi, s[i]);
+    EXPECT_LT(hi - lo, 0.03) << k;
+  }
+  for (double k : {2.0 / alpha, 10.0}) {
+    ArticleController law(k);
+    const auto s = ClosedLoop(law, sim::Scenario::Step2x);
+    double lo = 1, hi = 0;
+    for (std::size_t i = s.size() - 100; i < s.size(); ++i) lo = std::min(lo, s[i]), hi = std::max(hi, s[i]);
+    EXPECT_GT(hi - lo, 0.1) << k;  // sustained 2-cycle ...
+    EXPECT_GE(lo, 0.3 - 1e-3);     // ... that the clamp holds
+    EXPECT_LE(hi, 1.0);
+  }
+}
+
+TEST(IsCpuBoundFrame, Cases) {
+  const ControlTarget tg = Target();
+  EXPECT_TRUE(IsCpuBoundFrame({0.010, 0.030}, tg));    // late frame, GPU fitted
+  EXPECT_FALSE(IsCpuBoundFrame({0.020, 0.0333}, tg));  // GPU over budget: GPU-bound
+  EXPECT_FALSE(IsCpuBoundFrame({0.010, kT}, tg));      // vsync-quantised, on time
+  EXPECT_FALSE(IsCpuBoundFrame({kNaN, 0.030}, tg));
+  EXPECT_FALSE(IsCpuBoundFrame({0.010, kNaN}, tg));
+}
+
+// Drive a controller with a fixed plant at a fixed load, with the same
+// viewport quantisation as the simulator, and return the applied scales.
+TEST(RobustController, ZeroChangesUnderASteadyLoad) {
+  for (double noise : {0.0, 0.002, 0.01}) {
+    RobustController c;
+    sim::SimConfig cfg = sim::ConfigFor(sim::Scenario::Still, sim::SimConfig{});
+    cfg.plant.noise = noise;
+    const sim::SimResult r = sim::RunScenario(c, cfg, true);
+    EXPECT_EQ(r.changes, 0) << noise;  // no change at all after the warm-up
+    EXPECT_EQ(r.stillChanges, 0) << noise;
+    EXPECT_EQ(r.settleFrames, 0) << noise;
+  }
+}
+
+TEST(RobustController, HoldsExactlyWhenTheTimeIsOnTarget) {
+  RobustController c;
+  const ControlTarget tg = Target();
+  double s = 0.7;
+  for (int i = 0; i < 1000; ++i) {
+    const double next = c.Update(s, {0.015 * (1.0 + 0.005 * ((i % 3) - 1)), 0.016}, tg);
+    ASSERT_EQ(next, s) << i;
+  }
+}
+
+TEST(RobustController, SettlesA2xStepWithin20Frames) {
+  for (std::uint32_t seed : {1u, 2u, 3u, 20110228u}) {
+    RobustController c;
+    sim::SimConfig cfg = sim::ConfigFor(sim::Scenario::Step2x, sim::SimConfig{});
+    cfg.seed = seed;
+    const sim::SimResult r = sim::RunScenario(c, cfg);
+    EXPECT_GE(r.settleFrames, 0) << seed;
+    EXPECT_LE(r.settleFrames, 20) << seed;
+    EXPECT_EQ(r.stillChanges, 0) << seed;
+  }
+}
+
+TEST(RobustController, SettlesWithMeasurementLatencyWhenTold) {
+  RobustController::Params p;
+  p.latencyFrames = 2;
+  RobustController c(p);
+  sim::SimConfig cfg = sim::ConfigFor(sim::Scenario::Step2x, sim::SimConfig{});
+  cfg.plant.latencyFrames = 2;
+  const sim::SimResult r = sim::RunScenario(c, cfg);
+  EXPECT_GE(r.settleFrames, 0);
+  EXPECT_LE(r.settleFrames, 20);
+}
+
+TEST(RobustController, IgnoresIsolatedSpikesAndBadSamples) {
+  RobustController c;
+  const ControlTarget tg = Target();
+  const double s = 0.7;
+  for (int i = 0; i < 20; ++i) ASSERT_EQ(c.Update(s, {0.015, 0.016}, tg), s);
+  for (double bad : {1.5, kNaN, kInf, -kInf, 0.0, -0.01, 1e-9}) {
+    EXPECT_EQ(c.Update(s, {bad, 0.016}, tg), s) << bad;
+    EXPECT_EQ(c.Update(s, {0.015, 0.016}, tg), s);
+  }
+}
+
+TEST(RobustController, ReactsToPersistentOverload) {
+  RobustController c;
+  const ControlTarget tg = Target();
+  double s = 0.7;
+  for (int i = 0; i < 10; ++i) s = c.Update(s, {0.015, 0.016}, tg);
+  // 100x for good: after outlierPersistFrames it is the new load; the scale
+  // keeps dropping (halving per correction at most) down to the minimum.
+  for (int i = 0; i < 60; ++i) s = c.Update(s, {1.5 * (s * s) / 0.49, 1.5}, tg);
+  EXPECT_DOUBLE_EQ(s, tg.minScale);
+}
+
+TEST(RobustController, IgnoresCpuBoundFrames) {
+  RobustController c;
+  const ControlTarget tg = Target();
+  const double s = 0.7;
+  for (int i = 0; i < 200; ++i) ASSERT_EQ(c.Update(s, {0.012, 0.020 + 0.0001 * (i % 50)}, tg), s);
+}
+
+TEST(UEStyleController, PanicsAfterConsecutiveOverBudgetFrames) {
+  UEStyleController c;
+  const ControlTarget tg = Target();
+  double s = 0.7;
+  for (int i = 0; i < 20; ++i) s = c.Update(s, {0.015, 0.016}, tg);
+  const double before = s;
+  s = c.Update(s, {0.030, 0.030}, tg);
+  s = c.Update(s, {0.030, 0.030}, tg);
+  EXPECT_LT(s, before * 0.8);
+}
+
+TEST(Factory, Names) {
+  ControllerKind k;
+  EXPECT_TRUE(ParseControllerKind("article", &k));
+  EXPECT_EQ(k, ControllerKind::Article);
+  EXPECT_TRUE(ParseControllerKind("ue", &k));
+  EXPECT_EQ(k, ControllerKind::UEStyle);
+  EXPECT_TRUE(ParseControllerKind("robust", &k));
+  EXPECT_FALSE(ParseControllerKind("pid", &k));
+  for (ControllerKind kind : {ControllerKind::Article, ControllerKind::UEStyle, ControllerKind::Robust})
+    EXPECT_EQ(MakeController(kind)->Name(), ToString(kind));
+}
+
+}  // namespace
