@@ -1,6 +1,7 @@
 #include "scene/ModelLoader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -243,14 +244,45 @@ bool LoadModel(const std::string& path, const ModelLoadOptions& opts, ModelData*
   importer.SetPropertyBool(AI_CONFIG_PP_FD_REMOVE, true);
   importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.f);
   unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType |
-                   aiProcess_FindInvalidData | aiProcess_FindDegenerates | aiProcess_GenSmoothNormals |
+                   aiProcess_FindDegenerates | aiProcess_GenSmoothNormals |
                    aiProcess_GenUVCoords | aiProcess_TransformUVCoords | aiProcess_CalcTangentSpace |
                    aiProcess_JoinIdenticalVertices | aiProcess_ImproveCacheLocality |
                    aiProcess_RemoveRedundantMaterials | aiProcess_FlipUVs;
   if (opts.animationsOnly) flags = aiProcess_ValidateDataStructure;
   const aiScene* sc = nullptr;
+  size_t nanFaces = 0;
   try {
-    sc = importer.ReadFile(path, flags);
+    // Read without post-processing first: non-finite positions must go before
+    // the steps that sort vertices spatially (Assimp's own FindInvalidData
+    // would drop a whole mesh for one NaN; we drop only the faces using it).
+    sc = importer.ReadFile(path, 0);
+    if (sc && !opts.animationsOnly) {
+      for (unsigned mi = 0; mi < sc->mNumMeshes; ++mi) {
+        aiMesh* am = sc->mMeshes[mi];
+        if (!am || !am->mVertices) continue;
+        std::vector<uint8_t> bad(am->mNumVertices, 0);
+        bool any = false;
+        for (unsigned v = 0; v < am->mNumVertices; ++v) {
+          aiVector3D& p = am->mVertices[v];
+          if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+            bad[v] = 1;
+            any = true;
+            p = aiVector3D(0.f);
+          }
+        }
+        if (!any) continue;
+        for (unsigned f = 0; f < am->mNumFaces; ++f) {
+          aiFace& face = am->mFaces[f];
+          bool hit = false;
+          for (unsigned k = 0; k < face.mNumIndices; ++k) hit |= face.mIndices[k] < bad.size() && bad[face.mIndices[k]];
+          if (hit && face.mNumIndices > 0) {  // made degenerate: FindDegenerates removes it
+            for (unsigned k = 1; k < face.mNumIndices; ++k) face.mIndices[k] = face.mIndices[0];
+            ++nanFaces;
+          }
+        }
+      }
+    }
+    if (sc) sc = importer.ApplyPostProcessing(flags);
   } catch (const std::exception& e) {
     *error = path + ": import failed (" + e.what() + ")";
     return false;
@@ -268,6 +300,11 @@ bool LoadModel(const std::string& path, const ModelLoadOptions& opts, ModelData*
     return false;
   }
   const fs::path folder = fs::path(path).parent_path();
+  if (nanFaces)
+    out->warnings.push_back("dropped " + std::to_string(nanFaces) + " faces with non-finite (NaN/Inf) vertex positions");
+  std::string lowerExt = fs::path(path).extension().string();
+  for (auto& c : lowerExt) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const bool isGltf = lowerExt == ".gltf" || lowerExt == ".glb";
 
   try {
     // Meshes.
@@ -452,11 +489,17 @@ bool LoadModel(const std::string& path, const ModelLoadOptions& opts, ModelData*
       cd.lookAt = ToGlm(c->mLookAt);
       cd.up = ToGlm(c->mUp);
       if (!Finite(cd.position)) cd.position = glm::vec3(0.f);
+      // A glTF camera sits at its node's origin looking down -Z (spec); Assimp 5.2
+      // copies the node's translation into mPosition as well, which would apply it twice.
+      if (isGltf && cd.node >= 0) cd.position = glm::vec3(0.f);
       if (!Finite(cd.lookAt) || glm::length(cd.lookAt) < 1e-6f) cd.lookAt = glm::vec3(0, 0, -1);
       if (!Finite(cd.up) || glm::length(cd.up) < 1e-6f) cd.up = glm::vec3(0, 1, 0);
       float hfov = c->mHorizontalFOV, aspect = c->mAspect;
       if (std::isfinite(hfov) && hfov > 0.01f && hfov < 3.1f) {
-        cd.fovY = (std::isfinite(aspect) && aspect > 0.01f) ? 2.f * std::atan(std::tan(hfov * 0.5f) / aspect) : hfov;
+        if (isGltf && std::isfinite(aspect) && aspect > 0.01f)
+          cd.fovY = hfov / aspect;  // Assimp 5.2's glTF importer stores yfov * aspectRatio as the horizontal FOV
+        else
+          cd.fovY = (std::isfinite(aspect) && aspect > 0.01f) ? 2.f * std::atan(std::tan(hfov * 0.5f) / aspect) : hfov;
       }
       out->cameras.push_back(cd);
     }

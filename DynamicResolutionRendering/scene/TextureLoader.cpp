@@ -82,7 +82,7 @@ TextureMip Downsample(const TextureMip& src, TextureKind kind) {
         for (auto q : p)
           for (int c = 0; c < 3; ++c) n[c] += q[c] / 255.f * 2.f - 1.f;
         float len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-        if (len < 1e-6f) { n[0] = 0; n[1] = 0; n[2] = 1; len = 1; }
+        if (len < 0.05f) { n[0] = 0; n[1] = 0; n[2] = 1; len = 1; }  // opposing normals cancel: flat
         for (int c = 0; c < 3; ++c) d[c] = ToByte((n[c] / len) * 0.5f + 0.5f);
         d[3] = static_cast<uint8_t>((p[0][3] + p[1][3] + p[2][3] + p[3][3] + 2) / 4);
       } else {

@@ -1,0 +1,136 @@
+// Scene description parser: good files in both of the original's layouts and
+// malformed ones; every error names file:line and what was expected.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+
+#include "scene/SceneDescription.h"
+
+using namespace drr;
+namespace fs = std::filesystem;
+
+namespace {
+ParseOptions NoFileCheck() {
+  ParseOptions o;
+  o.checkFiles = false;
+  return o;
+}
+bool Parse(const std::string& text, SceneDescription* d, std::string* err, ParseOptions o = NoFileCheck()) {
+  return ParseSceneDescription(text, "/scenes/test.txt", o, d, err);
+}
+}  // namespace
+
+TEST(SceneDescription, OneEntryPerLine) {
+  SceneDescription d;
+  std::string err;
+  ASSERT_TRUE(Parse("arena.gltf NO_ANIM LIT\nbell.gltf bell.gltf LIT\nsky.gltf NO_ANIM UNLIT\n"
+                    "decals.gltf NO_ANIM DECAL\ncam.gltf cam_anim.gltf CAMERA\n", &d, &err)) << err;
+  ASSERT_EQ(d.entries.size(), 5u);
+  EXPECT_EQ(d.entries[0].meshFile, "/scenes/arena.gltf");
+  EXPECT_TRUE(d.entries[0].animFile.empty());
+  EXPECT_EQ(d.entries[1].animFile, "/scenes/bell.gltf");
+  EXPECT_EQ(d.entries[2].type, EntryType::Unlit);
+  EXPECT_EQ(d.entries[3].type, EntryType::Decal);
+  EXPECT_EQ(d.entries[4].type, EntryType::Camera);
+  EXPECT_EQ(d.entries[4].line, 5);
+  EXPECT_EQ(d.entries[4].name, "cam");
+}
+
+TEST(SceneDescription, OneTokenPerLineAndWindowsPaths) {
+  SceneDescription d;
+  std::string err;
+  ASSERT_TRUE(Parse("Arena\\arena.sdkmesh\nNO_ANIM\nLIT\nArena\\cam.sdkmesh\nArena\\cam.sdkmesh_anim\nCAMERA\n", &d, &err))
+      << err;
+  ASSERT_EQ(d.entries.size(), 2u);
+  EXPECT_EQ(d.entries[0].meshPath, "Arena/arena.sdkmesh");
+  EXPECT_EQ(d.entries[1].animFile, "/scenes/Arena/cam.sdkmesh_anim");
+  EXPECT_EQ(d.entries[1].line, 4);
+}
+
+TEST(SceneDescription, CommentsQuotesOptionsCrlfBom) {
+  SceneDescription d;
+  std::string err;
+  std::string text = "\xEF\xBB\xBF# a comment\r\n\r\n\"my model.obj\" NO_ANIM lit name=Thing translate=1,2,3 scale=2 # tail\r\n"
+                     "b.obj NO_ANIM UNLIT rotate=0,90,0 hidden=1 loop=2.5\r\n";
+  ASSERT_TRUE(Parse(text, &d, &err)) << err;
+  ASSERT_EQ(d.entries.size(), 2u);
+  EXPECT_EQ(d.entries[0].meshPath, "my model.obj");
+  EXPECT_EQ(d.entries[0].name, "Thing");
+  EXPECT_EQ(d.entries[0].translate, glm::vec3(1, 2, 3));
+  EXPECT_EQ(d.entries[0].scale, glm::vec3(2));
+  EXPECT_EQ(d.entries[0].line, 3);
+  EXPECT_TRUE(d.entries[1].hidden);
+  EXPECT_DOUBLE_EQ(d.entries[1].loopSeconds, 2.5);
+  glm::vec4 p = d.entries[1].Transform() * glm::vec4(1, 0, 0, 1);
+  EXPECT_NEAR(p.z, -1.f, 1e-5f);  // 90 degrees about Y takes +X to -Z
+}
+
+struct BadCase {
+  const char* text;
+  const char* expectInError;
+};
+
+TEST(SceneDescription, MalformedFilesNameFileLineAndExpectation) {
+  const BadCase cases[] = {
+      {"a.obj NO_ANIM LIT\nb.obj NO_ANIM\n", "test.txt:2: entry 'b.obj' is missing its type (expected LIT, UNLIT, CAMERA or DECAL)"},
+      {"a.obj\n", "test.txt:1: entry 'a.obj' is missing its animation path"},
+      {"a.obj NO_ANIM SHINY\n", "test.txt:1: unknown type 'SHINY' (expected LIT, UNLIT, CAMERA or DECAL)"},
+      {"a.obj LIT\n", "test.txt:1: found type 'LIT' where the animation path or NO_ANIM was expected"},
+      {"LIT a.obj NO_ANIM\n", "test.txt:1: type 'LIT' where a mesh path was expected"},
+      {"a.obj NO_ANIM LIT scale=abc\n", "test.txt:1: scale= expects"},
+      {"a.obj NO_ANIM LIT colour=red\n", "test.txt:1: unknown option 'colour'"},
+      {"\n\na.obj NO_ANIM LIT translate=1,2\n", "test.txt:3: translate= expects x,y,z"},
+      {"\"a.obj NO_ANIM LIT\n", "test.txt:1: unterminated quoted path"},
+      {"", "test.txt: no entries"},
+      {"# only a comment\n\n", "test.txt: no entries"},
+  };
+  for (const auto& c : cases) {
+    SceneDescription d;
+    std::string err;
+    EXPECT_FALSE(Parse(c.text, &d, &err)) << c.text;
+    EXPECT_NE(err.find(c.expectInError), std::string::npos) << "text: " << c.text << "\nerror: " << err;
+  }
+}
+
+TEST(SceneDescription, BinaryGarbageIsRejectedWithLine) {
+  std::mt19937 rng(7);
+  std::string junk = "a.obj NO_ANIM LIT\n";
+  for (int i = 0; i < 4096; ++i) junk.push_back(static_cast<char>(rng() & 0xff));
+  SceneDescription d;
+  std::string err;
+  EXPECT_FALSE(Parse(junk, &d, &err));
+  EXPECT_NE(err.find("test.txt:"), std::string::npos) << err;
+  EXPECT_TRUE(err.find("binary data") != std::string::npos || err.find("line too long") != std::string::npos) << err;
+  // An embedded NUL on line 2.
+  EXPECT_FALSE(Parse(std::string("a.obj NO_ANIM LIT\nb.obj\0 NO_ANIM LIT\n", 38), &d, &err));
+  EXPECT_NE(err.find("test.txt:2: unexpected binary data (byte 0x00"), std::string::npos) << err;
+}
+
+TEST(SceneDescription, VeryLongLine) {
+  std::string text = "a.obj NO_ANIM LIT\n" + std::string(100000, 'x') + " NO_ANIM LIT\n";
+  SceneDescription d;
+  std::string err;
+  EXPECT_FALSE(Parse(text, &d, &err));
+  EXPECT_NE(err.find("test.txt:2: line too long (100012 characters, at most 4096 expected)"), std::string::npos) << err;
+}
+
+TEST(SceneDescription, BadPathsAreReportedWithTheResolvedLocation) {
+  fs::path dir = fs::temp_directory_path() / "drr_scene_desc_test";
+  fs::create_directories(dir);
+  { std::ofstream(dir / "exists.obj") << "v 0 0 0\n"; }
+  std::ofstream(dir / "scene.txt") << "exists.obj NO_ANIM LIT\n\nmissing.obj NO_ANIM LIT\n";
+  SceneDescription d;
+  std::string err;
+  EXPECT_FALSE(LoadSceneDescription((dir / "scene.txt").string(), {}, &d, &err));
+  EXPECT_NE(err.find("scene.txt:3: mesh file 'missing.obj' not found (looked for " + (dir / "missing.obj").string()),
+            std::string::npos)
+      << err;
+  std::ofstream(dir / "scene2.txt") << "exists.obj\nnope.anim\nLIT\n";
+  EXPECT_FALSE(LoadSceneDescription((dir / "scene2.txt").string(), {}, &d, &err));
+  EXPECT_NE(err.find("scene2.txt:2: animation file 'nope.anim' not found"), std::string::npos) << err;
+  EXPECT_FALSE(LoadSceneDescription((dir / "no_such_scene.txt").string(), {}, &d, &err));
+  EXPECT_NE(err.find("no_such_scene.txt: cannot open scene description"), std::string::npos) << err;
+  fs::remove_all(dir);
+}
