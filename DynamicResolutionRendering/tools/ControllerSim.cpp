@@ -25,7 +25,8 @@ void Usage(std::ostream& out) {
          "  --frames N          frames per run, " << drr::sim::kMinFrames << "..1000000 (default 900)\n"
          "  --seed N            noise seed, 0..4294967295 (default 20110228)\n"
          "  --noise X           relative GPU-time noise, 0..0.5 (default 0.01; still uses min(X, 0.002))\n"
-         "  --latency N         frames before a GPU time reaches the controller, 0..16 (default 0)\n"
+         "  --latency N         frames before a GPU time reaches the controller, 0..16 (default 0);\n"
+         "                      the robust law is told N (RobustController::Params::latencyFrames)\n"
          "  --gain K            gain of the article law, 0.001..10 (default 0.01)\n"
          "  --csv PATH          also write the table (or the sweep) as CSV\n"
          "  --sweep-k           sweep the article law's gain k over 0.001..10 instead of the matrix\n"
@@ -163,7 +164,7 @@ int main(int argc, char** argv) {
     for (Scenario s : scenarios) {
       std::unique_ptr<drr::ResolutionController> controller =
           (k == ControllerKind::Article && gainSet) ? std::make_unique<drr::ArticleController>(gain)
-                                                    : drr::MakeController(k);
+                                                    : drr::sim::MakeSimController(k, config);
       results.push_back(drr::sim::RunScenario(*controller, drr::sim::ConfigFor(s, config)));
     }
   }

@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <iosfwd>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -79,6 +80,11 @@ struct SimResult {
   double finalScale = 0.0;
   std::vector<FrameRecord> trace;  // filled when asked
 };
+
+// The controller of a kind as the simulator builds it: the robust law is told
+// the plant's measurement latency (the application knows its timer pipeline
+// depth); the others have no such setting.
+std::unique_ptr<ResolutionController> MakeSimController(ControllerKind kind, const SimConfig& config);
 
 SimResult RunScenario(ResolutionController& controller, const SimConfig& config, bool keepTrace = false);
 // Fresh controller of each kind for each scenario.

@@ -228,13 +228,23 @@ SimResult RunScenario(ResolutionController& controller, const SimConfig& config,
   return r;
 }
 
+std::unique_ptr<ResolutionController> MakeSimController(ControllerKind kind, const SimConfig& config) {
+  if (kind == ControllerKind::Robust) {
+    RobustController::Params p;
+    p.latencyFrames = config.plant.latencyFrames;
+    return std::make_unique<RobustController>(p);
+  }
+  return MakeController(kind);
+}
+
 std::vector<SimResult> RunMatrix(const std::vector<ControllerKind>& kinds, const std::vector<Scenario>& scenarios,
                                  const SimConfig& base) {
   std::vector<SimResult> out;
   for (ControllerKind k : kinds) {
     for (Scenario s : scenarios) {
-      auto controller = MakeController(k);
-      out.push_back(RunScenario(*controller, ConfigFor(s, base)));
+      const SimConfig c = ConfigFor(s, base);
+      auto controller = MakeSimController(k, c);
+      out.push_back(RunScenario(*controller, c));
     }
   }
   return out;
