@@ -1064,6 +1064,19 @@ void Sample::RenderText() {
 // ---------------------------------------------------------------------------
 // Frame loop
 bool Sample::RenderFrame() {
+  if (m_Window && m_Options.windowTest) {
+    // Scripted window events for the window test (frame numbers are arbitrary).
+    switch (m_FrameCount) {
+      case 5: glfwSetWindowSize(m_Window, 1, 1); break;
+      case 10: glfwIconifyWindow(m_Window); break;
+      case 15: glfwRestoreWindow(m_Window); break;
+      case 18: glfwSetWindowSize(m_Window, int(m_Options.width), int(m_Options.height)); break;
+      case 22: ToggleFullscreen(); break;
+      case 28: ToggleFullscreen(); break;
+      case 32: glfwSetWindowSize(m_Window, int(m_Options.width), int(m_Options.height)); break;
+      default: break;
+    }
+  }
   if (m_Window) {
     glfwPollEvents();
     if (glfwWindowShouldClose(m_Window)) return false;

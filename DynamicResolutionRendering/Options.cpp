@@ -80,7 +80,8 @@ std::string Usage() {
        "  --time T                 fixed animation time in seconds (reproducible frames)\n"
        "  --fixed-dt DT            animation advances DT seconds per frame (0..10)\n"
        "  --shader-dir DIR         compiled shaders (default: the build's, or DRR_SHADER_DIR)\n"
-       "  --debug-marker-outside   test aid: mark the RT outside the viewport\n";
+       "  --debug-marker-outside   test aid: mark the RT outside the viewport\n"
+       "  --window-test            test aid: resize to 1x1, minimise, restore, fullscreen, windowed\n";
   return u.str();
 }
 
@@ -238,6 +239,8 @@ ParseStatus ParseCommandLine(const std::vector<std::string>& args, Options* o,
       err = number(0, 1e7, &r.time);
     } else if (name == "--fixed-dt") {
       err = number(0, 10, &r.fixedDt);
+    } else if (name == "--window-test") {
+      r.windowTest = true;
     } else if (name == "--debug-marker-outside") {
       r.debugMarkerOutside = true;
     } else {

@@ -64,6 +64,8 @@ struct Options {
   // Test aid: fill the dynamic colour/velocity RTs outside the viewport with a
   // marker before the scene, to prove that nothing outside the viewport leaks.
   bool debugMarkerOutside = false;
+  // Test aid (windowed): resize to 1x1, minimise, restore, fullscreen and back while running.
+  bool windowTest = false;
 
   int64_t EffectiveFrames() const { return frames >= 0 ? frames : (headless ? 300 : -1); }
   float MaxScale() const { return superSampling ? 2.0f : 1.0f; }

@@ -1,0 +1,175 @@
+// Command-line parser and generated-texture tests of the sample (no GPU).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "Options.h"
+#include "TexGenUtils.h"
+
+using namespace drr;
+
+namespace {
+ParseStatus Parse(std::vector<std::string> args, Options* o, std::string* msg) {
+  return ParseCommandLine(args, o, msg);
+}
+}  // namespace
+
+TEST(SampleOptions, Defaults) {
+  Options o;
+  std::string m;
+  ASSERT_EQ(Parse({}, &o, &m), ParseStatus::Ok);
+  EXPECT_EQ(o.width, 1280u);
+  EXPECT_EQ(o.height, 720u);
+  EXPECT_EQ(o.filter, Filter::TAA);
+  EXPECT_EQ(o.control, ControlMode::VSync);
+  EXPECT_TRUE(o.motionBlur);
+  EXPECT_TRUE(o.psClear);
+  EXPECT_TRUE(o.dynamicResolution);
+  EXPECT_FALSE(o.superSampling);
+  EXPECT_FALSE(o.symmetricTAA);
+  EXPECT_EQ(o.EffectiveFrames(), -1);
+  o.headless = true;
+  EXPECT_EQ(o.EffectiveFrames(), 300);
+}
+
+TEST(SampleOptions, AllOptions) {
+  Options o;
+  std::string m;
+  ASSERT_EQ(Parse({"--headless", "--width", "160", "--height=90", "--frames", "3", "--scene", "a.txt",
+                   "--camera", "2", "--filter", "taa-noise-offset", "--scale", "0.71",
+                   "--supersampling", "--control", "half-vsync", "--refresh", "144", "--no-motion-blur",
+                   "--symmetric-taa", "--no-ps-clear", "--pause", "--zoom", "--no-gui", "--screenshot",
+                   "s.png", "--screenshot-no-gui", "--report", "r.json", "--validation", "--stats",
+                   "--time", "1.5", "--fixed-dt", "0.01", "--no-dynamic-resolution"},
+                  &o, &m),
+            ParseStatus::Ok)
+      << m;
+  EXPECT_TRUE(o.headless);
+  EXPECT_EQ(o.width, 160u);
+  EXPECT_EQ(o.height, 90u);
+  EXPECT_EQ(o.frames, 3);
+  EXPECT_EQ(o.scene, "a.txt");
+  EXPECT_EQ(o.camera, 2);
+  EXPECT_EQ(o.filter, Filter::TAANoiseOffset);
+  EXPECT_FLOAT_EQ(o.scaleX, 0.71f);
+  EXPECT_FLOAT_EQ(o.scaleY, 0.71f);
+  EXPECT_EQ(o.control, ControlMode::HalfVSync);  // explicit --control wins over --scale
+  EXPECT_DOUBLE_EQ(o.refresh, 144.0);
+  EXPECT_FALSE(o.motionBlur);
+  EXPECT_TRUE(o.symmetricTAA);
+  EXPECT_FALSE(o.psClear);
+  EXPECT_TRUE(o.pause);
+  EXPECT_TRUE(o.zoom);
+  EXPECT_FALSE(o.gui);
+  EXPECT_EQ(o.screenshot, "s.png");
+  EXPECT_TRUE(o.screenshotNoGui);
+  EXPECT_EQ(o.report, "r.json");
+  EXPECT_TRUE(o.validation);
+  EXPECT_TRUE(o.stats);
+  EXPECT_DOUBLE_EQ(o.time, 1.5);
+  EXPECT_DOUBLE_EQ(o.fixedDt, 0.01);
+  EXPECT_FALSE(o.dynamicResolution);
+}
+
+TEST(SampleOptions, ScaleImpliesManual) {
+  Options o;
+  std::string m;
+  ASSERT_EQ(Parse({"--scale", "0.5"}, &o, &m), ParseStatus::Ok);
+  EXPECT_EQ(o.control, ControlMode::Manual);
+  ASSERT_EQ(Parse({"--scale-x", "0.5", "--scale-y", "0.25"}, &o, &m), ParseStatus::Ok);
+  EXPECT_FLOAT_EQ(o.scaleX, 0.5f);
+  EXPECT_FLOAT_EQ(o.scaleY, 0.25f);
+  EXPECT_FALSE(o.aspectLock);
+}
+
+TEST(SampleOptions, EveryFilterName) {
+  const char* names[] = {"none", "point", "bilinear", "bicubic", "noise", "noise-offset", "taa",
+                         "taa-noise-offset", "taa-basic"};
+  for (int i = 0; i < 9; ++i) {
+    Options o;
+    std::string m;
+    ASSERT_EQ(Parse({"--filter", names[i]}, &o, &m), ParseStatus::Ok) << names[i];
+    EXPECT_EQ(static_cast<int>(o.filter), i);
+    EXPECT_STREQ(FilterOption(o.filter), names[i]);
+  }
+}
+
+TEST(SampleOptions, UnknownOptionIsAnError) {
+  Options o;
+  std::string m;
+  EXPECT_EQ(Parse({"--bogus"}, &o, &m), ParseStatus::Error);
+  EXPECT_NE(m.find("--bogus"), std::string::npos) << m;
+  EXPECT_EQ(Parse({"--filter", "lanczos"}, &o, &m), ParseStatus::Error);
+  EXPECT_NE(m.find("lanczos"), std::string::npos) << m;
+  EXPECT_NE(m.find("taa-basic"), std::string::npos) << m;  // lists the allowed values
+  EXPECT_EQ(Parse({"--control", "fast"}, &o, &m), ParseStatus::Error);
+  EXPECT_NE(m.find("fast"), std::string::npos);
+}
+
+TEST(SampleOptions, OutOfRangeValuesNameValueAndRange) {
+  Options o;
+  std::string m;
+  EXPECT_EQ(Parse({"--scale", "1.5"}, &o, &m), ParseStatus::Error);
+  EXPECT_NE(m.find("1.5"), std::string::npos) << m;
+  EXPECT_NE(m.find("[0.01, 1]"), std::string::npos) << m;
+  EXPECT_EQ(Parse({"--scale", "1.5", "--supersampling"}, &o, &m), ParseStatus::Ok) << m;
+  EXPECT_EQ(Parse({"--scale", "2.5", "--supersampling"}, &o, &m), ParseStatus::Error);
+  EXPECT_NE(m.find("[0.01, 2]"), std::string::npos) << m;
+  EXPECT_EQ(Parse({"--scale", "0"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(Parse({"--scale-x", "-1"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(Parse({"--scale", "nan"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(Parse({"--scale", "inf"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(Parse({"--width", "0"}, &o, &m), ParseStatus::Error);
+  EXPECT_NE(m.find("--width"), std::string::npos);
+  EXPECT_EQ(Parse({"--width", "99999"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(Parse({"--width", "12.5"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(Parse({"--width", "abc"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(Parse({"--frames", "-1"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(Parse({"--refresh", "0"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(Parse({"--fixed-dt", "-0.1"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(Parse({"--width"}, &o, &m), ParseStatus::Error);  // missing value
+  EXPECT_NE(m.find("needs a value"), std::string::npos);
+}
+
+TEST(SampleOptions, HelpListsEveryOption) {
+  Options o;
+  std::string m;
+  ASSERT_EQ(Parse({"--help"}, &o, &m), ParseStatus::Help);
+  for (const char* opt : {"--headless", "--width", "--height", "--frames", "--scene", "--camera", "--filter",
+                          "--scale", "--scale-x", "--scale-y", "--no-dynamic-resolution", "--supersampling",
+                          "--control", "--refresh", "--no-motion-blur", "--symmetric-taa", "--no-ps-clear",
+                          "--pause", "--zoom", "--no-gui", "--screenshot", "--screenshot-no-gui", "--report",
+                          "--validation", "--stats", "--time", "--fixed-dt", "--help"})
+    EXPECT_NE(m.find(opt), std::string::npos) << opt;
+}
+
+TEST(TexGenUtils, CubicLookupIsPartitionOfUnityAndReproducesLinear) {
+  const auto t = CubicFilterLookupTable::Generate(128);
+  ASSERT_EQ(t.size(), 128u * 4u);
+  for (int i = 0; i < 128; ++i) {
+    const float a = (i + 0.5f) / 128.0f;
+    const float h0 = t[i * 4], h1 = t[i * 4 + 1], g0 = t[i * 4 + 2], g1 = t[i * 4 + 3];
+    EXPECT_NEAR(g0 + g1, 1.0f, 1e-6f);
+    EXPECT_GT(g0, 0.0f);
+    EXPECT_GT(g1, 0.0f);
+    // The B-spline reproduces linear functions: the filtered position of f(x)=x
+    // equals the sample position a.
+    const float x = g0 * (-h0) + g1 * (h1);
+    EXPECT_NEAR(x, a, 1e-5f) << i;
+    // Taps stay within [-2, 2] texels of the base texel.
+    EXPECT_LE(h0, 2.0f);
+    EXPECT_LE(h1, 2.0f);
+  }
+}
+
+TEST(TexGenUtils, NoiseIsFixedAndUniform) {
+  const auto a = NoiseTexture::Generate(128);
+  const auto b = NoiseTexture::Generate(128);
+  ASSERT_EQ(a.size(), 128u * 128u * 4u);
+  EXPECT_EQ(a, b);
+  double mean = 0;
+  for (uint8_t v : a) mean += v;
+  mean /= a.size();
+  EXPECT_NEAR(mean, 127.5, 2.0);
+  EXPECT_NE(NoiseTexture::Generate(128, 1), a);
+}
