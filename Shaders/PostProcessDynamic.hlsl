@@ -99,13 +99,13 @@ float4 ResolvePS(PostVSOut i) : SV_Target0 {
 float4 BicubicPS(PostVSOut i) : SV_Target0 {
   float2 ratio = g_SubSampleRTCurrRatio;
   float2 uv = ClampToUsed(i.uv * ratio, ratio);
-  float2 coord = uv * g_DynSize - 0.5;
-  float2 f = frac(coord);
-  float2 centre = (coord - f + 0.5) * g_InvDynSize;
+  float2 f = frac(uv * g_DynSize - 0.5);
   float4 hgX = g_CubicLookup.SampleLevel(g_PointWrap, f.x, 0);
   float4 hgY = g_CubicLookup.SampleLevel(g_PointWrap, f.y, 0);
-  float2 x0 = float2(centre.x - hgX.x * g_InvDynSize.x, centre.x + hgX.y * g_InvDynSize.x);
-  float2 y0 = float2(centre.y - hgY.x * g_InvDynSize.y, centre.y + hgY.y * g_InvDynSize.y);
+  // Taps at the sample position -h0 and +h1 texels; each is a bilinear fetch
+  // that blends one pair of texels with the B-spline's relative weights.
+  float2 x0 = float2(uv.x - hgX.x * g_InvDynSize.x, uv.x + hgX.y * g_InvDynSize.x);
+  float2 y0 = float2(uv.y - hgY.x * g_InvDynSize.y, uv.y + hgY.y * g_InvDynSize.y);
   float3 c00 = g_ColorCurr.SampleLevel(g_LinearClamp, ClampToUsed(float2(x0.x, y0.x), ratio), 0).rgb;
   float3 c10 = g_ColorCurr.SampleLevel(g_LinearClamp, ClampToUsed(float2(x0.y, y0.x), ratio), 0).rgb;
   float3 c01 = g_ColorCurr.SampleLevel(g_LinearClamp, ClampToUsed(float2(x0.x, y0.y), ratio), 0).rgb;

@@ -152,13 +152,15 @@ TEST(TexGenUtils, CubicLookupIsPartitionOfUnityAndReproducesLinear) {
     EXPECT_NEAR(g0 + g1, 1.0f, 1e-6f);
     EXPECT_GT(g0, 0.0f);
     EXPECT_GT(g1, 0.0f);
-    // The B-spline reproduces linear functions: the filtered position of f(x)=x
-    // equals the sample position a.
-    const float x = g0 * (-h0) + g1 * (h1);
-    EXPECT_NEAR(x, a, 1e-5f) << i;
-    // Taps stay within [-2, 2] texels of the base texel.
-    EXPECT_LE(h0, 2.0f);
-    EXPECT_LE(h1, 2.0f);
+    // Taps at x - h0 and x + h1 (x = sample position). The B-spline reproduces
+    // linear functions: g0 (x - h0) + g1 (x + h1) = x.
+    EXPECT_NEAR(g1 * h1 - g0 * h0, 0.0f, 1e-5f) << i;
+    // Relative to the base texel, the first tap lies between texels -1 and 0,
+    // the second between 1 and 2 (each bilinear tap blends one pair).
+    EXPECT_GE(a - h0, -1.0f - 1e-5f);
+    EXPECT_LE(a - h0, 0.0f + 1e-5f);
+    EXPECT_GE(a + h1, 1.0f - 1e-5f);
+    EXPECT_LE(a + h1, 2.0f + 1e-5f);
   }
 }
 
