@@ -516,6 +516,10 @@ struct DEVICE_STATS {
   UINT64 DrawCalls = 0;
   UINT64 RingBytesAllocated = 0;
   UINT64 FramesSubmitted = 0;
+  // Added by the Vulkan backend (debug counters for deferred destruction).
+  UINT64 ObjectsDestroyed = 0;             // Vulkan handles actually destroyed
+  UINT64 DeferredDestructionsPending = 0;  // handles waiting for a frame fence
+  UINT64 LiveObjects = 0;                  // API objects (resources, views, states...) alive
 };
 
 }  // namespace d3dl
