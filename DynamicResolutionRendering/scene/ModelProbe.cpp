@@ -3,9 +3,14 @@
 // Exit 0 on success, 1 on a clean failure (the message says why), 2 on bad usage.
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <algorithm>
 #include <string>
 #include <vector>
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include <assimp/Importer.hpp>
 
@@ -16,18 +21,22 @@ using namespace drr;
 
 static int Usage() {
   std::fprintf(stderr,
-               "usage: drr_model_probe [--quiet] [--no-textures] <model file | scene_description.txt>\n"
+               "usage: drr_model_probe [--quiet] [--no-textures] [--max-memory-mb N] <model file | scene_description.txt>\n"
+               "       (address space limited to min(8 GiB, 3/4 of RAM) by default, 0 = no limit, so files\n"
+               "        that claim absurd element counts fail with 'out of memory' instead of thrashing)\n"
                "       drr_model_probe --list-extensions   (the model file extensions Assimp imports)\n");
   return 2;
 }
 
 int main(int argc, char** argv) {
   bool quiet = false, textures = true;
+  long long maxMemMb = -1;
   std::string path;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     if (a == "--quiet") quiet = true;
     else if (a == "--no-textures") textures = false;
+    else if (a == "--max-memory-mb" && i + 1 < argc) maxMemMb = std::atoll(argv[++i]);
     else if (a == "--list-extensions") {
       Assimp::Importer imp;
       std::string ext;
@@ -40,6 +49,15 @@ int main(int argc, char** argv) {
     else return Usage();
   }
   if (path.empty()) return Usage();
+  if (maxMemMb < 0) {
+    long long ramMb = (long long)sysconf(_SC_PHYS_PAGES) * sysconf(_SC_PAGE_SIZE) / 1048576;
+    maxMemMb = std::min(8192LL, ramMb > 0 ? ramMb * 3 / 4 : 8192LL);
+  }
+  if (maxMemMb > 0) {
+    rlimit rl{};
+    rl.rlim_cur = rl.rlim_max = rlim_t(maxMemMb) * 1048576;
+    setrlimit(RLIMIT_AS, &rl);
+  }
 
   auto t0 = std::chrono::steady_clock::now();
   struct Item { std::string mesh, anim; EntryType type; };
