@@ -1,0 +1,634 @@
+#include "scene/Scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "d3dl/D3DLike.h"
+#include "d3dl/ShaderCompiler.h"
+#include "scene/ModelLoader.h"
+#include "scene/SceneDescription.h"
+
+#ifndef DRR_SCENE_SHADER_DIR
+#define DRR_SCENE_SHADER_DIR "shaders"
+#endif
+#ifndef DRR_SCENE_HLSL
+#define DRR_SCENE_HLSL "Shaders/SceneShaders.hlsl"
+#endif
+
+namespace drr {
+namespace fs = std::filesystem;
+using d3dl::ComPtr;
+
+std::string SceneStats::ToString() const {
+  char b[512];
+  snprintf(b, sizeof b,
+           "draws %u (culled %u), shader variants %u, textures %u (%.1f MiB), vertices %.1f MiB, indices %.1f MiB, "
+           "triangles %llu",
+           drawsIssued, drawsCulled, shaderVariantsUsed, texturesLoaded, textureBytes / 1048576.0, vertexBytes / 1048576.0,
+           indexBytes / 1048576.0, (unsigned long long)triangles);
+  return b;
+}
+
+namespace {
+
+// Per-object constants (b0, VS and PS).
+struct ObjectConstants {
+  glm::mat4 worldViewProj;
+  glm::mat4 prevWorldViewProj;
+  glm::mat4 world;
+  glm::vec4 diffuseTint;
+  glm::vec4 eyePosition;
+};
+static_assert(sizeof(ObjectConstants) == 224);
+
+// Per-type constants (b1, PS).
+struct LightingConstants {
+  glm::vec4 diffuse, ambient, specular, direction;
+};
+
+int VariantIndex(bool normal, bool specular, bool velocity) { return (normal ? 4 : 0) | (specular ? 2 : 0) | (velocity ? 1 : 0); }
+std::string VariantFile(int v) {
+  char b[64];
+  snprintf(b, sizeof b, "scene_ps_n%d_s%d_v%d.spv", (v >> 2) & 1, (v >> 1) & 1, v & 1);
+  return b;
+}
+
+bool ReadSpv(const std::string& path, std::vector<uint32_t>* words, std::string* error) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) {
+    *error = path + ": cannot open compiled shader";
+    return false;
+  }
+  std::vector<char> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  if (bytes.empty() || bytes.size() % 4) {
+    *error = path + ": not a SPIR-V module (size " + std::to_string(bytes.size()) + ")";
+    return false;
+  }
+  words->resize(bytes.size() / 4);
+  std::memcpy(words->data(), bytes.data(), bytes.size());
+  return true;
+}
+
+float MaxScale(const glm::mat4& m) {
+  return std::sqrt(std::max({glm::dot(glm::vec3(m[0]), glm::vec3(m[0])), glm::dot(glm::vec3(m[1]), glm::vec3(m[1])),
+                             glm::dot(glm::vec3(m[2]), glm::vec3(m[2]))}));
+}
+
+}  // namespace
+
+struct GpuMesh {
+  ComPtr<d3dl::Buffer> vb, ib;
+  d3dl::DXGI_FORMAT indexFormat = d3dl::DXGI_FORMAT_R32_UINT;
+  uint32_t indexCount = 0;
+  uint32_t material = 0;
+  glm::vec3 center{0.f};
+  float radius = 0.f;
+};
+
+struct GpuMaterial {
+  ComPtr<d3dl::ShaderResourceView> diffuse, normal, specular;
+  bool hasNormal = false, hasSpecular = false, blend = false, twoSided = false;
+  glm::vec4 tint{1.f};
+};
+
+struct DrawItem {
+  int node = 0;
+  int mesh = 0;
+  glm::mat4 prevWVP{1.f};  // un-jittered, from the last Render
+  bool hasPrev = false;
+};
+
+struct Entry {
+  SceneEntry desc;
+  ModelData model;
+  glm::mat4 transform{1.f};
+  std::vector<GpuMesh> meshes;
+  std::vector<GpuMaterial> materials;
+  std::vector<glm::mat4> globals;
+  std::vector<DrawItem> items;
+};
+
+struct CameraRef {
+  std::string name;
+  int entry = -1;    // -1: automatic camera (fixed pose)
+  int camera = -1;   // index into the entry model's cameras, -1 = the model's root node
+  CameraPose fixed;  // automatic camera
+};
+
+struct SceneImpl {
+  ComPtr<d3dl::Device> device;
+  SceneLoadOptions opts;
+  std::string shaderDir;
+  std::vector<Entry> entries;
+  std::vector<CameraRef> cameras;
+  int defaultCamera = 0;
+  std::vector<std::string> warnings;
+  glm::vec3 boundsMin{0.f}, boundsMax{0.f};
+
+  ComPtr<d3dl::VertexShader> vs;
+  ComPtr<d3dl::InputLayout> layout;
+  std::vector<uint32_t> psCode[8];
+  bool psWanted[8] = {};
+  ComPtr<d3dl::PixelShader> ps[8];
+  ComPtr<d3dl::Buffer> objectCB, litCB, unlitCB;
+  ComPtr<d3dl::SamplerState> samplerAniso, samplerBias;
+  ComPtr<d3dl::RasterizerState> rsBack, rsNone;
+  ComPtr<d3dl::DepthStencilState> dsOpaque, dsDecal;
+  ComPtr<d3dl::BlendState> bsDecal;
+
+  SceneStats stats;
+  std::map<const TextureData*, ComPtr<d3dl::ShaderResourceView>> srvs;
+  uint64_t gpuTextureBytes = 0;
+
+  void Warn(const std::string& w) {
+    warnings.push_back(w);
+    if (opts.verbose) std::printf("scene: warning: %s\n", w.c_str());
+  }
+  bool CreateShaders(std::string* error);
+  bool LoadEntry(Entry& e, TextureCache& cache, std::string* error);
+  ComPtr<d3dl::ShaderResourceView> Upload(const std::shared_ptr<const TextureData>& t, std::string* error);
+  d3dl::PixelShader* Variant(int v);
+  void DrawPass(d3dl::DeviceContext* ctx, const SceneRenderParams& p, bool decalPass, const glm::mat4& viewProj,
+                const glm::mat4& jitter, const glm::vec3& eye, const glm::vec4 planes[6]);
+};
+
+// ---------------------------------------------------------------------------
+bool SceneImpl::CreateShaders(std::string* error) {
+  std::vector<uint32_t> vsCode;
+  if (!ReadSpv(shaderDir + "/scene_vs.spv", &vsCode, error)) return false;
+  if (FAILED(device->CreateVertexShader(vsCode.data(), vsCode.size() * 4, vs.ReleaseAndGetAddressOf()))) {
+    *error = shaderDir + "/scene_vs.spv: CreateVertexShader failed";
+    return false;
+  }
+  const d3dl::INPUT_ELEMENT_DESC elems[] = {
+      {"POSITION", 0, d3dl::DXGI_FORMAT_R32G32B32_FLOAT, 0, 0, d3dl::INPUT_PER_VERTEX_DATA, 0},
+      {"NORMAL", 0, d3dl::DXGI_FORMAT_R32G32B32_FLOAT, 0, 12, d3dl::INPUT_PER_VERTEX_DATA, 0},
+      {"TEXCOORD", 0, d3dl::DXGI_FORMAT_R32G32_FLOAT, 0, 24, d3dl::INPUT_PER_VERTEX_DATA, 0},
+      {"TANGENT", 0, d3dl::DXGI_FORMAT_R32G32B32_FLOAT, 0, 32, d3dl::INPUT_PER_VERTEX_DATA, 0},
+      {"BINORMAL", 0, d3dl::DXGI_FORMAT_R32G32B32_FLOAT, 0, 44, d3dl::INPUT_PER_VERTEX_DATA, 0},
+  };
+  if (FAILED(device->CreateInputLayout(elems, 5, vsCode.data(), vsCode.size() * 4, layout.ReleaseAndGetAddressOf()))) {
+    *error = "scene: CreateInputLayout failed for scene_vs.spv";
+    return false;
+  }
+  for (int v = 0; v < 8; ++v) {
+    ps[v] = nullptr;
+    if (!psWanted[v]) continue;
+    if (!ReadSpv(shaderDir + "/" + VariantFile(v), &psCode[v], error)) return false;
+  }
+  return true;
+}
+
+d3dl::PixelShader* SceneImpl::Variant(int v) {
+  if (!ps[v]) {
+    if (psCode[v].empty()) {
+      std::string err;
+      if (!ReadSpv(shaderDir + "/" + VariantFile(v), &psCode[v], &err)) {
+        Warn(err);
+        return nullptr;
+      }
+    }
+    if (FAILED(device->CreatePixelShader(psCode[v].data(), psCode[v].size() * 4, ps[v].ReleaseAndGetAddressOf()))) {
+      Warn("scene: CreatePixelShader failed for " + VariantFile(v));
+      return nullptr;
+    }
+    psWanted[v] = true;
+  }
+  return ps[v].Get();
+}
+
+ComPtr<d3dl::ShaderResourceView> SceneImpl::Upload(const std::shared_ptr<const TextureData>& t, std::string* error) {
+  if (auto it = srvs.find(t.get()); it != srvs.end()) return it->second;
+  d3dl::TEXTURE2D_DESC td;
+  td.Width = t->Width();
+  td.Height = t->Height();
+  td.MipLevels = UINT(t->mips.size());
+  td.Format = t->format;
+  td.Usage = d3dl::USAGE_IMMUTABLE;
+  td.BindFlags = d3dl::BIND_SHADER_RESOURCE;
+  std::vector<d3dl::SUBRESOURCE_DATA> init(t->mips.size());
+  for (size_t i = 0; i < t->mips.size(); ++i) {
+    init[i].pSysMem = t->mips[i].rgba.data();
+    init[i].SysMemPitch = t->mips[i].width * 4;
+  }
+  ComPtr<d3dl::Texture2D> tex;
+  ComPtr<d3dl::ShaderResourceView> srv;
+  if (FAILED(device->CreateTexture2D(&td, init.data(), tex.GetAddressOf())) ||
+      FAILED(device->CreateShaderResourceView(tex.Get(), nullptr, srv.GetAddressOf()))) {
+    *error = t->source + ": texture upload failed (" + std::to_string(td.Width) + "x" + std::to_string(td.Height) + ")";
+    return nullptr;
+  }
+  tex->SetDebugName(t->source.c_str());
+  gpuTextureBytes += t->Bytes();
+  srvs[t.get()] = srv;
+  return srv;
+}
+
+bool SceneImpl::LoadEntry(Entry& e, TextureCache& cache, std::string* error) {
+  if (!LoadModel(e.desc.meshFile, {}, &e.model, error)) return false;
+  if (!e.desc.animFile.empty() && fs::path(e.desc.animFile) != fs::path(e.desc.meshFile)) {
+    ModelData anim;
+    ModelLoadOptions ao;
+    ao.animationsOnly = true;
+    if (!LoadModel(e.desc.animFile, ao, &anim, error)) return false;
+    if (AttachAnimations(&e.model, anim) == 0)
+      Warn(e.desc.animFile + ": no animation channel matches a node of " + e.desc.meshFile);
+  }
+  for (const auto& w : e.model.warnings) Warn(e.desc.meshFile + ": " + w);
+  e.transform = e.desc.Transform();
+  // Meshes.
+  for (const MeshData& m : e.model.meshes) {
+    GpuMesh g;
+    d3dl::BUFFER_DESC bd;
+    bd.ByteWidth = UINT(m.vertices.size() * sizeof(SceneVertex));
+    bd.Usage = d3dl::USAGE_IMMUTABLE;
+    bd.BindFlags = d3dl::BIND_VERTEX_BUFFER;
+    d3dl::SUBRESOURCE_DATA vd;
+    vd.pSysMem = m.vertices.data();
+    if (FAILED(device->CreateBuffer(&bd, &vd, g.vb.GetAddressOf()))) {
+      *error = e.desc.meshFile + ": vertex buffer creation failed for mesh '" + m.name + "'";
+      return false;
+    }
+    std::vector<uint16_t> i16;
+    d3dl::SUBRESOURCE_DATA id;
+    if (m.Use16BitIndices()) {
+      i16.assign(m.indices.begin(), m.indices.end());
+      id.pSysMem = i16.data();
+      bd.ByteWidth = UINT(i16.size() * 2);
+      g.indexFormat = d3dl::DXGI_FORMAT_R16_UINT;
+    } else {
+      id.pSysMem = m.indices.data();
+      bd.ByteWidth = UINT(m.indices.size() * 4);
+      g.indexFormat = d3dl::DXGI_FORMAT_R32_UINT;
+    }
+    bd.BindFlags = d3dl::BIND_INDEX_BUFFER;
+    if (FAILED(device->CreateBuffer(&bd, &id, g.ib.GetAddressOf()))) {
+      *error = e.desc.meshFile + ": index buffer creation failed for mesh '" + m.name + "'";
+      return false;
+    }
+    g.vb->SetDebugName((e.desc.name + "/" + m.name + " VB").c_str());
+    g.ib->SetDebugName((e.desc.name + "/" + m.name + " IB").c_str());
+    stats.vertexBytes += m.vertices.size() * sizeof(SceneVertex);
+    stats.indexBytes += bd.ByteWidth;
+    stats.triangles += m.indices.size() / 3;
+    g.indexCount = UINT(m.indices.size());
+    g.material = m.material;
+    g.center = m.sphereCenter;
+    g.radius = m.sphereRadius;
+    e.meshes.push_back(std::move(g));
+  }
+  // Materials: only the textures that materials of drawn meshes use.
+  std::vector<bool> used(e.model.materials.size(), false);
+  for (const auto& m : e.model.meshes)
+    if (m.material < used.size()) used[m.material] = true;
+  e.materials.resize(e.model.materials.size());
+  for (size_t i = 0; i < e.model.materials.size(); ++i) {
+    if (!used[i]) continue;
+    const MaterialData& md = e.model.materials[i];
+    GpuMaterial& gm = e.materials[i];
+    std::vector<std::string> w;
+    gm.diffuse = Upload(cache.Get(e.model, md.diffuseTex, TextureKind::Color, &w), error);
+    gm.hasNormal = !md.normalTex.empty();
+    gm.hasSpecular = !md.specularTex.empty();
+    if (gm.hasNormal) gm.normal = Upload(cache.Get(e.model, md.normalTex, TextureKind::Normal, &w), error);
+    if (gm.hasSpecular) gm.specular = Upload(cache.Get(e.model, md.specularTex, TextureKind::Specular, &w), error);
+    for (auto& x : w) Warn(x);
+    if (!gm.diffuse || (gm.hasNormal && !gm.normal) || (gm.hasSpecular && !gm.specular)) return false;
+    gm.blend = md.alphaBlend || e.desc.type == EntryType::Decal;
+    gm.twoSided = md.twoSided;
+    gm.tint = md.diffuseColor;
+    psWanted[VariantIndex(gm.hasNormal, gm.hasSpecular, true)] = true;
+  }
+  // Draw items: every (node, mesh) pair.
+  for (size_t n = 0; n < e.model.nodes.size(); ++n)
+    for (uint32_t m : e.model.nodes[n].meshes) e.items.push_back({int(n), int(m), glm::mat4(1.f), false});
+  e.model.Evaluate(0.0, &e.globals, e.desc.loopSeconds);
+  return true;
+}
+
+// ---------------------------------------------------------------------------
+Scene::Scene() : impl_(std::make_unique<SceneImpl>()) {}
+Scene::~Scene() = default;
+
+std::unique_ptr<Scene> Scene::Load(d3dl::Device* device, const std::string& path, const SceneLoadOptions& opts,
+                                   std::string* error) {
+  std::string dummy;
+  if (!error) error = &dummy;
+  if (!device) {
+    *error = "Scene::Load: no device";
+    return nullptr;
+  }
+  std::unique_ptr<Scene> scene(new Scene());
+  SceneImpl& s = *scene->impl_;
+  s.device = ComPtr<d3dl::Device>(device);
+  s.opts = opts;
+  s.shaderDir = opts.shaderDir.empty() ? std::string(DRR_SCENE_SHADER_DIR) : opts.shaderDir;
+
+  // Entries: from a description, or one LIT entry for a single model file.
+  const bool single = !IsSceneDescriptionPath(path);
+  if (single) {
+    Entry e;
+    e.desc.meshPath = path;
+    e.desc.meshFile = path;
+    e.desc.type = EntryType::Lit;
+    e.desc.name = fs::path(path).stem().string();
+    s.entries.push_back(std::move(e));
+  } else {
+    SceneDescription desc;
+    if (!LoadSceneDescription(path, {}, &desc, error)) return nullptr;
+    for (auto& d : desc.entries) {
+      Entry e;
+      e.desc = d;
+      s.entries.push_back(std::move(e));
+    }
+  }
+  TextureCache cache;
+  for (auto& e : s.entries)
+    if (!s.LoadEntry(e, cache, error)) return nullptr;
+  s.stats.texturesLoaded = uint32_t(cache.LoadedCount());
+  if (!s.CreateShaders(error)) return nullptr;
+
+  // Constant buffers, samplers and states.
+  d3dl::BUFFER_DESC cb;
+  cb.ByteWidth = sizeof(ObjectConstants);
+  cb.Usage = d3dl::USAGE_DYNAMIC;
+  cb.BindFlags = d3dl::BIND_CONSTANT_BUFFER;
+  cb.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
+  bool ok = SUCCEEDED(device->CreateBuffer(&cb, nullptr, s.objectCB.GetAddressOf()));
+  LightingConstants lit{{1.58f, 1.36f, 0.74f, 0.f}, {0.42f, 0.44f, 0.46f, 0.f}, {1.30f, 1.18f, 0.78f, 16.f},
+                        {0.89f, -0.45f, 0.089f, 0.f}};
+  LightingConstants unlit{{0.f, 0.f, 0.f, 0.f}, {1.f, 1.f, 1.f, 0.f}, {0.f, 0.f, 0.f, 16.f}, {0.89f, -0.45f, 0.089f, 0.f}};
+  cb.ByteWidth = sizeof(LightingConstants);
+  cb.Usage = d3dl::USAGE_IMMUTABLE;
+  cb.CPUAccessFlags = 0;
+  d3dl::SUBRESOURCE_DATA init;
+  init.pSysMem = &lit;
+  ok = ok && SUCCEEDED(device->CreateBuffer(&cb, &init, s.litCB.GetAddressOf()));
+  init.pSysMem = &unlit;
+  ok = ok && SUCCEEDED(device->CreateBuffer(&cb, &init, s.unlitCB.GetAddressOf()));
+  d3dl::SAMPLER_DESC sd;
+  sd.Filter = d3dl::FILTER_ANISOTROPIC;
+  sd.AddressU = sd.AddressV = sd.AddressW = d3dl::TEXTURE_ADDRESS_WRAP;
+  sd.MaxAnisotropy = 16;
+  sd.MinLOD = 0.f;
+  ok = ok && SUCCEEDED(device->CreateSamplerState(&sd, s.samplerAniso.GetAddressOf()));
+  sd.MipLODBias = -0.5f;
+  ok = ok && SUCCEEDED(device->CreateSamplerState(&sd, s.samplerBias.GetAddressOf()));
+  d3dl::RASTERIZER_DESC rd;
+  rd.CullMode = d3dl::CULL_BACK;
+  rd.FrontCounterClockwise = 1;  // glTF / right-handed models: counter-clockwise front faces
+  ok = ok && SUCCEEDED(device->CreateRasterizerState(&rd, s.rsBack.GetAddressOf()));
+  rd.CullMode = d3dl::CULL_NONE;
+  ok = ok && SUCCEEDED(device->CreateRasterizerState(&rd, s.rsNone.GetAddressOf()));
+  d3dl::DEPTH_STENCIL_DESC dd;  // depth test LESS with writes
+  ok = ok && SUCCEEDED(device->CreateDepthStencilState(&dd, s.dsOpaque.GetAddressOf()));
+  dd.DepthWriteMask = d3dl::DEPTH_WRITE_MASK_ZERO;
+  ok = ok && SUCCEEDED(device->CreateDepthStencilState(&dd, s.dsDecal.GetAddressOf()));
+  d3dl::BLEND_DESC bd;
+  bd.IndependentBlendEnable = 1;
+  bd.RenderTarget[0].BlendEnable = 1;
+  bd.RenderTarget[0].SrcBlend = d3dl::BLEND_SRC_ALPHA;
+  bd.RenderTarget[0].DestBlend = d3dl::BLEND_INV_SRC_ALPHA;
+  bd.RenderTarget[0].SrcBlendAlpha = d3dl::BLEND_ZERO;
+  bd.RenderTarget[0].DestBlendAlpha = d3dl::BLEND_ONE;
+  bd.RenderTarget[1].RenderTargetWriteMask = 0;  // decals keep the surface's velocity
+  ok = ok && SUCCEEDED(device->CreateBlendState(&bd, s.bsDecal.GetAddressOf()));
+  if (!ok) {
+    *error = "scene: creating constant buffers or states failed";
+    return nullptr;
+  }
+
+  // Cameras: CAMERA entries (each camera of the file, or the model's root), then an automatic one if none.
+  glm::vec3 mn(1e30f), mx(-1e30f);
+  for (size_t i = 0; i < s.entries.size(); ++i) {
+    Entry& e = s.entries[i];
+    if (e.desc.type == EntryType::Camera) {
+      if (e.model.cameras.empty())
+        s.cameras.push_back({e.desc.name, int(i), -1, {}});
+      for (size_t c = 0; c < e.model.cameras.size(); ++c)
+        s.cameras.push_back({e.model.cameras[c].name.empty() ? e.desc.name : e.model.cameras[c].name, int(i), int(c), {}});
+    } else if (e.desc.type != EntryType::Unlit) {  // the sky dome does not frame anything
+      glm::vec3 a, b;
+      e.model.Bounds(&a, &b);
+      for (int k = 0; k < 8; ++k) {
+        glm::vec3 p((k & 1) ? b.x : a.x, (k & 2) ? b.y : a.y, (k & 4) ? b.z : a.z);
+        glm::vec3 w = glm::vec3(e.transform * glm::vec4(p, 1.f));
+        mn = glm::min(mn, w);
+        mx = glm::max(mx, w);
+      }
+    }
+  }
+  if (mn.x > mx.x) mn = mx = glm::vec3(0.f);
+  s.boundsMin = mn;
+  s.boundsMax = mx;
+  if (single) {
+    // Files' own cameras are listed after an automatic camera that frames the model.
+    for (size_t c = 0; c < s.entries[0].model.cameras.size(); ++c)
+      s.cameras.push_back({s.entries[0].model.cameras[c].name, 0, int(c), {}});
+  }
+  if (single || s.cameras.empty()) {
+    glm::vec3 center = (mn + mx) * 0.5f;
+    float radius = std::max(glm::length(mx - mn) * 0.5f, 1e-3f);
+    float dist = radius / std::sin(glm::radians(45.f) * 0.5f) * 1.1f;
+    CameraRef a;
+    a.name = "Automatic";
+    a.fixed.position = center + glm::normalize(glm::vec3(0.6f, 0.45f, 1.f)) * dist;
+    a.fixed.view = glm::lookAtRH(a.fixed.position, center, glm::vec3(0, 1, 0));
+    a.fixed.nearZ = std::max(dist - radius * 1.5f, dist * 0.01f);
+    a.fixed.farZ = std::max(dist + radius * 4.f, a.fixed.nearZ * 10.f);
+    s.cameras.insert(s.cameras.begin(), a);
+  }
+  s.defaultCamera = (!single && s.cameras.size() > 1) ? 1 : 0;
+  if (opts.verbose) std::printf("scene: %s: %s\n", path.c_str(), s.stats.ToString().c_str());
+  scene->Update(0.0);
+  return scene;
+}
+
+void Scene::Update(double t) {
+  for (auto& e : impl_->entries) e.model.Evaluate(t, &e.globals, e.desc.loopSeconds);
+}
+
+int Scene::CameraCount() const { return int(impl_->cameras.size()); }
+const std::string& Scene::CameraName(int i) const {
+  static const std::string none;
+  return i >= 0 && i < CameraCount() ? impl_->cameras[i].name : none;
+}
+int Scene::DefaultCamera() const { return impl_->defaultCamera; }
+const std::vector<std::string>& Scene::Warnings() const { return impl_->warnings; }
+glm::vec3 Scene::BoundsMin() const { return impl_->boundsMin; }
+glm::vec3 Scene::BoundsMax() const { return impl_->boundsMax; }
+
+CameraPose Scene::Camera(int i) const {
+  CameraPose pose;
+  pose.view = glm::mat4(1.f);
+  pose.position = glm::vec3(0.f);
+  if (i < 0 || i >= CameraCount()) return pose;
+  const CameraRef& c = impl_->cameras[i];
+  if (c.entry < 0) return c.fixed;
+  const Entry& e = impl_->entries[c.entry];
+  glm::vec3 p(0.f), look(0, 0, -1), up(0, 1, 0);
+  glm::mat4 w = e.transform;
+  if (c.camera >= 0) {
+    const CameraData& cd = e.model.cameras[c.camera];
+    if (cd.node >= 0 && cd.node < int(e.globals.size())) w = w * e.globals[cd.node];
+    p = cd.position;
+    look = cd.lookAt;
+    up = cd.up;
+    if (cd.fovY > glm::radians(1.f) && cd.fovY < glm::radians(170.f)) pose.fovY = cd.fovY;
+  } else if (!e.globals.empty()) {
+    w = w * e.globals[0];
+  }
+  glm::vec3 wp = glm::vec3(w * glm::vec4(p, 1.f));
+  glm::vec3 wf = glm::normalize(glm::vec3(w * glm::vec4(look, 0.f)));
+  glm::vec3 wu = glm::normalize(glm::vec3(w * glm::vec4(up, 0.f)));
+  pose.position = wp;
+  pose.view = glm::lookAtRH(wp, wp + wf, wu);
+  return pose;
+}
+
+SceneStats Scene::Stats() const {
+  SceneStats s = impl_->stats;
+  s.textureBytes = impl_->gpuTextureBytes;
+  s.shaderVariantsUsed = 0;
+  for (auto& p : impl_->ps) s.shaderVariantsUsed += p ? 1 : 0;
+  return s;
+}
+
+// ---------------------------------------------------------------------------
+void SceneImpl::DrawPass(d3dl::DeviceContext* ctx, const SceneRenderParams& p, bool decalPass, const glm::mat4& viewProj,
+                         const glm::mat4& jitter, const glm::vec3& eye, const glm::vec4 planes[6]) {
+  for (auto& e : entries) {
+    if (e.desc.hidden) continue;
+    const bool camera = e.desc.type == EntryType::Camera;
+    if (camera && !p.showCameras) continue;
+    d3dl::Buffer* light = e.desc.type == EntryType::Unlit ? unlitCB.Get() : litCB.Get();
+    ctx->PSSetConstantBuffers(1, 1, &light);
+    for (auto& it : e.items) {
+      const GpuMesh& m = e.meshes[it.mesh];
+      const GpuMaterial& mat = e.materials[m.material < e.materials.size() ? m.material : 0];
+      if (mat.blend != decalPass) continue;
+      const glm::mat4 world = e.transform * e.globals[it.node];
+      const glm::mat4 wvp = viewProj * world;
+      const glm::mat4 prev = (p.resetHistory || !it.hasPrev) ? wvp : it.prevWVP;
+      it.prevWVP = wvp;
+      it.hasPrev = true;
+      // Culling as in the original: sphere behind the eye, or projected sphere off screen.
+      glm::vec3 c = glm::vec3(world * glm::vec4(m.center, 1.f));
+      float r = m.radius * MaxScale(world);
+      bool culled = false;
+      for (int k = 0; k < 6 && !culled; ++k) culled = glm::dot(glm::vec3(planes[k]), c) + planes[k].w < -r;
+      if (culled) {
+        ++stats.drawsCulled;
+        continue;
+      }
+      d3dl::PixelShader* shader = Variant(VariantIndex(mat.hasNormal, mat.hasSpecular, p.writeVelocity));
+      if (!shader) continue;
+      d3dl::MAPPED_SUBRESOURCE map;
+      if (FAILED(ctx->Map(objectCB.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &map))) continue;
+      ObjectConstants oc{jitter * wvp, jitter * prev, world, mat.tint, glm::vec4(eye, 1.f)};
+      std::memcpy(map.pData, &oc, sizeof oc);
+      ctx->Unmap(objectCB.Get(), 0);
+      ctx->PSSetShader(shader);
+      d3dl::ShaderResourceView* views[3] = {mat.diffuse.Get(), mat.normal.Get(), mat.specular.Get()};
+      ctx->PSSetShaderResources(0, 3, views);
+      ctx->RSSetState(mat.twoSided ? rsNone.Get() : rsBack.Get());
+      d3dl::Buffer* vb = m.vb.Get();
+      UINT stride = sizeof(SceneVertex), offset = 0;
+      ctx->IASetVertexBuffers(0, 1, &vb, &stride, &offset);
+      ctx->IASetIndexBuffer(m.ib.Get(), m.indexFormat, 0);
+      ctx->DrawIndexed(m.indexCount, 0, 0);
+      ++stats.drawsIssued;
+    }
+  }
+}
+
+void Scene::Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p) {
+  SceneImpl& s = *impl_;
+  s.stats.drawsIssued = s.stats.drawsCulled = 0;
+  if (!ctx) return;
+  const glm::mat4 viewProj = p.proj * p.view;
+  const glm::mat4 jitter = glm::translate(glm::mat4(1.f), glm::vec3(p.jitterNdc, 0.f));
+  const glm::vec3 eye = glm::vec3(glm::inverse(p.view)[3]);
+  // Frustum planes (world space) of the un-jittered view-projection: left, right, bottom, top, near (0..1 depth), far.
+  glm::mat4 t = glm::transpose(viewProj);
+  glm::vec4 planes[6] = {t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[2], t[3] - t[2]};
+  for (auto& pl : planes) {
+    float l = glm::length(glm::vec3(pl));
+    if (l > 0 && std::isfinite(l)) pl /= l;
+  }
+  ctx->BeginEvent("Scene");
+  ctx->IASetInputLayout(s.layout.Get());
+  ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+  ctx->VSSetShader(s.vs.Get());
+  d3dl::Buffer* cb = s.objectCB.Get();
+  ctx->VSSetConstantBuffers(0, 1, &cb);
+  ctx->PSSetConstantBuffers(0, 1, &cb);
+  d3dl::SamplerState* smp = p.mipBiasSampler ? s.samplerBias.Get() : s.samplerAniso.Get();
+  ctx->PSSetSamplers(0, 1, &smp);
+  ctx->OMSetDepthStencilState(s.dsOpaque.Get(), 0);
+  ctx->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
+  s.DrawPass(ctx, p, false, viewProj, jitter, eye, planes);
+  ctx->OMSetDepthStencilState(s.dsDecal.Get(), 0);
+  ctx->OMSetBlendState(s.bsDecal.Get(), nullptr, 0xffffffffu);
+  s.DrawPass(ctx, p, true, viewProj, jitter, eye, planes);
+  ctx->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
+  ctx->OMSetDepthStencilState(nullptr, 0);
+  ctx->RSSetState(nullptr);
+  d3dl::ShaderResourceView* none[3] = {};
+  ctx->PSSetShaderResources(0, 3, none);
+  ctx->EndEvent();
+}
+
+bool Scene::ReloadShaders(std::string* error) {
+  SceneImpl& s = *impl_;
+  std::string dummy;
+  if (!error) error = &dummy;
+  d3dl::ShaderCompileDesc vd;
+  vd.SourcePath = DRR_SCENE_HLSL;
+  vd.EntryPoint = "SceneVS";
+  vd.Stage = d3dl::ShaderStage::Vertex;
+  std::vector<uint32_t> vsCode;
+  std::string errs;
+  if (FAILED(d3dl::CompileHLSL(vd, &vsCode, &errs))) {
+    *error = std::string(DRR_SCENE_HLSL) + ": SceneVS: " + errs;
+    return false;
+  }
+  std::vector<uint32_t> code[8];
+  for (int v = 0; v < 8; ++v) {
+    if (!s.psWanted[v] && !s.ps[v]) continue;
+    d3dl::ShaderCompileDesc pd;
+    pd.SourcePath = DRR_SCENE_HLSL;
+    pd.EntryPoint = "ScenePS";
+    pd.Stage = d3dl::ShaderStage::Pixel;
+    pd.Defines = {{"NORMAL_MAP", std::to_string((v >> 2) & 1)},
+                  {"SPECULAR_MAP", std::to_string((v >> 1) & 1)},
+                  {"WRITE_VELOCITY", std::to_string(v & 1)}};
+    if (FAILED(d3dl::CompileHLSL(pd, &code[v], &errs))) {
+      *error = std::string(DRR_SCENE_HLSL) + ": ScenePS (" + VariantFile(v) + "): " + errs;
+      return false;
+    }
+  }
+  ComPtr<d3dl::VertexShader> newVs;
+  if (FAILED(s.device->CreateVertexShader(vsCode.data(), vsCode.size() * 4, newVs.GetAddressOf()))) {
+    *error = "ReloadShaders: CreateVertexShader failed";
+    return false;
+  }
+  s.vs = newVs;
+  for (int v = 0; v < 8; ++v) {
+    if (code[v].empty()) continue;
+    s.psCode[v] = std::move(code[v]);
+    s.ps[v] = nullptr;  // recreated lazily from the new code
+  }
+  return true;
+}
+
+}  // namespace drr
