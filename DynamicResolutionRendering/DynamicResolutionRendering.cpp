@@ -455,6 +455,8 @@ void Sample::ApplySettings(const Options& o) {
   m_Options.width = keep.width;
   m_Options.height = keep.height;
   m_ShowGUI = o.gui;
+  if (o.refresh > 0) m_RefreshHz = o.refresh;
+  if (o.control != keep.control && m_Controller) m_Controller->Reset();
   if (camera >= 0 && camera < CameraCount() && camera != m_Camera) SelectCamera(camera);
   AllocationKey want{m_Options.dynamicResolution, m_Options.superSampling, m_Options.motionBlur,
                      TAAActive(), m_BackBufferWidth, m_BackBufferHeight};

@@ -338,7 +338,8 @@ TEST(SampleImage, TAAConvergesAndReducesEdgeError) {
 }
 
 TEST_F(SampleFixture, GuiPixelsIndependentOfScale) {
-  Options o = TinyOptions(640, 360);
+  // Wide enough that the statistics text (left) never overlaps the panel (right).
+  Options o = TinyOptions(1280, 720);
   o.gui = true;
   o.filter = Filter::Bilinear;
   o.scaleX = o.scaleY = 0.3f;
