@@ -280,7 +280,8 @@ void ContextImpl::CopyTextureRegion(TextureCore* dst, UINT dstSub, UINT x, UINT 
     dev_->Log(LogLevel::Error, "CopySubresourceRegion: subresource out of range (dst %u, src %u)", dstSub, srcSub);
     return;
   }
-  if (dst->fmt->bytes != src->fmt->bytes || dst->fmt->bc != src->fmt->bc || dst->aspect != src->aspect) {
+  if (dst->fmt->bytes != src->fmt->bytes || dst->fmt->bc != src->fmt->bc ||
+      (!dst->staging && !src->staging && dst->aspect != src->aspect)) {
     dev_->Log(LogLevel::Error, "CopySubresourceRegion: formats %s and %s are not copy-compatible", dst->fmt->name, src->fmt->name);
     return;
   }

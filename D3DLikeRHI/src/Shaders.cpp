@@ -227,6 +227,33 @@ bool ReflectSpirv(const uint32_t* words, size_t n, ShaderReflection* out, std::s
   return true;
 }
 
+// glslang's -fhlsl_functionality1 adds SPV_GOOGLE_hlsl_functionality1 /
+// SPV_GOOGLE_user_type and their decorations (the HLSL semantics reflected
+// above). Drivers without VK_GOOGLE_hlsl_functionality1 must not see them, so
+// the module is created from a copy without those instructions.
+static std::vector<uint32_t> StripGoogleDecorations(const std::vector<uint32_t>& in) {
+  std::vector<uint32_t> out(in.begin(), in.begin() + 5);
+  for (size_t i = 5; i < in.size();) {
+    uint32_t op = in[i] & 0xffff, wc = in[i] >> 16;
+    if (wc == 0 || i + wc > in.size()) return in;
+    bool drop = false;
+    if (op == 10 /*OpExtension*/) {
+      std::string name = ReadString(&in[i + 1], wc - 1);
+      drop = name == "SPV_GOOGLE_hlsl_functionality1" || name == "SPV_GOOGLE_user_type" ||
+             name == "SPV_GOOGLE_decorate_string";
+    } else if (op == OpDecorateString && wc >= 3) {
+      drop = in[i + 2] == DecUserSemantic || in[i + 2] == 5636 /*UserTypeGOOGLE*/;
+    } else if (op == 5633 /*OpMemberDecorateString*/ && wc >= 4) {
+      drop = in[i + 3] == DecUserSemantic || in[i + 3] == 5636;
+    } else if (op == 332 /*OpDecorateId*/ && wc >= 3) {
+      drop = in[i + 2] == 5634 /*HlslCounterBufferGOOGLE*/;
+    }
+    if (!drop) out.insert(out.end(), in.begin() + i, in.begin() + i + wc);
+    i += wc;
+  }
+  return out;
+}
+
 // Checks that every binding follows the formula of Bindings.h for the stage.
 static bool CheckBindings(const ShaderReflection& r, ShaderStage stage, std::string* error) {
   const uint32_t base = kStageBindingStride * static_cast<uint32_t>(stage);
@@ -299,9 +326,10 @@ static HRESULT CreateShader(DeviceImpl* dev, const char* fn, ShaderStage stage, 
     dev->Log(LogLevel::Error, "%s: %s", fn, err.c_str());
     return E_INVALIDARG;
   }
+  std::vector<uint32_t> stripped = StripGoogleDecorations(words);
   VkShaderModuleCreateInfo ci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  ci.codeSize = len;
-  ci.pCode = words.data();
+  ci.codeSize = stripped.size() * 4;
+  ci.pCode = stripped.data();
   auto* s = new Impl(dev);
   if (vkCreateShaderModule(dev->vk(), &ci, nullptr, &s->module) != VK_SUCCESS) {
     dev->Log(LogLevel::Error, "%s: vkCreateShaderModule failed", fn);
