@@ -621,7 +621,7 @@ class DeviceImpl final : public Device {
   VkPhysicalDeviceMemoryProperties memProps_{};
   VkDeviceSize uboAlign_ = 256;
   bool debugUtils_ = false, minmax_ = false, depthClamp_ = false, swapchainExt_ = false;
-  bool anisotropy_ = false, bc_ = false, fillNonSolid_ = false;
+  bool anisotropy_ = false, bc_ = false, fillNonSolid_ = false, mirrorOnce_ = false;
   ADAPTER_DESC adapter_{};
   std::unique_ptr<ContextImpl> context_;
   PipelineCache pipelines_;
@@ -636,6 +636,7 @@ class DeviceImpl final : public Device {
 
  public:
   bool anisotropy() const { return anisotropy_; }
+  bool mirrorOnce() const { return mirrorOnce_; }
   bool fillModeNonSolid() const { return fillNonSolid_; }
   bool supportsBC() const { return bc_; }
 };

@@ -141,6 +141,10 @@ VkPipeline PipelineCache::GetPipeline(const PipelineKey& key, const PipelineInpu
                           VK_DYNAMIC_STATE_PRIMITIVE_TOPOLOGY};
   VkPipelineDynamicStateCreateInfo dy{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
   dy.dynamicStateCount = sizeof(dyn) / sizeof(dyn[0]);
+  if (binds.empty()) {  // no vertex buffers: no stride state to set
+    dyn[4] = dyn[5];
+    --dy.dynamicStateCount;
+  }
   dy.pDynamicStates = dyn;
   VkPipelineRenderingCreateInfo ri{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
   ri.colorAttachmentCount = key.numRT;

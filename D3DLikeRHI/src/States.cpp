@@ -111,6 +111,13 @@ HRESULT DeviceImpl::CreateSamplerState(const SAMPLER_DESC* desc, SamplerState** 
     Log(LogLevel::Error, "%s: invalid address mode (U %u, V %u, W %u)", fn, d.AddressU, d.AddressV, d.AddressW);
     return E_INVALIDARG;
   }
+  if (!mirrorOnce_) {
+    for (VkSamplerAddressMode* m : {&ci.addressModeU, &ci.addressModeV, &ci.addressModeW})
+      if (*m == VK_SAMPLER_ADDRESS_MODE_MIRROR_CLAMP_TO_EDGE) {
+        Log(LogLevel::Warning, "%s: TEXTURE_ADDRESS_MIRROR_ONCE needs samplerMirrorClampToEdge; using CLAMP", fn);
+        *m = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+      }
+  }
   if (!std::isfinite(d.MipLODBias) || d.MipLODBias < -16.0f || d.MipLODBias > 15.99f) {
     Log(LogLevel::Error, "%s: MipLODBias %g out of range [-16, 15.99]", fn, d.MipLODBias);
     return E_INVALIDARG;

@@ -227,8 +227,11 @@ bool DeviceImpl::CreateLogicalDevice() {
   e12.pNext = &e13;
   e13.dynamicRendering = VK_TRUE;
   e13.synchronization2 = VK_TRUE;
+  e13.maintenance4 = f13.maintenance4;  // relaxed VS/PS interface matching, as in D3D
   e12.hostQueryReset = f12.hostQueryReset;
   e12.samplerFilterMinmax = f12.samplerFilterMinmax;
+  e12.samplerMirrorClampToEdge = f12.samplerMirrorClampToEdge;
+  mirrorOnce_ = f12.samplerMirrorClampToEdge;
   VkPhysicalDeviceFeatures2 e2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
   e2.pNext = &e12;
   e2.features.samplerAnisotropy = f2.features.samplerAnisotropy;

@@ -174,19 +174,23 @@ TEST_F(RhiValidation, DrawsWithMissingStateAreSkippedAndLoggedOnce) {
 // The binding formula.
 std::map<std::string, uint32_t> ReflectBindings(const std::vector<uint32_t>& w) {
   std::map<uint32_t, std::string> names;
-  std::map<uint32_t, uint32_t> bindings, sets;
+  std::map<uint32_t, uint32_t> bindings, sets, varType, pointee;
   for (size_t i = 5; i < w.size();) {
     uint32_t op = w[i] & 0xffff, n = w[i] >> 16;
     if (n == 0) break;
     if (op == 5 /*OpName*/) names[w[i + 1]] = reinterpret_cast<const char*>(&w[i + 2]);
     if (op == 71 /*OpDecorate*/ && w[i + 2] == 33 /*Binding*/) bindings[w[i + 1]] = w[i + 3];
     if (op == 71 && w[i + 2] == 34 /*DescriptorSet*/) sets[w[i + 1]] = w[i + 3];
+    if (op == 32 /*OpTypePointer*/) pointee[w[i + 1]] = w[i + 3];
+    if (op == 59 /*OpVariable*/) varType[w[i + 2]] = w[i + 1];
     i += n;
   }
   std::map<std::string, uint32_t> r;
   for (auto& [id, b] : bindings) {
-    EXPECT_EQ(sets[id], 0u) << names[id];
-    r[names[id]] = b;
+    std::string name = names[id];
+    if (name.empty()) name = names[pointee[varType[id]]];  // cbuffer: the block type carries the name
+    EXPECT_EQ(sets[id], 0u) << name;
+    r[name] = b;
   }
   return r;
 }
