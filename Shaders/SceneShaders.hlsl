@@ -1,6 +1,8 @@
 // Scene shader of the sample: one normal- and specular-mapped forward shader
 // writing colour (SV_Target0) and per-pixel velocity (SV_Target1).
-// Variants (compiled at build time, Shaders/Scene.cmake):
+// Variants (compiled at build time, Shaders/Scene.cmake); the vertex shader
+// is built per (NORMAL_MAP, WRITE_VELOCITY) so that its outputs are exactly
+// the pixel shader's inputs (no unconsumed interface variables):
 //   NORMAL_MAP     0|1  sample the tangent-space normal map (t1)
 //   SPECULAR_MAP   0|1  modulate the specular term by the specular map (t2)
 //   WRITE_VELOCITY 0|1  write velocity to SV_Target1
@@ -40,8 +42,10 @@ struct VSIn {
   float3 position : POSITION;
   float3 normal : NORMAL;
   float2 texcoord : TEXCOORD0;
+#if NORMAL_MAP
   float3 tangent : TANGENT;
   float3 binormal : BINORMAL;
+#endif
 };
 
 struct VSOut {
@@ -49,23 +53,31 @@ struct VSOut {
   float3 worldPos : TEXCOORD0;
   float2 texcoord : TEXCOORD1;
   float3 normal : TEXCOORD2;
+#if NORMAL_MAP
   float3 tangent : TEXCOORD3;
   float3 binormal : TEXCOORD4;
+#endif
+#if WRITE_VELOCITY
   float4 currClip : TEXCOORD5;
   float4 prevClip : TEXCOORD6;
+#endif
 };
 
 VSOut SceneVS(VSIn v) {
   VSOut o;
   float4 p = float4(v.position, 1.0);
   o.position = mul(g_WorldViewProj, p);
+#if WRITE_VELOCITY
   o.currClip = o.position;
   o.prevClip = mul(g_PrevWorldViewProj, p);
+#endif
   o.worldPos = mul(g_World, p).xyz;
   float3x3 w = (float3x3)g_World;
   o.normal = mul(w, v.normal);
+#if NORMAL_MAP
   o.tangent = mul(w, v.tangent);
   o.binormal = mul(w, v.binormal);
+#endif
   o.texcoord = v.texcoord;
   return o;
 }

@@ -27,6 +27,9 @@
 namespace drr {
 namespace fs = std::filesystem;
 using d3dl::ComPtr;
+using d3dl::FAILED;
+using d3dl::SUCCEEDED;
+using d3dl::UINT;
 
 std::string SceneStats::ToString() const {
   char b[512];
@@ -134,8 +137,10 @@ struct SceneImpl {
   std::vector<std::string> warnings;
   glm::vec3 boundsMin{0.f}, boundsMax{0.f};
 
-  ComPtr<d3dl::VertexShader> vs;
-  ComPtr<d3dl::InputLayout> layout;
+  // Vertex shader variants by (NORMAL_MAP, WRITE_VELOCITY): index n*2+v.
+  std::vector<uint32_t> vsCode[4];
+  ComPtr<d3dl::VertexShader> vs[4];
+  ComPtr<d3dl::InputLayout> layout[4];
   std::vector<uint32_t> psCode[8];
   bool psWanted[8] = {};
   ComPtr<d3dl::PixelShader> ps[8];
@@ -157,34 +162,58 @@ struct SceneImpl {
   bool LoadEntry(Entry& e, TextureCache& cache, std::string* error);
   ComPtr<d3dl::ShaderResourceView> Upload(const std::shared_ptr<const TextureData>& t, std::string* error);
   d3dl::PixelShader* Variant(int v);
+  bool VertexStage(int v, d3dl::VertexShader** shader, d3dl::InputLayout** il);
   void DrawPass(d3dl::DeviceContext* ctx, const SceneRenderParams& p, bool decalPass, const glm::mat4& viewProj,
                 const glm::mat4& jitter, const glm::vec3& eye, const glm::vec4 planes[6]);
 };
 
 // ---------------------------------------------------------------------------
+static std::string VsFile(int i) { return "scene_vs_n" + std::to_string(i >> 1) + "_v" + std::to_string(i & 1) + ".spv"; }
+
 bool SceneImpl::CreateShaders(std::string* error) {
-  std::vector<uint32_t> vsCode;
-  if (!ReadSpv(shaderDir + "/scene_vs.spv", &vsCode, error)) return false;
-  if (FAILED(device->CreateVertexShader(vsCode.data(), vsCode.size() * 4, vs.ReleaseAndGetAddressOf()))) {
-    *error = shaderDir + "/scene_vs.spv: CreateVertexShader failed";
-    return false;
-  }
-  const d3dl::INPUT_ELEMENT_DESC elems[] = {
-      {"POSITION", 0, d3dl::DXGI_FORMAT_R32G32B32_FLOAT, 0, 0, d3dl::INPUT_PER_VERTEX_DATA, 0},
-      {"NORMAL", 0, d3dl::DXGI_FORMAT_R32G32B32_FLOAT, 0, 12, d3dl::INPUT_PER_VERTEX_DATA, 0},
-      {"TEXCOORD", 0, d3dl::DXGI_FORMAT_R32G32_FLOAT, 0, 24, d3dl::INPUT_PER_VERTEX_DATA, 0},
-      {"TANGENT", 0, d3dl::DXGI_FORMAT_R32G32B32_FLOAT, 0, 32, d3dl::INPUT_PER_VERTEX_DATA, 0},
-      {"BINORMAL", 0, d3dl::DXGI_FORMAT_R32G32B32_FLOAT, 0, 44, d3dl::INPUT_PER_VERTEX_DATA, 0},
-  };
-  if (FAILED(device->CreateInputLayout(elems, 5, vsCode.data(), vsCode.size() * 4, layout.ReleaseAndGetAddressOf()))) {
-    *error = "scene: CreateInputLayout failed for scene_vs.spv";
-    return false;
-  }
   for (int v = 0; v < 8; ++v) {
     ps[v] = nullptr;
     if (!psWanted[v]) continue;
     if (!ReadSpv(shaderDir + "/" + VariantFile(v), &psCode[v], error)) return false;
+    int vi = ((v >> 2) & 1) * 2 + (v & 1);
+    if (vsCode[vi].empty() && !ReadSpv(shaderDir + "/" + VsFile(vi), &vsCode[vi], error)) return false;
+    int vi0 = ((v >> 2) & 1) * 2;  // the no-velocity variant of the same material
+    if (vsCode[vi0].empty() && !ReadSpv(shaderDir + "/" + VsFile(vi0), &vsCode[vi0], error)) return false;
   }
+  return true;
+}
+
+// The vertex shader (and its input layout) matching pixel-shader variant v.
+bool SceneImpl::VertexStage(int v, d3dl::VertexShader** shader, d3dl::InputLayout** il) {
+  int vi = ((v >> 2) & 1) * 2 + (v & 1);
+  if (!vs[vi]) {
+    std::string err;
+    if (vsCode[vi].empty() && !ReadSpv(shaderDir + "/" + VsFile(vi), &vsCode[vi], &err)) {
+      Warn(err);
+      return false;
+    }
+    if (FAILED(device->CreateVertexShader(vsCode[vi].data(), vsCode[vi].size() * 4, vs[vi].ReleaseAndGetAddressOf()))) {
+      Warn("scene: CreateVertexShader failed for " + VsFile(vi));
+      return false;
+    }
+    const d3dl::INPUT_ELEMENT_DESC elems[] = {
+        {"POSITION", 0, d3dl::DXGI_FORMAT_R32G32B32_FLOAT, 0, 0, d3dl::INPUT_PER_VERTEX_DATA, 0},
+        {"NORMAL", 0, d3dl::DXGI_FORMAT_R32G32B32_FLOAT, 0, 12, d3dl::INPUT_PER_VERTEX_DATA, 0},
+        {"TEXCOORD", 0, d3dl::DXGI_FORMAT_R32G32_FLOAT, 0, 24, d3dl::INPUT_PER_VERTEX_DATA, 0},
+        {"TANGENT", 0, d3dl::DXGI_FORMAT_R32G32B32_FLOAT, 0, 32, d3dl::INPUT_PER_VERTEX_DATA, 0},
+        {"BINORMAL", 0, d3dl::DXGI_FORMAT_R32G32B32_FLOAT, 0, 44, d3dl::INPUT_PER_VERTEX_DATA, 0},
+    };
+    // Variants without normal mapping do not read the tangent frame.
+    UINT count = (vi >> 1) ? 5 : 3;
+    if (FAILED(device->CreateInputLayout(elems, count, vsCode[vi].data(), vsCode[vi].size() * 4,
+                                         layout[vi].ReleaseAndGetAddressOf()))) {
+      vs[vi] = nullptr;
+      Warn("scene: CreateInputLayout failed for " + VsFile(vi));
+      return false;
+    }
+  }
+  *shader = vs[vi].Get();
+  *il = layout[vi].Get();
   return true;
 }
 
@@ -530,13 +559,18 @@ void SceneImpl::DrawPass(d3dl::DeviceContext* ctx, const SceneRenderParams& p, b
         ++stats.drawsCulled;
         continue;
       }
-      d3dl::PixelShader* shader = Variant(VariantIndex(mat.hasNormal, mat.hasSpecular, p.writeVelocity));
-      if (!shader) continue;
+      const int variant = VariantIndex(mat.hasNormal, mat.hasSpecular, p.writeVelocity);
+      d3dl::PixelShader* shader = Variant(variant);
+      d3dl::VertexShader* vshader = nullptr;
+      d3dl::InputLayout* il = nullptr;
+      if (!shader || !VertexStage(variant, &vshader, &il)) continue;
       d3dl::MAPPED_SUBRESOURCE map;
       if (FAILED(ctx->Map(objectCB.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &map))) continue;
       ObjectConstants oc{jitter * wvp, jitter * prev, world, mat.tint, glm::vec4(eye, 1.f)};
       std::memcpy(map.pData, &oc, sizeof oc);
       ctx->Unmap(objectCB.Get(), 0);
+      ctx->IASetInputLayout(il);
+      ctx->VSSetShader(vshader);
       ctx->PSSetShader(shader);
       d3dl::ShaderResourceView* views[3] = {mat.diffuse.Get(), mat.normal.Get(), mat.specular.Get()};
       ctx->PSSetShaderResources(0, 3, views);
@@ -566,9 +600,7 @@ void Scene::Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p) {
     if (l > 0 && std::isfinite(l)) pl /= l;
   }
   ctx->BeginEvent("Scene");
-  ctx->IASetInputLayout(s.layout.Get());
   ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLELIST);
-  ctx->VSSetShader(s.vs.Get());
   d3dl::Buffer* cb = s.objectCB.Get();
   ctx->VSSetConstantBuffers(0, 1, &cb);
   ctx->PSSetConstantBuffers(0, 1, &cb);
@@ -592,17 +624,19 @@ bool Scene::ReloadShaders(std::string* error) {
   SceneImpl& s = *impl_;
   std::string dummy;
   if (!error) error = &dummy;
-  d3dl::ShaderCompileDesc vd;
-  vd.SourcePath = DRR_SCENE_HLSL;
-  vd.EntryPoint = "SceneVS";
-  vd.Stage = d3dl::ShaderStage::Vertex;
-  std::vector<uint32_t> vsCode;
   std::string errs;
-  if (FAILED(d3dl::CompileHLSL(vd, &vsCode, &errs))) {
-    *error = std::string(DRR_SCENE_HLSL) + ": SceneVS: " + errs;
-    return false;
+  std::vector<uint32_t> vcode[4], code[8];
+  for (int vi = 0; vi < 4; ++vi) {
+    d3dl::ShaderCompileDesc vd;
+    vd.SourcePath = DRR_SCENE_HLSL;
+    vd.EntryPoint = "SceneVS";
+    vd.Stage = d3dl::ShaderStage::Vertex;
+    vd.Defines = {{"NORMAL_MAP", std::to_string(vi >> 1)}, {"WRITE_VELOCITY", std::to_string(vi & 1)}};
+    if (FAILED(d3dl::CompileHLSL(vd, &vcode[vi], &errs))) {
+      *error = std::string(DRR_SCENE_HLSL) + ": SceneVS (" + VsFile(vi) + "): " + errs;
+      return false;
+    }
   }
-  std::vector<uint32_t> code[8];
   for (int v = 0; v < 8; ++v) {
     if (!s.psWanted[v] && !s.ps[v]) continue;
     d3dl::ShaderCompileDesc pd;
@@ -617,16 +651,16 @@ bool Scene::ReloadShaders(std::string* error) {
       return false;
     }
   }
-  ComPtr<d3dl::VertexShader> newVs;
-  if (FAILED(s.device->CreateVertexShader(vsCode.data(), vsCode.size() * 4, newVs.GetAddressOf()))) {
-    *error = "ReloadShaders: CreateVertexShader failed";
-    return false;
+  // All compiled: swap in (objects are recreated lazily from the new code).
+  for (int vi = 0; vi < 4; ++vi) {
+    s.vsCode[vi] = std::move(vcode[vi]);
+    s.vs[vi] = nullptr;
+    s.layout[vi] = nullptr;
   }
-  s.vs = newVs;
   for (int v = 0; v < 8; ++v) {
     if (code[v].empty()) continue;
     s.psCode[v] = std::move(code[v]);
-    s.ps[v] = nullptr;  // recreated lazily from the new code
+    s.ps[v] = nullptr;
   }
   return true;
 }

@@ -176,5 +176,12 @@ TEST_F(SceneRender, MatrixConventionVelocityAndJitter) {
   auto c = img.RGBA8(83, 51);
   EXPECT_FALSE(c[0] == 0 && c[1] == 89 && c[2] == 89);
   EXPECT_EQ(scene->Stats().shaderVariantsUsed, 2u);
+  // F4: recompile SceneShaders.hlsl at run time and draw with the new code.
+  ASSERT_TRUE(scene->ReloadShaders(&err)) << err;
+  context()->ClearRenderTargetView(t.color.rtv.Get(), clear);
+  context()->ClearDepthStencilView(t.dsv.Get(), d3dl::CLEAR_DEPTH, 1.f, 0);
+  scene->Render(context(), p);
+  img = ReadBack(t.color.texture.Get());
+  EXPECT_EQ(img.RGBA8(83, 51), c);
   fs::remove_all(dir);
 }
