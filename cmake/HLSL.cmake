@@ -37,10 +37,18 @@ function(d3dl_hlsl_shift_args out stage)
 endfunction()
 
 # d3dl_compile_hlsl(OUTPUT <spv> SOURCE <hlsl> ENTRY <name> STAGE <vert|frag>
-#                   [DEFINES A=1 B ...] [DEPENDS extra headers...])
+#                   [DEFINES A=1 B ...] [DEPENDS extra headers...] [NO_SEMANTICS])
 # Produces one .spv; only this shader rebuilds when its source or headers change.
+# NO_SEMANTICS leaves out -fhlsl_functionality1 (no HLSL semantic strings in
+# the SPIR-V): for shaders handed to raw Vulkan, which must not see them.
 function(d3dl_compile_hlsl)
-  cmake_parse_arguments(A "" "OUTPUT;SOURCE;ENTRY;STAGE" "DEFINES;DEPENDS" ${ARGN})
+  cmake_parse_arguments(A "NO_SEMANTICS" "OUTPUT;SOURCE;ENTRY;STAGE" "DEFINES;DEPENDS" ${ARGN})
+  set(semantics -fhlsl_functionality1)
+  set(flags "")
+  if(A_NO_SEMANTICS)
+    set(semantics "")
+    set(flags "no-semantics")
+  endif()
   d3dl_hlsl_shift_args(shifts ${A_STAGE})
   set(defs)
   foreach(d IN LISTS A_DEFINES)
@@ -50,10 +58,10 @@ function(d3dl_compile_hlsl)
   # Remembered for the manifest that the runtime-compiler test replays.
   string(JOIN "," joined_defines ${A_DEFINES})
   set_property(GLOBAL APPEND PROPERTY D3DL_HLSL_MANIFEST
-               "${A_SOURCE}|${A_ENTRY}|${A_STAGE}|${joined_defines}|${A_OUTPUT}")
+               "${A_SOURCE}|${A_ENTRY}|${A_STAGE}|${joined_defines}|${A_OUTPUT}|${flags}")
   add_custom_command(
     OUTPUT ${A_OUTPUT}
-    COMMAND ${GLSLANG_VALIDATOR} -D -V --target-env vulkan1.3 -fhlsl_functionality1
+    COMMAND ${GLSLANG_VALIDATOR} -D -V --target-env vulkan1.3 ${semantics}
             --hlsl-offsets -S ${A_STAGE} -e ${A_ENTRY} ${shifts} ${defs}
             -I${src_dir} -o ${A_OUTPUT} ${A_SOURCE}
     DEPENDS ${A_SOURCE} ${A_DEPENDS}
@@ -62,7 +70,7 @@ function(d3dl_compile_hlsl)
 endfunction()
 
 # Writes build/shader_manifest.txt: one line per compiled shader,
-# "source|entry|stage|DEF=1,DEF2|output.spv". Call once, after every unit.
+# "source|entry|stage|DEF=1,DEF2|output.spv|flags". Call once, after every unit.
 function(d3dl_write_hlsl_manifest)
   get_property(entries GLOBAL PROPERTY D3DL_HLSL_MANIFEST)
   string(JOIN "\n" text ${entries})

@@ -621,6 +621,7 @@ class DeviceImpl final : public Device {
   VkPhysicalDeviceMemoryProperties memProps_{};
   VkDeviceSize uboAlign_ = 256;
   bool debugUtils_ = false, minmax_ = false, depthClamp_ = false, swapchainExt_ = false;
+  bool surfaceExt_ = false;  // VK_KHR_surface enabled on the instance
   bool anisotropy_ = false, bc_ = false, fillNonSolid_ = false, mirrorOnce_ = false;
   ADAPTER_DESC adapter_{};
   std::unique_ptr<ContextImpl> context_;

@@ -114,7 +114,7 @@ HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
   shader.setEnvInput(glslang::EShSourceHlsl, language, glslang::EShClientVulkan, 100);
   shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
   shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_6);
-  shader.setEnvTargetHlslFunctionality1();
+  if (desc.KeepSemantics) shader.setEnvTargetHlslFunctionality1();
 
   const uint32_t stageBase = kStageBindingStride * static_cast<uint32_t>(desc.Stage);
   shader.setShiftBinding(glslang::EResUbo, stageBase + kConstantBufferBase);

@@ -96,6 +96,7 @@ bool DeviceImpl::CreateInstance(const DEVICE_CREATE_DESC& desc, ValidationMode m
                           "VK_KHR_wayland_surface", "VK_KHR_win32_surface",
                           "VK_EXT_metal_surface"})
       if (has(e)) exts.push_back(e);
+    surfaceExt_ = has("VK_KHR_surface");
   }
   bool validation = mode != ValidationMode::Off;
   if (validation && !HasLayer("VK_LAYER_KHRONOS_validation")) {
@@ -256,7 +257,9 @@ bool DeviceImpl::CreateLogicalDevice() {
   vkEnumerateDeviceExtensionProperties(phys_, nullptr, &en, dext.data());
   std::vector<const char*> exts;
   for (auto& e : dext)
-    if (std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0) {
+    // VK_KHR_swapchain requires VK_KHR_surface on the instance: without window
+    // surfaces (headless), the device is created without it.
+    if (surfaceExt_ && std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0) {
       exts.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
       swapchainExt_ = true;
     }

@@ -14,7 +14,7 @@
 namespace {
 
 struct ManifestEntry {
-  std::string source, entry, stage, output;
+  std::string source, entry, stage, output, flags;
   std::vector<std::pair<std::string, std::string>> defines;
 };
 
@@ -34,8 +34,8 @@ std::vector<ManifestEntry> ReadManifest() {
   while (std::getline(in, line)) {
     if (line.empty()) continue;
     const auto f = Split(line, '|');
-    if (f.size() != 5) continue;
-    ManifestEntry e{f[0], f[1], f[2], f[4], {}};
+    if (f.size() != 6) continue;
+    ManifestEntry e{f[0], f[1], f[2], f[4], f[5], {}};
     for (const auto& d : Split(f[3], ',')) {
       if (d.empty()) continue;
       const auto eq = d.find('=');
@@ -65,6 +65,7 @@ TEST(RuntimeCompiler, MatchesEveryBuildTimeShader) {
     desc.EntryPoint = e.entry;
     desc.Stage = e.stage == "vert" ? d3dl::ShaderStage::Vertex : d3dl::ShaderStage::Pixel;
     desc.Defines = e.defines;
+    desc.KeepSemantics = e.flags.find("no-semantics") == std::string::npos;
     std::vector<uint32_t> spirv;
     std::string errors;
     ASSERT_EQ(d3dl::CompileHLSL(desc, &spirv, &errors), d3dl::S_OK) << errors;

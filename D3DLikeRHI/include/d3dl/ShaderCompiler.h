@@ -18,6 +18,9 @@ struct ShaderCompileDesc {
   std::string EntryPoint = "main";
   ShaderStage Stage = ShaderStage::Vertex;
   std::vector<std::pair<std::string, std::string>> Defines;
+  // Keep HLSL semantic strings (SPV_GOOGLE_hlsl_functionality1), which
+  // CreateInputLayout matches against; off = d3dl_compile_hlsl's NO_SEMANTICS.
+  bool KeepSemantics = true;
 };
 
 // Returns S_OK and fills spirv, or E_FAIL with the compiler's messages in errors.
