@@ -77,6 +77,8 @@ class ContextImpl final : public DeviceContext {
   void EndEvent() override;
   void ClearState() override;
   void Flush() override;
+  void BlitRegion(Texture2D* dst, const RECT& dstRect, Texture2D* src, const RECT& srcRect,
+                  FILTER filter) override;  // ContextBlit.cpp
 
   // ---- backend internals
   void OnFrameBegin();  // a fresh command buffer: everything is re-bound lazily
