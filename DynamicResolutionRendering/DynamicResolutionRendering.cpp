@@ -16,6 +16,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "d3dl/ShaderCompiler.h"
 #include "scene/Scene.h"
 
 #ifndef DRR_DEFAULT_SHADER_DIR
@@ -34,6 +35,60 @@ constexpr float kZero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
 constexpr float kMarkerColor[4] = {1.0f, 0.0f, 1.0f, 1.0f};     // magenta, never in the Arena
 constexpr float kMarkerVelocity[4] = {0.5f, -0.5f, 0.0f, 0.0f}; // a huge velocity
 constexpr uint32_t kMaxRTSize = 8192;                            // as the original
+
+// Post-processing shaders: the sample's members and how the build compiles
+// them (Shaders/PostProcess.cmake), so F4 can recompile the same SPIR-V.
+struct PostShader {
+  const char* name;    // <name>.spv in the shader folder
+  const char* source;  // file in the shader source folder
+  const char* entry;
+  bool vertex;
+  const char* define;  // nullptr or a macro defined as 1
+};
+constexpr PostShader kPostShaders[] = {
+    {"PostProcessDynamic_FullScreenVS", "PostProcessDynamic.hlsl", "FullScreenVS", true, nullptr},
+    {"PostProcess_FullScreenVS", "PostProcess.hlsl", "FullScreenVS", true, nullptr},
+    {"PostProcessDynamic_ClearPS", "PostProcessDynamic.hlsl", "ClearPS", false, nullptr},
+    {"PostProcessDynamic_ClearVelocityPS", "PostProcessDynamic.hlsl", "ClearPS", false, "CLEAR_VELOCITY"},
+    {"PostProcessDynamic_MotionBlurPS", "PostProcessDynamic.hlsl", "MotionBlurPS", false, nullptr},
+    {"PostProcess_ClearPS", "PostProcess.hlsl", "ClearPS", false, nullptr},
+    {"PostProcess_ClearVelocityPS", "PostProcess.hlsl", "ClearPS", false, "CLEAR_VELOCITY"},
+    {"PostProcess_MotionBlurPS", "PostProcess.hlsl", "MotionBlurPS", false, nullptr},
+    {"PostProcessDynamic_ResolvePS", "PostProcessDynamic.hlsl", "ResolvePS", false, nullptr},
+    {"PostProcessDynamic_BicubicPS", "PostProcessDynamic.hlsl", "BicubicPS", false, nullptr},
+    {"PostProcessDynamic_NoisePS", "PostProcessDynamic.hlsl", "NoisePS", false, nullptr},
+    {"PostProcessDynamic_NoiseOffsetPS", "PostProcessDynamic.hlsl", "NoiseOffsetPS", false, nullptr},
+    {"PostProcessDynamic_TAAPS", "PostProcessDynamic.hlsl", "TAAPS", false, nullptr},
+    {"PostProcessDynamic_TAAFastPS", "PostProcessDynamic.hlsl", "TAAPS", false, "TAA_FAST"},
+    {"PostProcessDynamic_TAANoiseOffsetPS", "PostProcessDynamic.hlsl", "TAANoiseOffsetPS", false, nullptr},
+    {"PostProcessDynamic_TAANoiseOffsetFastPS", "PostProcessDynamic.hlsl", "TAANoiseOffsetPS", false, "TAA_FAST"},
+    {"PostProcessDynamic_TAABasicPS", "PostProcessDynamic.hlsl", "TAABasicPS", false, nullptr},
+};
+
+// SPIR-V of one post shader: compiled from <srcDir>/<source> when fromSources
+// and the source exists (*compiled set), else read from <spvDir>/<name>.spv.
+bool PostShaderCode(const PostShader& ps, bool fromSources, const std::string& srcDir,
+                    const std::string& spvDir, std::vector<uint32_t>* code, bool* compiled,
+                    std::string* error) {
+  *compiled = false;
+  const std::string src = srcDir + "/" + ps.source;
+  if (fromSources && std::filesystem::exists(src)) {
+    d3dl::ShaderCompileDesc d;
+    d.SourcePath = src;
+    d.EntryPoint = ps.entry;
+    d.Stage = ps.vertex ? d3dl::ShaderStage::Vertex : d3dl::ShaderStage::Pixel;
+    if (ps.define) d.Defines = {{ps.define, "1"}};
+    std::string errs;
+    if (d3dl::FAILED(d3dl::CompileHLSL(d, code, &errs))) {
+      *error = src + ": " + ps.entry + (ps.define ? std::string(" (") + ps.define + ")" : std::string()) +
+               ": " + errs;
+      return false;
+    }
+    *compiled = true;
+    return true;
+  }
+  return Utility::ReadFile(spvDir + "/" + ps.name + ".spv", code, error);
+}
 
 // Constants of PostProcessDynamic.hlsl (cbPostProcessDynamic).
 struct DynamicConstants {
@@ -192,7 +247,7 @@ int Sample::Init(const Options& options, std::string* error) {
   if (m_Window) m_GuiInput.Install(m_Window, this, KeyThunk, MouseThunk);
 
   // Resolution control.
-  m_Controller = MakeController(ControllerKind::Article);
+  m_Controller = MakeLaw();
   m_RefreshHz = options.refresh > 0 ? options.refresh : 60.0;
   if (options.refresh <= 0 && m_Window) {
     if (GLFWmonitor* mon = glfwGetPrimaryMonitor())
@@ -300,42 +355,48 @@ bool Sample::ResizeSwapChain(uint32_t w, uint32_t h) {
   return InitDynamicResolution();
 }
 
-bool Sample::LoadShaders(std::string* error) {
-  using Utility::LoadPixelShader;
+bool Sample::LoadShaders(std::string* error, bool fromSources) {
   d3dl::Device* dev = m_Device.Get();
-  const std::string& d = m_ShaderDir;
-  struct {
-    const char* name;
-    d3dl::ComPtr<d3dl::PixelShader>* ps;
-  } pixel[] = {
-      {"PostProcessDynamic_ClearPS", &m_ClearPS},
-      {"PostProcessDynamic_ClearVelocityPS", &m_ClearVelocityPS},
-      {"PostProcessDynamic_MotionBlurPS", &m_MotionBlurPS},
-      {"PostProcess_ClearPS", &m_FullClearPS},
-      {"PostProcess_ClearVelocityPS", &m_FullClearVelocityPS},
-      {"PostProcess_MotionBlurPS", &m_FullMotionBlurPS},
-      {"PostProcessDynamic_ResolvePS", &m_ResolvePS},
-      {"PostProcessDynamic_BicubicPS", &m_BicubicPS},
-      {"PostProcessDynamic_NoisePS", &m_NoisePS},
-      {"PostProcessDynamic_NoiseOffsetPS", &m_NoiseOffsetPS},
-      {"PostProcessDynamic_TAAPS", &m_TAAPS},
-      {"PostProcessDynamic_TAAFastPS", &m_TAAFastPS},
-      {"PostProcessDynamic_TAANoiseOffsetPS", &m_TAANoiseOffsetPS},
-      {"PostProcessDynamic_TAANoiseOffsetFastPS", &m_TAANoiseOffsetFastPS},
-      {"PostProcessDynamic_TAABasicPS", &m_TAABasicPS},
-  };
+  // Same order as kPostShaders.
+  d3dl::ComPtr<d3dl::VertexShader>* vertex[] = {&m_FullScreenVS, &m_FullScreenFullVS};
+  d3dl::ComPtr<d3dl::PixelShader>* pixel[] = {
+      &m_ClearPS,   &m_ClearVelocityPS, &m_MotionBlurPS,  &m_FullClearPS,  &m_FullClearVelocityPS,
+      &m_FullMotionBlurPS, &m_ResolvePS, &m_BicubicPS,   &m_NoisePS,      &m_NoiseOffsetPS,
+      &m_TAAPS,     &m_TAAFastPS,       &m_TAANoiseOffsetPS, &m_TAANoiseOffsetFastPS, &m_TAABasicPS};
+  static_assert(std::size(kPostShaders) == 17);
+  const std::string srcDir = ShaderSourceDir();
   // Load everything first, replace only when all succeeded (F4 keeps the old set on error).
-  std::vector<d3dl::ComPtr<d3dl::PixelShader>> loaded(std::size(pixel));
-  d3dl::ComPtr<d3dl::VertexShader> vs, vsFull;
-  if (d3dl::FAILED(Utility::LoadVertexShader(dev, d, "PostProcessDynamic_FullScreenVS", vs.GetAddressOf(), nullptr, error)) ||
-      d3dl::FAILED(Utility::LoadVertexShader(dev, d, "PostProcess_FullScreenVS", vsFull.GetAddressOf(), nullptr, error)))
-    return false;
-  for (size_t i = 0; i < std::size(pixel); ++i)
-    if (d3dl::FAILED(LoadPixelShader(dev, d, pixel[i].name, loaded[i].GetAddressOf(), error))) return false;
-  m_FullScreenVS = vs;
-  m_FullScreenFullVS = vsFull;
-  for (size_t i = 0; i < std::size(pixel); ++i) *pixel[i].ps = loaded[i];
+  std::vector<d3dl::ComPtr<d3dl::VertexShader>> vs(std::size(vertex));
+  std::vector<d3dl::ComPtr<d3dl::PixelShader>> ps(std::size(pixel));
+  size_t v = 0, p = 0, compiledCount = 0;
+  for (const PostShader& sh : kPostShaders) {
+    std::vector<uint32_t> code;
+    bool compiled = false;
+    if (!PostShaderCode(sh, fromSources, srcDir, m_ShaderDir, &code, &compiled, error)) return false;
+    compiledCount += compiled;
+    const d3dl::HRESULT hr =
+        sh.vertex ? dev->CreateVertexShader(code.data(), code.size() * 4, vs[v++].GetAddressOf())
+                  : dev->CreatePixelShader(code.data(), code.size() * 4, ps[p++].GetAddressOf());
+    if (d3dl::FAILED(hr)) {
+      *error = std::string(sh.vertex ? "CreateVertexShader(" : "CreatePixelShader(") + sh.name + ") failed";
+      return false;
+    }
+  }
+  for (size_t i = 0; i < vs.size(); ++i) *vertex[i] = vs[i];
+  for (size_t i = 0; i < ps.size(); ++i) *pixel[i] = ps[i];
+  m_PostShadersCompiled = compiledCount;
   return true;
+}
+
+std::string Sample::ShaderSourceDir() {
+  const char* env = std::getenv("DRR_SHADER_SOURCE_DIR");
+  if (env && *env) return env;
+#ifdef DRR_SHADER_SOURCE_DIR
+  return DRR_SHADER_SOURCE_DIR;  // set by the build
+#else
+  // The repository's Shaders folder, next to this file's folder.
+  return (std::filesystem::path(__FILE__).parent_path().parent_path() / "Shaders").string();
+#endif
 }
 
 bool Sample::CreateStates(std::string* error) {
@@ -369,14 +430,26 @@ bool Sample::CreateStates(std::string* error) {
   return true;
 }
 
-void Sample::ReloadShaders() {
+bool Sample::ReloadShaders() {
   std::string err;
-  bool ok = LoadShaders(&err);
+  // Nothing may still use the shaders that get replaced.
+  m_Context->Flush();
+  m_Device->WaitIdle();
+  bool ok = LoadShaders(&err, /*fromSources=*/true);
   ok = ok && m_GuiRenderer.ReloadShaders(m_ShaderDir, &err);
   ok = ok && m_ZoomBox.ReloadShaders(m_ShaderDir, &err);
   ok = ok && m_Scene->ReloadShaders(&err);
-  m_LastMessage = ok ? "Shaders reloaded from " + m_ShaderDir : "Shader reload failed: " + err;
+  if (ok) {
+    m_LastMessage = m_PostShadersCompiled > 0
+                        ? "Shaders reloaded: " + std::to_string(m_PostShadersCompiled) +
+                              " post-processing shaders compiled from " + ShaderSourceDir()
+                        : "Shaders reloaded from " + m_ShaderDir + " (no HLSL sources in " +
+                              ShaderSourceDir() + ")";
+  } else {
+    m_LastMessage = "Shader reload failed, the previous shaders stay: " + err;
+  }
   std::fprintf(stderr, "%s\n", m_LastMessage.c_str());
+  return ok;
 }
 
 // ---------------------------------------------------------------------------
@@ -425,6 +498,20 @@ bool Sample::InitDynamicResolution() {
   return ok;
 }
 
+std::unique_ptr<ResolutionController> Sample::MakeLaw() const {
+  switch (m_Options.law) {
+    case ControlLaw::Robust: {
+      // Told how many GPU results after a scale change still describe the old
+      // scale (Docs/Controller.md: unstable otherwise).
+      RobustController::Params p;
+      p.latencyFrames = m_LawLatency;
+      return std::make_unique<RobustController>(p);
+    }
+    case ControlLaw::UEStyle: return MakeController(ControllerKind::UEStyle);
+    default: return MakeController(ControllerKind::Article);
+  }
+}
+
 void Sample::ReleaseDynamicResolution() {
   for (Utility::RenderTarget* rt : {&g_ColorDynamic, &g_DepthDynamic, &g_VelocityDynamic[0],
                                     &g_VelocityDynamic[1], &g_FinalRTDynamic[0], &g_FinalRTDynamic[1],
@@ -456,7 +543,8 @@ void Sample::ApplySettings(const Options& o) {
   m_Options.height = keep.height;
   m_ShowGUI = o.gui;
   if (o.refresh > 0) m_RefreshHz = o.refresh;
-  if (o.control != keep.control && m_Controller) m_Controller->Reset();
+  if (o.law != keep.law || !m_Controller) m_Controller = MakeLaw();  // switching resets the law
+  else if (o.control != keep.control) m_Controller->Reset();
   if (camera >= 0 && camera < CameraCount() && camera != m_Camera) SelectCamera(camera);
   AllocationKey want{m_Options.dynamicResolution, m_Options.superSampling, m_Options.motionBlur,
                      TAAActive(), m_BackBufferWidth, m_BackBufferHeight};
@@ -520,7 +608,7 @@ void Sample::OnKey(int key, int action, int mods) {
   switch (key) {
     case GLFW_KEY_F1: m_ShowHelp = !m_ShowHelp; break;
     case GLFW_KEY_F2: ToggleFullscreen(); break;
-    case GLFW_KEY_F4: ReloadShaders(); break;
+    case GLFW_KEY_F4: (void)ReloadShaders(); break;
     case GLFW_KEY_F10: m_ShowGUI = !m_ShowGUI; break;
     case GLFW_KEY_F11: m_ShowText = !m_ShowText; break;
     case GLFW_KEY_P: m_Options.pause = !m_Options.pause; break;
@@ -669,8 +757,23 @@ void Sample::OnFrameRender(double elapsed) {
   m_TimerPostP.Update(ctx);
   m_TimerScale.Update(ctx);
   if (newAverage || m_FrameCount % 10 == 0) UpdateStats();
-  if (dynamic && m_Options.control != ControlMode::Manual && m_TimerFrame.ResultCount() > 0)
-    ControlResolution(m_TimerFrame.AverageMs() / 1000.0, m_LastFrameSeconds);
+  if (dynamic && m_Options.control != ControlMode::Manual) {
+    if (m_Options.law == ControlLaw::Article) {
+      // The original: every frame, on the 10-result average of the inner-frame timer.
+      if (m_TimerFrame.ResultCount() > 0)
+        ControlResolution(m_TimerFrame.AverageMs() / 1000.0, m_LastFrameSeconds);
+    } else if (m_TimerFrame.NewResults() > 0) {
+      // Per-frame laws: one call per new inner-frame result. A result polled
+      // d frames after its Start leaves d - 1 results of the old scale after a
+      // change; the robust law is told the largest such count seen.
+      const int stale = std::max(0, int(m_TimerFrame.LastDelayFrames()) - 1);
+      if (m_Options.law == ControlLaw::Robust && stale > m_LawLatency) {
+        m_LawLatency = stale;
+        m_Controller = MakeLaw();
+      }
+      ControlResolution(m_TimerFrame.LastMs() / 1000.0, m_LastFrameSeconds);
+    }
+  }
 
   // 2. TAA jitter and RT ratios: keep last frame's as "previous".
   m_JitterPrev = m_JitterCurr;
@@ -1000,6 +1103,13 @@ void Sample::RenderGUI() {
     ImGui::EndCombo();
   }
   o.control = static_cast<ControlMode>(control);
+  int law = static_cast<int>(o.law);
+  if (ImGui::BeginCombo("Control law", ControlLawName(o.law))) {
+    for (int i = 0; i < static_cast<int>(ControlLaw::Count); ++i)
+      if (ImGui::Selectable(ControlLawName(static_cast<ControlLaw>(i)), i == law)) law = i;
+    ImGui::EndCombo();
+  }
+  o.law = static_cast<ControlLaw>(law);
   const ImVec2 cursor = ImGui::GetCursorScreenPos();
   m_GuiStaticRect = {top.x, top.y, top.x + panelW, cursor.y - 2.0f};
 
@@ -1025,7 +1135,7 @@ void Sample::RenderGUI() {
                        o.psClear != m_Options.psClear || o.dynamicResolution != m_Options.dynamicResolution ||
                        o.superSampling != m_Options.superSampling || o.aspectLock != m_Options.aspectLock ||
                        o.filter != m_Options.filter || o.symmetricTAA != m_Options.symmetricTAA ||
-                       o.control != m_Options.control || scaleEdited;
+                       o.control != m_Options.control || o.law != m_Options.law || scaleEdited;
   if (changed) {
     if (!scaleEdited) {
       o.scaleX = m_DynamicResolution.GetScaleX();
@@ -1056,9 +1166,16 @@ void Sample::RenderText() {
   ImGui::Text("Back buffer %ux%u  RT %ux%u  viewport %ux%u", m_BackBufferWidth, m_BackBufferHeight,
               m_DynamicResolution.GetDynamicBufferWidth(), m_DynamicResolution.GetDynamicBufferHeight(),
               m_DynamicResolution.GetViewportWidth(), m_DynamicResolution.GetViewportHeight());
-  ImGui::Text("Filter %s  control %s  camera %s", FilterName(m_Options.filter),
-              ControlModeName(m_Options.control), CameraName(m_Camera).c_str());
-  if (!m_LastMessage.empty()) ImGui::TextUnformatted(m_LastMessage.c_str());
+  ImGui::Text("Filter %s  control %s (%s)  camera %s", FilterName(m_Options.filter),
+              ControlModeName(m_Options.control), ControlLawOption(m_Options.law), CameraName(m_Camera).c_str());
+  if (!m_LastMessage.empty()) {
+    // Compiler output can be long: the first lines here, all of it on stderr.
+    std::string shown;
+    std::istringstream lines(m_LastMessage);
+    std::string line;
+    for (int n = 0; n < 6 && std::getline(lines, line); ++n) shown += (n ? "\n" : "") + line.substr(0, 160);
+    ImGui::TextUnformatted(shown.c_str());
+  }
   ImGui::Text("F1 help");
   ImGui::End();
 }
@@ -1131,6 +1248,8 @@ bool Sample::RenderFrame() {
   r.viewportH = m_Options.dynamicResolution ? m_DynamicResolution.GetViewportHeight() : m_BackBufferHeight;
   r.cpuFrameMs = elapsed * 1000.0;
   r.gpuFrame = m_TimerFrame.LastMs();
+  r.gpuFrameNew = m_TimerFrame.NewResults() > 0;
+  r.gpuFrameDelay = m_TimerFrame.LastDelayFrames();
   r.gpuClear = m_TimerClear.LastMs();
   r.gpuScene = m_TimerScene.LastMs();
   r.gpuPostP = m_TimerPostP.LastMs();

@@ -51,6 +51,10 @@ struct FrameRecord {
   double cpuFrameMs = 0;
   // Latest GPU results (ms) available at this frame (they lag a few frames).
   double gpuFrame = 0, gpuClear = 0, gpuScene = 0, gpuPostP = 0, gpuScale = 0;
+  // True when a new inner-frame GPU result arrived this frame (else gpuFrame
+  // repeats an older one), and that result's delay in frames (GPUTimer::LastDelay).
+  bool gpuFrameNew = false;
+  uint32_t gpuFrameDelay = 0;
   bool rendered = true;  // false while minimised
 };
 
@@ -109,6 +113,17 @@ class Sample {
   bool SaveScreenshot(const std::string& path, bool noGui, std::string* error) const;
   bool WriteReport(const std::string& path, std::string* error) const;
   void ToggleFullscreen();
+  // F4: recompiles the post-processing shaders from their HLSL sources
+  // (ShaderSourceDir(); the compiled .spv files when the sources are absent),
+  // reloads the GUI and zoom-box shaders and the scene's. On any error the
+  // old shaders stay and the message is shown (GUI text and stderr).
+  bool ReloadShaders();
+  const std::string& LastMessage() const { return m_LastMessage; }
+  // $DRR_SHADER_SOURCE_DIR when set, else the build's Shaders folder.
+  static std::string ShaderSourceDir();
+  // Control law in use and the latency (in GPU results) it was told.
+  ControlLaw Law() const { return m_Options.law; }
+  int LawLatencyFrames() const { return m_LawLatency; }
 
   // Input (also called by the GLFW callbacks).
   void OnKey(int key, int action, int mods);
@@ -126,13 +141,14 @@ class Sample {
   void RenderText();
 
   bool CreateDeviceAndSwapChain(std::string* error);
-  bool LoadShaders(std::string* error);
+  // fromSources: compile Shaders/*.hlsl at run time (F4); else load the .spv files.
+  bool LoadShaders(std::string* error, bool fromSources = false);
   bool CreateStates(std::string* error);
   bool CreateBackBufferViews();
   void ReleaseBackBufferViews();
   bool ResizeSwapChain(uint32_t w, uint32_t h);
-  void ReloadShaders();
   bool TAAActive() const;
+  std::unique_ptr<ResolutionController> MakeLaw() const;
   int SceneCameraCount() const;
   int CameraCount() const;  // scene cameras + First Person
   std::string CameraName(int i) const;
@@ -212,6 +228,10 @@ class Sample {
   AveragedGPUTimer m_TimerFrame{10}, m_TimerClear{10}, m_TimerScene{10}, m_TimerPostP{10},
       m_TimerScale{10};
   std::unique_ptr<ResolutionController> m_Controller;
+  // Stale GPU results after a scale change (largest timer delay seen - 1),
+  // told to the robust law as RobustController::Params::latencyFrames.
+  int m_LawLatency = 0;
+  size_t m_PostShadersCompiled = 0;  // by the last LoadShaders (0: .spv files)
   double m_RefreshHz = 60.0;
   std::chrono::steady_clock::time_point m_StartTime, m_LastFrameTime;
   std::array<double, 10> m_DeltaHistory{};  // SmoothedTimer: last 10 frame deltas

@@ -24,12 +24,16 @@ void GPUTimer::Release() {
   m_Next = m_Oldest = m_Outstanding = 0;
   m_Active = false;
   m_Ready = false;
+  m_StartCalls = 0;
+  m_LastDelay = 0;
 }
 
 void GPUTimer::Start(d3dl::DeviceContext* ctx) {
   m_Active = false;
+  const uint64_t call = m_StartCalls++;
   if (!m_Ready || m_Outstanding == kPipelineDepth) return;  // all in flight: skip
   QuerySet& s = m_Sets[m_Next];
+  s.startCall = call;
   ctx->Begin(s.disjoint.Get());
   ctx->End(s.begin.Get());
   m_Active = true;
@@ -60,6 +64,7 @@ bool GPUTimer::Poll(d3dl::DeviceContext* ctx, double* ms) {
     --m_Outstanding;
     if (!dj.Disjoint && dj.Frequency > 0 && t1 >= t0) {
       *ms = double(t1 - t0) * 1000.0 / double(dj.Frequency);
+      m_LastDelay = uint32_t(m_StartCalls - s.startCall);
       got = true;
       break;  // one result per call, so the average sees every one
     }
@@ -70,9 +75,11 @@ bool GPUTimer::Poll(d3dl::DeviceContext* ctx, double* ms) {
 bool AveragedGPUTimer::Update(d3dl::DeviceContext* ctx) {
   double ms = 0.0;
   bool newAverage = false;
+  m_NewResults = 0;
   while (m_Timer.Poll(ctx, &ms)) {
     m_Last = ms;
     ++m_Results;
+    ++m_NewResults;
     m_Sum += ms;
     if (++m_Count >= m_AverageCount) {
       m_Average = m_Sum / m_Count;

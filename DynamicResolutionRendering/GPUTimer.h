@@ -24,10 +24,17 @@ class GPUTimer {
   // Disjoint intervals are dropped. Call until it returns false.
   bool Poll(d3dl::DeviceContext* ctx, double* ms);
   uint32_t Outstanding() const { return m_Outstanding; }
+  // Delay of the result the last successful Poll returned, counted in Start
+  // calls (= frames, Start being called once per frame): the number of Start
+  // calls made between the Start of that measurement and the Poll, itself
+  // included. Polled at the top of frame F, a result of frame F - d has delay d
+  // (d >= 1); 0 before the first result.
+  uint32_t LastDelay() const { return m_LastDelay; }
 
  private:
   struct QuerySet {
     d3dl::ComPtr<d3dl::Query> disjoint, begin, end;
+    uint64_t startCall = 0;  // value of m_StartCalls when it was started
   };
   std::array<QuerySet, kPipelineDepth> m_Sets{};
   uint32_t m_Next = 0;         // set used by the next Start
@@ -35,6 +42,8 @@ class GPUTimer {
   uint32_t m_Outstanding = 0;  // sets in flight
   bool m_Active = false;       // between Start and Stop with a set
   bool m_Ready = false;
+  uint64_t m_StartCalls = 0;  // every Start call, skipped ones included
+  uint32_t m_LastDelay = 0;
 };
 
 class AveragedGPUTimer {
@@ -48,6 +57,10 @@ class AveragedGPUTimer {
   bool Update(d3dl::DeviceContext* ctx);
   double AverageMs() const { return m_Average; }
   double LastMs() const { return m_Last; }       // latest single result
+  // Results that arrived in the last Update (0: LastMs is an older one).
+  uint32_t NewResults() const { return m_NewResults; }
+  // Frames between the Start of LastMs's measurement and the Update that read it.
+  uint32_t LastDelayFrames() const { return m_Timer.LastDelay(); }
   bool HasResult() const { return m_HasResult; }
   uint64_t ResultCount() const { return m_Results; }
 
@@ -60,6 +73,7 @@ class AveragedGPUTimer {
   double m_Last = 0.0;
   bool m_HasResult = false;
   uint64_t m_Results = 0;
+  uint32_t m_NewResults = 0;
 };
 
 }  // namespace drr

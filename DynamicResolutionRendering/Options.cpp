@@ -16,6 +16,8 @@ constexpr const char* kFilterOptions[] = {"none",  "point",        "bilinear",
                                           "taa",   "taa-noise-offset", "taa-basic"};
 constexpr const char* kControlNames[] = {"Manual", "VSync/2", "VSync"};
 constexpr const char* kControlOptions[] = {"manual", "half-vsync", "vsync"};
+constexpr const char* kLawNames[] = {"Article (original)", "Robust", "UE-style"};
+constexpr const char* kLawOptions[] = {"article", "robust", "ue-style"};
 
 std::string JsonEscape(const std::string& s) {
   std::string o;
@@ -42,6 +44,8 @@ bool IsTAA(Filter f) {
 }
 const char* ControlModeName(ControlMode m) { return kControlNames[static_cast<int>(m)]; }
 const char* ControlModeOption(ControlMode m) { return kControlOptions[static_cast<int>(m)]; }
+const char* ControlLawName(ControlLaw l) { return kLawNames[static_cast<int>(l)]; }
+const char* ControlLawOption(ControlLaw l) { return kLawOptions[static_cast<int>(l)]; }
 
 std::string Usage() {
   std::ostringstream u;
@@ -62,6 +66,9 @@ std::string Usage() {
        "  --no-dynamic-resolution  render at back-buffer size (full-resolution path)\n"
        "  --supersampling          allow super sampling (2x render targets)\n"
        "  --control MODE           manual|half-vsync|vsync (default vsync)\n"
+       "  --law LAW                resolution control law of the vsync modes: article|robust|ue-style\n"
+       "                           (default article: the original's S' = S (1 + k (1 - t/T)) on the\n"
+       "                           10-frame GPU average; robust and ue-style get per-frame GPU times)\n"
        "  --refresh HZ             controller target rate (default: the monitor's, 60 headless; 1..1000)\n"
        "  --no-vsync               present without waiting for vertical sync\n"
        "  --no-motion-blur         motion blur off (default on)\n"
@@ -208,6 +215,19 @@ ParseStatus ParseCommandLine(const std::vector<std::string>& args, Options* o,
         if (!found) err = "option --control: unknown mode '" + v + "' (allowed: manual, half-vsync, vsync)";
         r.controlGiven = true;
       }
+    } else if (name == "--law") {
+      std::string v;
+      if (!next(&v)) {
+        err = "option --law needs a value (allowed: article, robust, ue-style)";
+      } else {
+        bool found = false;
+        for (int l = 0; l < static_cast<int>(ControlLaw::Count); ++l)
+          if (v == kLawOptions[l]) {
+            r.law = static_cast<ControlLaw>(l);
+            found = true;
+          }
+        if (!found) err = "option --law: unknown law '" + v + "' (allowed: article, robust, ue-style)";
+      }
     } else if (name == "--refresh") {
       err = number(1, 1000, &r.refresh);
     } else if (name == "--no-vsync") {
@@ -282,7 +302,8 @@ std::string OptionsToJson(const Options& o) {
     << ", \"scale_y\": " << o.scaleY
     << ", \"dynamic_resolution\": " << (o.dynamicResolution ? "true" : "false")
     << ", \"supersampling\": " << (o.superSampling ? "true" : "false") << ", \"control\": \""
-    << ControlModeOption(o.control) << "\", \"refresh\": " << o.refresh
+    << ControlModeOption(o.control) << "\", \"law\": \"" << ControlLawOption(o.law)
+    << "\", \"refresh\": " << o.refresh
     << ", \"vsync\": " << (o.vsync ? "true" : "false")
     << ", \"motion_blur\": " << (o.motionBlur ? "true" : "false")
     << ", \"symmetric_taa\": " << (o.symmetricTAA ? "true" : "false")

@@ -29,6 +29,12 @@ enum class ControlMode : int { Manual = 0, HalfVSync, VSync, Count };
 const char* ControlModeName(ControlMode m);    // "VSync/2"
 const char* ControlModeOption(ControlMode m);  // "half-vsync"
 
+// Resolution control law used in the VSync and VSync/2 modes (see
+// ResolutionController.h and Docs/Controller.md). Article is the original's.
+enum class ControlLaw : int { Article = 0, Robust, UEStyle, Count };
+const char* ControlLawName(ControlLaw l);    // GUI name ("Article (original)")
+const char* ControlLawOption(ControlLaw l);  // command-line value ("article")
+
 struct Options {
   bool headless = false;
   uint32_t width = 1280, height = 720;
@@ -43,6 +49,7 @@ struct Options {
   bool superSampling = false;
   ControlMode control = ControlMode::VSync;
   bool controlGiven = false;
+  ControlLaw law = ControlLaw::Article;  // --law
   double refresh = 0.0;  // 0: the monitor's rate (60 headless)
   bool motionBlur = true;
   bool symmetricTAA = false;

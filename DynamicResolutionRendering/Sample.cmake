@@ -28,7 +28,8 @@ function(drr_define_sample_targets)
                         OpenImageIO::OpenImageIO PkgConfig::IMGUI)
   target_compile_definitions(drr_sample PRIVATE
     DRR_DEFAULT_SHADER_DIR="${DRR_SHADER_OUT}"
-    DRR_DEFAULT_SCENE="${DRR_ARENA_DIR}/scene_description.txt")
+    DRR_DEFAULT_SCENE="${DRR_ARENA_DIR}/scene_description.txt"
+    DRR_SHADER_SOURCE_DIR="${CMAKE_SOURCE_DIR}/Shaders")
   set(deps drr_post_shaders)
   foreach(t drr_arena drr_scene_shaders)
     if(TARGET ${t})

@@ -175,3 +175,30 @@ TEST(TexGenUtils, NoiseIsFixedAndUniform) {
   EXPECT_NEAR(mean, 127.5, 2.0);
   EXPECT_NE(NoiseTexture::Generate(128, 1), a);
 }
+
+TEST(SampleOptions, ControlLaw) {
+  Options o;
+  std::string m;
+  ASSERT_EQ(Parse({}, &o, &m), ParseStatus::Ok);
+  EXPECT_EQ(o.law, ControlLaw::Article);  // the original's law by default
+  const std::pair<const char*, ControlLaw> laws[] = {
+      {"article", ControlLaw::Article}, {"robust", ControlLaw::Robust}, {"ue-style", ControlLaw::UEStyle}};
+  for (const auto& [name, law] : laws) {
+    ASSERT_EQ(Parse({"--law", name}, &o, &m), ParseStatus::Ok) << m;
+    EXPECT_EQ(o.law, law);
+    EXPECT_STREQ(ControlLawOption(law), name);
+    ASSERT_EQ(Parse({std::string("--law=") + name}, &o, &m), ParseStatus::Ok) << m;
+    EXPECT_EQ(o.law, law);
+    EXPECT_NE(OptionsToJson(o).find(std::string("\"law\": \"") + name + "\""), std::string::npos);
+  }
+  for (const char* bad : {"ue", "Robust", "", "pid"}) {
+    EXPECT_EQ(Parse({"--law", bad}, &o, &m), ParseStatus::Error) << bad;
+    EXPECT_NE(m.find("allowed: article, robust, ue-style"), std::string::npos) << m;
+  }
+  EXPECT_EQ(Parse({"--law"}, &o, &m), ParseStatus::Error);
+  // --help documents the option, its values and its default.
+  ASSERT_EQ(Parse({"--help"}, &o, &m), ParseStatus::Help);
+  EXPECT_NE(m.find("--law LAW"), std::string::npos);
+  EXPECT_NE(m.find("article|robust|ue-style"), std::string::npos);
+  EXPECT_NE(m.find("default article"), std::string::npos);
+}
