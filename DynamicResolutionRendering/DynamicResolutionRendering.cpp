@@ -80,8 +80,8 @@ bool PostShaderCode(const PostShader& ps, bool fromSources, const std::string& s
     if (ps.define) d.Defines = {{ps.define, "1"}};
     std::string errs;
     if (d3dl::FAILED(d3dl::CompileHLSL(d, code, &errs))) {
-      *error = src + ": " + ps.entry + (ps.define ? std::string(" (") + ps.define + ")" : std::string()) +
-               ": " + errs;
+      *error = std::string(ps.source) + " (" + ps.entry + (ps.define ? std::string(", ") + ps.define : "") +
+               ") did not compile:\n" + errs;
       return false;
     }
     *compiled = true;
@@ -131,6 +131,15 @@ std::string JsonString(const std::string& s) {
     o += c;
   }
   return o + "\"";
+}
+
+// A JSON number; JSON has no NaN/Inf, so those become null.
+std::string JsonNumber(double v) {
+  if (!std::isfinite(v)) return "null";
+  std::ostringstream o;
+  o.precision(9);
+  o << v;
+  return o.str();
 }
 
 void LogToStderr(d3dl::LogLevel level, const char* message, void*) {
@@ -1344,17 +1353,23 @@ bool Sample::WriteReport(const std::string& path, std::string* error) const {
     *error = "cannot write " + path;
     return false;
   }
-  auto avg = [&](double FrameRecord::*m) {
+  // GPU averages over the frames that received a new result (the records
+  // repeat the last result in between); the CPU average over rendered frames.
+  auto avg = [&](double FrameRecord::*m, bool gpu) {
     double s = 0;
     int n = 0;
     for (const FrameRecord& r : m_Frames)
-      if (r.rendered && r.*m > 0) {
+      if (r.rendered && (!gpu || r.gpuFrameNew) && std::isfinite(r.*m) && r.*m > 0) {
         s += r.*m;
         ++n;
       }
-    return n ? s / n : 0.0;
+    return JsonNumber(n ? s / n : 0.0);
   };
   f << "{\n  \"options\": " << OptionsToJson(m_Options) << ",\n";
+  f << "  \"control\": {\"mode\": \"" << ControlModeOption(m_Options.control) << "\", \"law\": \""
+    << ControlLawOption(m_Options.law) << "\", \"refresh_hz\": " << JsonNumber(m_RefreshHz)
+    << ", \"budget_ms\": " << JsonNumber(m_Stats.vsyncMs > 0 ? m_Stats.vsyncMs : 1000.0 / m_RefreshHz)
+    << ", \"law_latency_frames\": " << m_LawLatency << "},\n";
   f << "  \"adapter\": " << JsonString(m_AdapterName) << ",\n  \"driver\": " << JsonString(m_AdapterDriver)
     << ",\n";
   f << "  \"scene\": " << JsonString(m_ScenePath) << ",\n";
@@ -1379,6 +1394,10 @@ bool Sample::WriteReport(const std::string& path, std::string* error) const {
       << "], \"format\": \"" << d3dl::FormatName(rt->format) << "\", \"bytes\": " << rt->Bytes() << "}";
     first = false;
   }
+  if (m_ZoomBox.Bytes() > 0) {  // counted in render_target_bytes too
+    f << (first ? "" : ", ") << "\"zoom_box_copy\": {\"bytes\": " << m_ZoomBox.Bytes() << "}";
+    first = false;
+  }
   f << "},\n  \"passes_run\": {";
   first = true;
   for (const auto& [name, count] : m_PassesRun) {
@@ -1389,12 +1408,12 @@ bool Sample::WriteReport(const std::string& path, std::string* error) const {
   f << "  \"validation_messages\": " << ValidationMessages() << ",\n";
   f << "  \"frames_rendered\": " << (m_FrameCount - m_MinimisedFrames) << ",\n";
   f << "  \"frames_minimised\": " << m_MinimisedFrames << ",\n";
-  f << "  \"averages_ms\": {\"cpu_frame\": " << avg(&FrameRecord::cpuFrameMs)
-    << ", \"gpu_frame\": " << avg(&FrameRecord::gpuFrame) << ", \"clear\": " << avg(&FrameRecord::gpuClear)
-    << ", \"scene\": " << avg(&FrameRecord::gpuScene) << ", \"postp\": " << avg(&FrameRecord::gpuPostP)
-    << ", \"scale\": " << avg(&FrameRecord::gpuScale) << "},\n";
-  f << "  \"final_scale\": [" << m_DynamicResolution.GetScaleX() << ", " << m_DynamicResolution.GetScaleY()
-    << "],\n";
+  f << "  \"averages_ms\": {\"cpu_frame\": " << avg(&FrameRecord::cpuFrameMs, false)
+    << ", \"gpu_frame\": " << avg(&FrameRecord::gpuFrame, true) << ", \"clear\": " << avg(&FrameRecord::gpuClear, true)
+    << ", \"scene\": " << avg(&FrameRecord::gpuScene, true) << ", \"postp\": " << avg(&FrameRecord::gpuPostP, true)
+    << ", \"scale\": " << avg(&FrameRecord::gpuScale, true) << "},\n";
+  f << "  \"final_scale\": [" << JsonNumber(m_DynamicResolution.GetScaleX()) << ", "
+    << JsonNumber(m_DynamicResolution.GetScaleY()) << "],\n";
   if (m_Scene) {
     const SceneStats st = m_Scene->Stats();
     f << "  \"scene_stats\": {\"draws_issued\": " << st.drawsIssued << ", \"draws_culled\": " << st.drawsCulled
@@ -1404,10 +1423,12 @@ bool Sample::WriteReport(const std::string& path, std::string* error) const {
   for (size_t i = 0; i < m_Frames.size(); ++i) {
     const FrameRecord& r = m_Frames[i];
     f << "    {\"frame\": " << r.frame << ", \"rendered\": " << (r.rendered ? "true" : "false")
-      << ", \"scale\": [" << r.scaleX << ", " << r.scaleY << "], \"viewport\": [" << r.viewportW << ", "
-      << r.viewportH << "], \"cpu_ms\": " << r.cpuFrameMs << ", \"gpu_ms\": {\"frame\": " << r.gpuFrame
-      << ", \"clear\": " << r.gpuClear << ", \"scene\": " << r.gpuScene << ", \"postp\": " << r.gpuPostP
-      << ", \"scale\": " << r.gpuScale << "}}" << (i + 1 < m_Frames.size() ? "," : "") << "\n";
+      << ", \"scale\": [" << JsonNumber(r.scaleX) << ", " << JsonNumber(r.scaleY) << "], \"viewport\": ["
+      << r.viewportW << ", " << r.viewportH << "], \"cpu_ms\": " << JsonNumber(r.cpuFrameMs)
+      << ", \"gpu_new\": " << (r.gpuFrameNew ? "true" : "false") << ", \"gpu_delay_frames\": " << r.gpuFrameDelay
+      << ", \"gpu_ms\": {\"frame\": " << JsonNumber(r.gpuFrame) << ", \"clear\": " << JsonNumber(r.gpuClear)
+      << ", \"scene\": " << JsonNumber(r.gpuScene) << ", \"postp\": " << JsonNumber(r.gpuPostP)
+      << ", \"scale\": " << JsonNumber(r.gpuScale) << "}}" << (i + 1 < m_Frames.size() ? "," : "") << "\n";
   }
   f << "  ]\n}\n";
   return bool(f);
