@@ -25,7 +25,7 @@ function(drr_define_sample_targets)
     ${DRR_SAMPLE_DIR}/GuiRenderer.cpp)
   target_include_directories(drr_sample PUBLIC ${DRR_SAMPLE_DIR})
   target_link_libraries(drr_sample PUBLIC drr_options drr_core drr_scene D3DLikeRHI glfw glm::glm
-                        OpenImageIO::OpenImageIO PkgConfig::IMGUI)
+                        drr_imageio PkgConfig::IMGUI)
   target_compile_definitions(drr_sample PRIVATE
     DRR_DEFAULT_SHADER_DIR="${DRR_SHADER_OUT}"
     DRR_DEFAULT_SCENE="${DRR_ARENA_DIR}/scene_description.txt"

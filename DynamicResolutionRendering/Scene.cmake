@@ -25,7 +25,7 @@ add_library(drr_scene_cpu STATIC
   ${DRR_SCENE_DIR}/TextureLoader.cpp)
 target_include_directories(drr_scene_cpu PUBLIC ${CMAKE_CURRENT_LIST_DIR}
   ${CMAKE_SOURCE_DIR}/D3DLikeRHI/include)  # header-only use of d3dl/Types.h (DXGI_FORMAT)
-target_link_libraries(drr_scene_cpu PUBLIC glm::glm assimp::assimp OpenImageIO::OpenImageIO)
+target_link_libraries(drr_scene_cpu PUBLIC glm::glm assimp::assimp drr_imageio)
 
 add_executable(drr_model_probe ${DRR_SCENE_DIR}/ModelProbe.cpp)
 target_link_libraries(drr_model_probe PRIVATE drr_scene_cpu)

@@ -1,10 +1,10 @@
 #include "Utility.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+
+#include "imageio/ImageFile.h"
 
 namespace drr::Utility {
 
@@ -67,55 +67,32 @@ bool ReadFile(const std::string& path, std::vector<uint32_t>* words, std::string
 
 bool SaveImageRGBA8(const std::string& path, uint32_t w, uint32_t h, const uint8_t* rgba,
                     std::string* error) {
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) {
-    if (error) *error = "cannot write " + path + ": " + OIIO::geterror();
-    return false;
-  }
   std::string ext = path.substr(path.find_last_of('.') + 1);
   std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-  const bool isFloat = ext == "exr" || ext == "hdr";
-  OIIO::ImageSpec spec(int(w), int(h), 4, isFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-  if (!out->open(path, spec)) {
-    if (error) *error = "cannot write " + path + ": " + out->geterror();
-    return false;
+  if (ext != "exr" && ext != "hdr") return WriteImageFile(path, w, h, 4, rgba, error);
+  // The back buffer holds sRGB-encoded values; EXR/HDR store linear light.
+  std::vector<float> f(size_t(w) * h * 4);
+  for (size_t i = 0; i < f.size(); ++i) {
+    const float c = rgba[i] / 255.0f;
+    f[i] = (i % 4 == 3) ? c : (c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f));
   }
-  bool ok;
-  if (isFloat) {
-    // The back buffer holds sRGB-encoded values; EXR stores linear light.
-    std::vector<float> f(size_t(w) * h * 4);
-    for (size_t i = 0; i < f.size(); ++i) {
-      const float c = rgba[i] / 255.0f;
-      f[i] = (i % 4 == 3) ? c
-                          : (c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f));
-    }
-    ok = out->write_image(OIIO::TypeDesc::FLOAT, f.data());
-  } else {
-    ok = out->write_image(OIIO::TypeDesc::UINT8, rgba);
-  }
-  if (!ok && error) *error = "cannot write " + path + ": " + out->geterror();
-  out->close();
-  return ok;
+  return WriteImageFileFloat(path, w, h, 4, f.data(), error);
 }
 
 bool LoadImageRGBA8(const std::string& path, uint32_t* w, uint32_t* h, std::vector<uint8_t>* rgba,
                     std::string* error) {
-  auto in = OIIO::ImageInput::open(path);
-  if (!in) {
-    if (error) *error = "cannot read " + path + ": " + OIIO::geterror();
+  ImageFileData img;
+  if (!ReadImageFile(path, &img, error)) return false;
+  if (img.isFloat) {
+    if (error) *error = path + ": expected an 8-bit image";
     return false;
   }
-  const OIIO::ImageSpec& spec = in->spec();
-  *w = uint32_t(spec.width);
-  *h = uint32_t(spec.height);
+  *w = img.width;
+  *h = img.height;
   rgba->assign(size_t(*w) * *h * 4, 255);
-  std::vector<uint8_t> tmp(size_t(*w) * *h * spec.nchannels);
-  bool ok = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, tmp.data());
-  for (size_t p = 0; ok && p < size_t(*w) * *h; ++p)
-    for (int c = 0; c < std::min(4, spec.nchannels); ++c) (*rgba)[p * 4 + c] = tmp[p * spec.nchannels + c];
-  in->close();
-  if (!ok && error) *error = "cannot read " + path;
-  return ok;
+  for (size_t p = 0; p < size_t(*w) * *h; ++p)
+    for (uint32_t c = 0; c < img.channels; ++c) (*rgba)[p * 4 + c] = img.u8[p * img.channels + c];
+  return true;
 }
 
 d3dl::HRESULT LoadVertexShader(d3dl::Device* device, const std::string& dir, const std::string& name,

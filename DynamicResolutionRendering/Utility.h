@@ -30,7 +30,7 @@ struct RenderTarget {
 
 bool ReadFile(const std::string& path, std::vector<uint32_t>* words, std::string* error);
 
-// Writes 8-bit RGBA (or 4-float RGBA for .exr) through OpenImageIO.
+// Writes 8-bit RGBA (or linear float RGBA for .exr/.hdr) through ImageFile.h.
 bool SaveImageRGBA8(const std::string& path, uint32_t w, uint32_t h, const uint8_t* rgba,
                     std::string* error);
 bool LoadImageRGBA8(const std::string& path, uint32_t* w, uint32_t* h, std::vector<uint8_t>* rgba,

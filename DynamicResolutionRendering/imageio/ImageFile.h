@@ -19,15 +19,20 @@ struct ImageFileData {
   std::vector<float> f32;
 };
 
+// Largest width or height accepted, checked from the header before any
+// pixel is decoded (a corrupt header must not allocate gigabytes).
+inline constexpr uint32_t kMaxImageDimension = 16384;
+
 // Reads a whole image (first subimage, mip 0). 8-bit data stays 8-bit;
 // high-dynamic-range sources (EXR, HDR, 16/32-bit) come back as float.
 // On failure returns false and names the file and the reason.
-bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* error);
+bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* error,
+                   uint32_t maxDimension = kMaxImageDimension);
 
 // Same, from an encoded file held in memory (textures embedded in a model);
 // name is used in messages only.
 bool ReadImageMemory(const void* data, size_t size, const std::string& name, ImageFileData* image,
-                     std::string* error);
+                     std::string* error, uint32_t maxDimension = kMaxImageDimension);
 
 // Writes 8-bit pixels (rows tightly packed unless rowPitch is given); the
 // format follows the extension (.png, .jpg, .tga, .bmp; .exr with OpenImageIO).

@@ -9,13 +9,14 @@ namespace drr {
 namespace {
 
 bool ReadFrom(OIIO::ImageInput* in, const std::string& name, ImageFileData* image,
-              std::string* error) {
+              std::string* error, uint32_t maxDimension) {
   const OIIO::ImageSpec& spec = in->spec();
-  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.width > 32768 ||
-      spec.height > 32768) {
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1 ||
+      uint32_t(spec.width) > maxDimension || uint32_t(spec.height) > maxDimension) {
     if (error) {
-      *error = name + ": unsupported image size " + std::to_string(spec.width) + "x" +
-               std::to_string(spec.height) + "x" + std::to_string(spec.nchannels);
+      *error = name + ": image too large or empty: " + std::to_string(spec.width) + "x" +
+               std::to_string(spec.height) + "x" + std::to_string(spec.nchannels) +
+               " (at most " + std::to_string(maxDimension) + " per side, 2-D only)";
     }
     return false;
   }
@@ -49,18 +50,19 @@ OIIO::ImageSpec ReadConfig() {
 
 }  // namespace
 
-bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* error) {
+bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* error,
+                   uint32_t maxDimension) {
   const OIIO::ImageSpec config = ReadConfig();
   auto in = OIIO::ImageInput::open(path, &config);
   if (!in) {
     if (error) *error = path + ": " + OIIO::geterror();
     return false;
   }
-  return ReadFrom(in.get(), path, image, error);
+  return ReadFrom(in.get(), path, image, error, maxDimension);
 }
 
 bool ReadImageMemory(const void* data, size_t size, const std::string& name, ImageFileData* image,
-                     std::string* error) {
+                     std::string* error, uint32_t maxDimension) {
   OIIO::Filesystem::IOMemReader reader(const_cast<void*>(data), size);
   OIIO::ImageSpec config = ReadConfig();
   // The format is sniffed from the bytes; the name only needs an extension OIIO knows.
@@ -70,7 +72,7 @@ bool ReadImageMemory(const void* data, size_t size, const std::string& name, Ima
     if (error) *error = name + ": " + OIIO::geterror();
     return false;
   }
-  return ReadFrom(in.get(), name, image, error);
+  return ReadFrom(in.get(), name, image, error, maxDimension);
 }
 
 namespace {

@@ -17,15 +17,18 @@ namespace {
 
 // Decodes through stb's memory API, so files and embedded images share it.
 bool Decode(const uint8_t* bytes, size_t size, const std::string& name, ImageFileData* image,
-            std::string* error) {
+            std::string* error, uint32_t maxDimension) {
   int w = 0, h = 0, n = 0;
   const int len = int(std::min<size_t>(size, 0x7fffffff));
   if (!stbi_info_from_memory(bytes, len, &w, &h, &n)) {
     if (error) *error = name + ": " + (stbi_failure_reason() ? stbi_failure_reason() : "unreadable");
     return false;
   }
-  if (w <= 0 || h <= 0 || w > 32768 || h > 32768) {
-    if (error) *error = name + ": unsupported image size";
+  if (w <= 0 || h <= 0 || uint32_t(w) > maxDimension || uint32_t(h) > maxDimension) {
+    if (error) {
+      *error = name + ": image too large or empty: " + std::to_string(w) + "x" + std::to_string(h) +
+               " (at most " + std::to_string(maxDimension) + " per side)";
+    }
     return false;
   }
   image->width = uint32_t(w);
@@ -55,19 +58,20 @@ bool Decode(const uint8_t* bytes, size_t size, const std::string& name, ImageFil
 
 }  // namespace
 
-bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* error) {
+bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* error,
+                   uint32_t maxDimension) {
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     if (error) *error = path + ": cannot open the file";
     return false;
   }
   const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return Decode(bytes.data(), bytes.size(), path, image, error);
+  return Decode(bytes.data(), bytes.size(), path, image, error, maxDimension);
 }
 
 bool ReadImageMemory(const void* data, size_t size, const std::string& name, ImageFileData* image,
-                     std::string* error) {
-  return Decode(static_cast<const uint8_t*>(data), size, name, image, error);
+                     std::string* error, uint32_t maxDimension) {
+  return Decode(static_cast<const uint8_t*>(data), size, name, image, error, maxDimension);
 }
 
 bool WriteImageFile(const std::string& path, uint32_t width, uint32_t height, uint32_t channels,

@@ -1,5 +1,5 @@
 // drr_model_probe: loads a model (or a scene description) on the CPU exactly as
-// the scene does (Assimp + textures through OpenImageIO) and prints counts.
+// the scene does (Assimp + textures through ImageFile.h) and prints counts.
 // Exit 0 on success, 1 on a clean failure (the message says why), 2 on bad usage.
 #include <chrono>
 #include <cstdio>

@@ -5,14 +5,10 @@
 #include <cmath>
 #include <filesystem>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
+#include "imageio/ImageFile.h"
 
 namespace drr {
 namespace fs = std::filesystem;
-using OIIO::ImageInput;
-using OIIO::ImageSpec;
-using OIIO::TypeDesc;
 
 const char* TextureKindName(TextureKind k) {
   switch (k) {
@@ -111,29 +107,18 @@ bool ValidateSize(uint64_t w, uint64_t h, int channels, const std::string& name,
   return true;
 }
 
-// Reads the first subimage of an opened input into RGBA8.
-bool ReadImage(ImageInput* in, const std::string& name, TextureKind kind, const TextureLoadOptions& opts,
-               TextureData* out, std::string* error) {
-  const ImageSpec& spec = in->spec();
-  if (!ValidateSize(uint64_t(std::max(spec.width, 0)), uint64_t(std::max(spec.height, 0)), spec.nchannels, name, opts,
-                    error))
-    return false;
-  if (spec.depth > 1) {
-    *error = name + ": unsupported texture format (volume texture, depth " + std::to_string(spec.depth) + ")";
-    return false;
-  }
-  const uint32_t w = spec.width, h = spec.height;
-  const int nc = spec.nchannels;
-  const bool isFloat = spec.format.basetype == TypeDesc::FLOAT || spec.format.basetype == TypeDesc::HALF ||
-                       spec.format.basetype == TypeDesc::DOUBLE;
+// Converts a decoded image (ImageFile.h: straight alpha, 1..4 channels, 8-bit
+// or float) into RGBA8 with the texture kind's conventions.
+bool ConvertImage(const ImageFileData& img, const std::string& name, TextureKind kind,
+                  const TextureLoadOptions& opts, TextureData* out, std::string* error) {
+  if (!ValidateSize(img.width, img.height, int(img.channels), name, opts, error)) return false;
+  const uint32_t w = img.width, h = img.height;
+  const int nc = int(img.channels);
+  const bool isFloat = img.isFloat;
+  auto sample = [&](size_t i) { return isFloat ? img.f32[i] : img.u8[i] / 255.f; };
   std::vector<float> px(size_t(w) * h * nc);
-  if (!in->read_image(0, 0, 0, nc, TypeDesc::FLOAT, px.data())) {
-    std::string e = in->geterror();
-    *error = name + ": cannot decode texture" + (e.empty() ? std::string() : " (" + e + ")");
-    return false;
-  }
-  // Channel mapping: 1 = grey, 2 = grey + alpha, 3 = RGB, >= 4 = RGBA (extra channels ignored).
-  int alphaIdx = spec.alpha_channel >= 0 && spec.alpha_channel < nc ? spec.alpha_channel : (nc == 2 ? 1 : (nc >= 4 ? 3 : -1));
+  for (size_t i = 0; i < px.size(); ++i) px[i] = sample(i);
+  const int alphaIdx = nc == 2 ? 1 : (nc >= 4 ? 3 : -1);
   TextureMip m;
   m.width = w;
   m.height = h;
@@ -148,7 +133,7 @@ bool ReadImage(ImageInput* in, const std::string& name, TextureKind kind, const 
     uint8_t* d = &m.rgba[i * 4];
     for (int c = 0; c < 3; ++c) {
       float v = std::isfinite(rgb[c]) ? rgb[c] : 0.f;
-      // OIIO converts 8-bit sRGB files as stored values; float (HDR/EXR) data is linear.
+      // 8-bit files keep their stored (sRGB) values; float (HDR/EXR) data is linear.
       d[c] = (isFloat && kind == TextureKind::Color) ? LinearToSrgb8(v) : ToByte(v);
     }
     d[3] = ToByte(std::isfinite(a) ? a : 1.f);
@@ -199,15 +184,13 @@ bool LoadTextureFile(const std::string& path, TextureKind kind, const TextureLoa
     *error = path + ": texture has zero size (empty file)";
     return false;
   }
-  auto in = ImageInput::open(path);
-  if (!in) {
-    std::string e = OIIO::geterror();
-    *error = path + ": unsupported texture format or unreadable image" + (e.empty() ? std::string() : " (" + e + ")");
+  ImageFileData img;
+  std::string reason;
+  if (!ReadImageFile(path, &img, &reason, opts.maxDimension)) {
+    *error = path + ": unsupported texture format or unreadable image (" + reason + ")";
     return false;
   }
-  bool ok = ReadImage(in.get(), path, kind, opts, out, error);
-  in->close();
-  return ok;
+  return ConvertImage(img, path, kind, opts, out, error);
 }
 
 bool LoadTextureMemory(const void* data, size_t size, const std::string& formatHint, const std::string& name,
@@ -219,20 +202,13 @@ bool LoadTextureMemory(const void* data, size_t size, const std::string& formatH
   std::string hint = formatHint.empty() ? "png" : formatHint;
   for (auto& c : hint) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (hint == "jpeg") hint = "jpg";
-  OIIO::Filesystem::IOMemReader reader(const_cast<void*>(data), size);
-  ImageSpec config;
-  void* proxy = &reader;
-  config.attribute("oiio:ioproxy", TypeDesc::PTR, &proxy);
-  std::string fake = "embedded." + hint;
-  auto in = ImageInput::open(fake, &config);
-  if (!in) {
-    std::string e = OIIO::geterror();
-    *error = name + ": unsupported embedded texture format '" + hint + "'" + (e.empty() ? std::string() : " (" + e + ")");
+  ImageFileData img;
+  std::string reason;
+  if (!ReadImageMemory(data, size, "embedded." + hint, &img, &reason, opts.maxDimension)) {
+    *error = name + ": unsupported embedded texture format '" + hint + "' (" + reason + ")";
     return false;
   }
-  bool ok = ReadImage(in.get(), name, kind, opts, out, error);
-  in->close();
-  return ok;
+  return ConvertImage(img, name, kind, opts, out, error);
 }
 
 bool MakeTextureRGBA8(const uint8_t* rgba, uint32_t width, uint32_t height, const std::string& name, TextureKind kind,

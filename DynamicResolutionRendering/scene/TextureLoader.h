@@ -1,4 +1,4 @@
-// Texture files through OpenImageIO (PNG, JPG, TGA, DDS, EXR, HDR, BMP, TIFF...)
+// Texture files through ImageFile.h (OpenImageIO: PNG, JPG, TGA, DDS, EXR, HDR, BMP, TIFF...;
 // into RGBA8 with a full, CPU box-filtered mip chain. Colour data (diffuse) is
 // R8G8B8A8_UNORM_SRGB and filtered in linear light; normal and specular maps
 // are R8G8B8A8_UNORM (normals are renormalised per mip).
