@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <thread>
 #include <unistd.h>
 
 #include "DynamicResolutionRendering.h"
@@ -23,15 +24,30 @@ const char* kBenchUsage =
     "error (PSNR, SSIM, max error) against a 4x4 super-sampled reference, GPU time\n"
     "per pass (median and quartiles) and wall time. Writes results.csv,\n"
     "results.json, summary.md and plots (PNG) into DIR.\n"
+    "Also measured: a 'blit-floor' row per view and scale (a linear vkCmdBlitImage of\n"
+    "the viewport region to a back-buffer-sized target: the physical floor of the\n"
+    "scale pass, with each filter's cost as a ratio to it and to point); claim rows\n"
+    "on the first view at 0.71 (pixel-shader vs API clear, super sampling allowed at\n"
+    "1.0, fast vs velocity-reading TAA) and motion blur at 0.71 vs native on the\n"
+    "moving cinematic camera; ghosting ('ghost <filter>': point, taa, taa-basic,\n"
+    "taa-noise-offset at 0.71, motion blur off) on the cinematic camera moving by a\n"
+    "fixed step per frame, against the reference rendered at the captured frame's\n"
+    "animation time. summary.md judges the article's claims from these numbers.\n"
     "\n"
     "  --quick              short preset for CI: one static camera, point / bilinear /\n"
-    "                       bicubic / TAA at scales 0.3 0.5 0.71 1.0, 320x180\n"
+    "                       bicubic / TAA at scales 0.3 0.5 0.71 1.0, 320x180, with\n"
+    "                       the blit-floor, claim and ghosting rows\n"
     "  --out DIR            output folder (default: bench_out)\n"
     "  --bench-warmup N     frames rendered before measuring (default 8, quick 4)\n"
     "  --bench-frames N     frames measured per configuration (default 24, quick 6)\n"
     "  --camera N           only this camera (a static view at its default time)\n"
     "  --filter F           only this filter\n"
     "  --scale S            only this scale\n"
+    "  --no-claims          skip the claim rows\n"
+    "  --no-ghosting        skip the ghosting rows\n"
+    "  --ghost-frames N     moving frames before the ghosting capture (default 24,\n"
+    "                       quick 6); the camera steps 1/30 s per frame and the\n"
+    "                       capture is at animation time 12 s\n"
     "  --width/--height, --scene, --no-motion-blur, --symmetric-taa, --no-ps-clear,\n"
     "  --validation         as for the sample (see DynamicResolutionRendering --help)\n";
 
@@ -41,6 +57,12 @@ bool ParseInt(const std::string& s, int lo, int hi, int* out) {
   if (s.empty() || !end || *end || v < lo || v > hi) return false;
   *out = int(v);
   return true;
+}
+
+std::string Num2(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.2f", v);
+  return buf;
 }
 
 double Percentile(std::vector<double> v, double p) {
@@ -105,6 +127,7 @@ Options ViewOptions(const BenchPlan& plan, const BenchView& view) {
   o.gui = false;
   o.camera = view.camera;
   o.time = view.time;
+  o.fixedDt = 0.0;  // the sweep renders one fixed animation time per view
   o.control = ControlMode::Manual;
   o.controlGiven = true;
   o.scaleGiven = true;
@@ -136,11 +159,127 @@ bool MakeReference(const BenchPlan& plan, const BenchView& view, ImageF* referen
   // Rendering must be deterministic for the comparison to mean anything:
   // the same frame rendered twice has to be identical (PSNR = infinity).
   repeatRow->view = view.name;
-  repeatRow->filter = "reference-repeat";
+  repeatRow->filter = kReferenceRepeat;
   repeatRow->scale = 1.0;
   repeatRow->error = CompareImages(Downsample(ToImage(second), plan.referenceFactor), *reference);
   return true;
 }
+
+// Fraction of pixels whose largest RGB difference exceeds `threshold`.
+double FractionAbove(const ImageF& a, const ImageF& b, float threshold) {
+  if (a.width != b.width || a.height != b.height || a.width == 0 || a.channels < 3 || b.channels < 3)
+    return std::nan("");
+  uint64_t above = 0;
+  for (uint32_t y = 0; y < a.height; ++y)
+    for (uint32_t x = 0; x < a.width; ++x) {
+      float m = 0;
+      for (uint32_t c = 0; c < 3; ++c) m = std::max(m, std::abs(a.At(x, y, c) - b.At(x, y, c)));
+      if (m > threshold) ++above;
+    }
+  return double(above) / double(uint64_t(a.width) * a.height);
+}
+
+// The physical floor of the scale pass: DeviceContext::BlitRegion (a linear
+// vkCmdBlitImage) of the viewport region of a dynamic-RT-sized texture holding
+// the captured scene colour to a back-buffer-sized target, timed with its own
+// timestamp queries on the sample's device (outside the sample's frames).
+class BlitFloor {
+ public:
+  explicit BlitFloor(d3dl::Device* device) : device_(device) {
+    device_->GetImmediateContext(ctx_.GetAddressOf());
+    d3dl::QUERY_DESC d;
+    d.Query = d3dl::QUERY_TIMESTAMP_DISJOINT;
+    ok_ = d3dl::SUCCEEDED(device_->CreateQuery(&d, disjoint_.GetAddressOf()));
+    d.Query = d3dl::QUERY_TIMESTAMP;
+    ok_ = ok_ && d3dl::SUCCEEDED(device_->CreateQuery(&d, begin_.GetAddressOf())) &&
+          d3dl::SUCCEEDED(device_->CreateQuery(&d, end_.GetAddressOf()));
+  }
+
+  // Times `frames` blits of (0,0,vpW,vpH) of `scene` (the whole dynamic RT,
+  // sRGB bytes) to a bbW x bbH target; returns the times and the last image.
+  bool Run(const ImageRGBA8& scene, uint32_t vpW, uint32_t vpH, uint32_t bbW, uint32_t bbH, int frames,
+           std::vector<double>* ms, ImageRGBA8* image, std::string* error) {
+    if (!ok_ || scene.Empty() || vpW == 0 || vpH == 0 || vpW > scene.width || vpH > scene.height) {
+      *error = "blit floor: no queries or no scene colour";
+      return false;
+    }
+    d3dl::TEXTURE2D_DESC d;
+    d.Width = scene.width;
+    d.Height = scene.height;
+    d.Format = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
+    d.BindFlags = d3dl::BIND_SHADER_RESOURCE | d3dl::BIND_RENDER_TARGET;
+    d3dl::SUBRESOURCE_DATA init{scene.pixels.data(), scene.width * 4, 0};
+    d3dl::ComPtr<d3dl::Texture2D> src, dst, staging;
+    if (d3dl::FAILED(device_->CreateTexture2D(&d, &init, src.GetAddressOf()))) {
+      *error = "blit floor: cannot create the source texture";
+      return false;
+    }
+    d.Width = bbW;
+    d.Height = bbH;
+    if (d3dl::FAILED(device_->CreateTexture2D(&d, nullptr, dst.GetAddressOf()))) {
+      *error = "blit floor: cannot create the destination texture";
+      return false;
+    }
+    const d3dl::RECT srcRect{0, 0, int32_t(vpW), int32_t(vpH)};
+    const d3dl::RECT dstRect{0, 0, int32_t(bbW), int32_t(bbH)};
+    for (int i = 0; i < frames + 1; ++i) {  // the first one warms up
+      ctx_->Begin(disjoint_.Get());
+      ctx_->End(begin_.Get());
+      ctx_->BlitRegion(dst.Get(), dstRect, src.Get(), srcRect, d3dl::FILTER_MIN_MAG_MIP_LINEAR);
+      ctx_->End(end_.Get());
+      ctx_->End(disjoint_.Get());
+      ctx_->Flush();
+      d3dl::QUERY_DATA_TIMESTAMP_DISJOINT dj{};
+      uint64_t t0 = 0, t1 = 0;
+      if (!Wait(disjoint_.Get(), &dj, sizeof(dj)) || !Wait(begin_.Get(), &t0, sizeof(t0)) ||
+          !Wait(end_.Get(), &t1, sizeof(t1))) {
+        *error = "blit floor: the timestamp queries did not complete";
+        return false;
+      }
+      if (i > 0) {
+        ms->push_back(!dj.Disjoint && dj.Frequency > 0 && t1 >= t0
+                          ? double(t1 - t0) * 1000.0 / double(dj.Frequency)
+                          : std::nan(""));
+      }
+    }
+    d.Usage = d3dl::USAGE_STAGING;
+    d.CPUAccessFlags = d3dl::CPU_ACCESS_READ;
+    d.BindFlags = 0;
+    if (d3dl::FAILED(device_->CreateTexture2D(&d, nullptr, staging.GetAddressOf()))) {
+      *error = "blit floor: cannot create the read-back texture";
+      return false;
+    }
+    ctx_->CopyResource(staging.Get(), dst.Get());
+    d3dl::MAPPED_SUBRESOURCE m;
+    if (d3dl::FAILED(ctx_->Map(staging.Get(), 0, d3dl::MAP_READ, 0, &m))) {
+      *error = "blit floor: cannot read the image back";
+      return false;
+    }
+    image->width = bbW;
+    image->height = bbH;
+    image->pixels.resize(size_t(bbW) * bbH * 4);
+    for (uint32_t y = 0; y < bbH; ++y)
+      std::memcpy(image->pixels.data() + size_t(y) * bbW * 4,
+                  static_cast<const uint8_t*>(m.pData) + size_t(y) * m.RowPitch, size_t(bbW) * 4);
+    ctx_->Unmap(staging.Get(), 0);
+    return true;
+  }
+
+ private:
+  bool Wait(d3dl::Query* q, void* data, uint32_t size) {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    for (;;) {
+      const d3dl::HRESULT hr = ctx_->GetData(q, data, size, 0);
+      if (hr == d3dl::S_OK) return true;
+      if (d3dl::FAILED(hr) || std::chrono::steady_clock::now() > until) return false;
+      std::this_thread::yield();
+    }
+  }
+  d3dl::Device* device_;
+  d3dl::ComPtr<d3dl::DeviceContext> ctx_;
+  d3dl::ComPtr<d3dl::Query> disjoint_, begin_, end_;
+  bool ok_ = false;
+};
 
 }  // namespace
 
@@ -155,7 +294,7 @@ int ParseBenchCommandLine(const std::vector<std::string>& args, BenchPlan* plan,
                           std::string* message) {
   std::vector<std::string> rest;
   bool cameraGiven = false, filterGiven = false, scaleGiven = false, sizeGiven = false;
-  int warmup = -1, frames = -1;
+  int warmup = -1, frames = -1, ghostFrames = -1;
   plan->outDir = "bench_out";
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -177,6 +316,16 @@ int ParseBenchCommandLine(const std::vector<std::string>& args, BenchPlan* plan,
       plan->quick = true;
     } else if (a == "--out") {
       if (!value("--out", &plan->outDir)) return 2;
+    } else if (a == "--no-claims") {
+      plan->claims = false;
+    } else if (a == "--no-ghosting") {
+      plan->ghosting = false;
+    } else if (a == "--ghost-frames") {
+      if (!value("--ghost-frames", &v)) return 2;
+      if (!ParseInt(v, 2, 300, &ghostFrames)) {
+        *message = "--ghost-frames: expected an integer in [2, 300], got '" + v + "'";
+        return 2;
+      }
     } else if (a == "--bench-warmup" || a == "--bench-frames") {
       if (!value(a.c_str(), &v)) return 2;
       int n = 0;
@@ -214,6 +363,7 @@ int ParseBenchCommandLine(const std::vector<std::string>& args, BenchPlan* plan,
   }
   plan->warmupFrames = warmup >= 0 ? warmup : (plan->quick ? 4 : 8);
   plan->measuredFrames = frames >= 0 ? frames : (plan->quick ? 6 : 24);
+  plan->ghostFrames = ghostFrames >= 0 ? ghostFrames : (plan->quick ? 6 : 24);
 
   if (cameraGiven) {
     plan->views = {{plan->base.camera, plan->base.time >= 0 ? plan->base.time : 0.0,
@@ -243,6 +393,149 @@ int ParseBenchCommandLine(const std::vector<std::string>& args, BenchPlan* plan,
   return 0;
 }
 
+namespace {
+
+// One measured configuration of a running sample: apply, warm up, measure,
+// capture. Returns the row (error against `reference`) and the image.
+BenchRow Measure(Sample& sample, const BenchPlan& plan, const Options& settings,
+                 const std::string& viewName, const std::string& filterName, double scale,
+                 const ImageF& reference, int warmup, int frames, ImageRGBA8* imageOut = nullptr) {
+  sample.ApplySettings(settings);
+  RenderFrames(sample, warmup);
+  const std::vector<FrameRecord> records = RenderFrames(sample, frames);
+  BenchRow row;
+  row.view = viewName;
+  row.filter = filterName;
+  row.scale = scale;
+  std::vector<double> f, c, sc, p, scl, wall;
+  for (const FrameRecord& r : records) {
+    f.push_back(r.gpuFrame);
+    c.push_back(r.gpuClear);
+    sc.push_back(r.gpuScene);
+    p.push_back(r.gpuPostP);
+    scl.push_back(r.gpuScale);
+    wall.push_back(r.cpuFrameMs);
+  }
+  row.gpuFrame = Summarise(f);
+  row.gpuClear = Summarise(c);
+  row.gpuScene = Summarise(sc);
+  row.gpuPost = Summarise(p);
+  row.gpuScale = Summarise(scl);
+  row.wall = Summarise(wall);
+  const ImageRGBA8 image = Capture(sample);
+  row.error = CompareImages(ToImage(image), reference);
+  if (settings.dynamicResolution) {
+    row.viewportW = sample.GetDynamicResolution().GetViewport().Width;
+    row.viewportH = sample.GetDynamicResolution().GetViewport().Height;
+  } else {
+    row.viewportW = float(sample.BackBufferWidth());
+    row.viewportH = float(sample.BackBufferHeight());
+  }
+  if (imageOut) *imageOut = image;
+  (void)plan;
+  return row;
+}
+
+// Claim rows on the first view (article-figures.md): clears, super sampling,
+// fast vs velocity-reading TAA. Scale 0.71 unless the name says otherwise.
+void MeasureClaims(Sample& sample, const BenchPlan& plan, const Options& o, const BenchView& view,
+                   const ImageF& reference, BenchResults* results, Progress* progress) {
+  auto run = [&](const std::string& name, double scale, auto&& edit) {
+    Options s = o;
+    s.dynamicResolution = true;
+    s.filter = Filter::Point;
+    s.scaleX = s.scaleY = float(scale);
+    edit(s);
+    results->rows.push_back(Measure(sample, plan, s, view.name, name, scale, reference,
+                                    plan.warmupFrames, plan.measuredFrames));
+    progress->Step(view.name + " " + name);
+  };
+  run("point api-clear", 0.71, [](Options& s) { s.psClear = false; s.superSampling = false; });
+  run("point ps-clear", 0.71, [](Options& s) { s.psClear = true; s.superSampling = false; });
+  run("point 1.0 no-ss", 1.0, [](Options& s) { s.superSampling = false; });
+  run("point 1.0 ss-allowed", 1.0, [](Options& s) { s.superSampling = true; });
+  run("point 1.0 no-ss api-clear", 1.0, [](Options& s) { s.superSampling = false; s.psClear = false; });
+  run("point 1.0 ss-allowed api-clear", 1.0, [](Options& s) { s.superSampling = true; s.psClear = false; });
+  run("taa fast (motion blur on)", 0.71, [](Options& s) { s.filter = Filter::TAA; s.motionBlur = true; s.superSampling = false; });
+  run("taa velocity (motion blur off)", 0.71, [](Options& s) { s.filter = Filter::TAA; s.motionBlur = false; s.superSampling = false; });
+}
+
+// Moving cinematic camera: ghosting per filter and the motion-blur claim.
+// The animation advances by plan.ghostStep per frame (Options::fixedDt): the
+// sample sets animation time = max(time, 0) + frameCount * fixedDt, so with
+// time = ghostTime - (frameCount at capture) * fixedDt the captured frame is
+// at ghostTime exactly, and the reference is rendered there.
+bool MeasureMoving(const BenchPlan& plan, BenchResults* results, Progress* progress, std::string* error) {
+  const BenchView refView{0, plan.ghostTime, "cinematic moving t=" + Num2(plan.ghostTime)};
+  ImageF reference;
+  BenchRow repeat;
+  if (!MakeReference(plan, refView, &reference, &repeat, error)) return false;
+  progress->Step(refView.name + " reference");
+  Options o = ViewOptions(plan, refView);
+  o.superSampling = false;
+  Sample sample;
+  if (sample.Init(o, error) != 0) return false;
+  const int n = plan.ghostFrames;
+  auto moving = [&](Options s) {
+    s.camera = 0;
+    s.fixedDt = plan.ghostStep;
+    const int64_t captureFrame = sample.FrameCount() + n;  // n frames, then the capture
+    s.time = plan.ghostTime - double(captureFrame) * plan.ghostStep;
+    return s;
+  };
+  auto animTime = [&](const Options& s, int64_t captureFrame) {
+    return std::max(s.time, 0.0) + double(captureFrame) * s.fixedDt;
+  };
+  bool exact = true;
+  auto run = [&](const std::string& name, Options s, ImageRGBA8* image) {
+    s = moving(s);
+    const int64_t captureFrame = sample.FrameCount() + n;
+    BenchRow row = Measure(sample, plan, s, refView.name, name, s.scaleX, reference, 0, n, image);
+    row.animTime = animTime(s, captureFrame);
+    exact = exact && std::abs(row.animTime - plan.ghostTime) < 1e-9;
+    progress->Step(refView.name + " " + name);
+    return row;
+  };
+  if (plan.ghosting) {
+    for (Filter f : {Filter::Point, Filter::TAA, Filter::TAABasic, Filter::TAANoiseOffset}) {
+      Options s = o;
+      s.dynamicResolution = true;
+      s.motionBlur = false;  // isolates the history: the reference has no motion blur
+      s.filter = f;
+      s.scaleX = s.scaleY = 0.71f;
+      ImageRGBA8 image;
+      BenchRow row = run(std::string("ghost ") + FilterOption(f), s, &image);
+      row.ghostFraction = FractionAbove(ToImage(image), reference, 0.1f);
+      results->rows.push_back(row);
+    }
+  }
+  if (plan.claims) {
+    Options s = o;
+    s.dynamicResolution = false;
+    s.motionBlur = true;
+    s.filter = Filter::Point;
+    ImageRGBA8 nativeImage, scaledImage;
+    BenchRow native = run("motion-blur native", s, &nativeImage);
+    s.dynamicResolution = true;
+    s.filter = Filter::Bilinear;
+    s.scaleX = s.scaleY = 0.71f;
+    BenchRow scaled = run("motion-blur 0.71", s, &scaledImage);
+    scaled.psnrVsNative = CompareImages(ToImage(scaledImage), ToImage(nativeImage)).psnr;
+    results->rows.push_back(native);
+    results->rows.push_back(scaled);
+  }
+  results->validationMessages += sample.ValidationMessages();
+  sample.Shutdown();
+  if (!exact) {
+    *error = "the moving camera's captured frame is not at the reference time (ghostTime too small "
+             "for the frames rendered before it?)";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 int RunBench(const BenchPlan& plan) {
   std::error_code ec;
   std::filesystem::create_directories(plan.outDir, ec);
@@ -253,11 +546,15 @@ int RunBench(const BenchPlan& plan) {
   }
   BenchResults results;
   results.plan = &plan;
-  const size_t perView = 2 + plan.filters.size() * plan.scales.size();  // + reference, native
-  Progress progress(plan.views.size() * perView);
+  // Per view: reference, native, the sweep and one blit-floor row per scale;
+  // claims on the first view; the moving camera (reference, ghosting, motion blur).
+  const size_t perView = 2 + plan.filters.size() * plan.scales.size() + plan.scales.size();
+  const size_t moving = (plan.ghosting || plan.claims ? 1 : 0) + (plan.ghosting ? 4 : 0) + (plan.claims ? 2 : 0);
+  Progress progress(plan.views.size() * perView + (plan.claims ? 8 : 0) + moving);
   const auto started = std::chrono::steady_clock::now();
 
-  for (const BenchView& view : plan.views) {
+  for (size_t vi = 0; vi < plan.views.size(); ++vi) {
+    const BenchView& view = plan.views[vi];
     std::string error;
     ImageF reference;
     BenchRow repeat;
@@ -283,36 +580,11 @@ int RunBench(const BenchPlan& plan) {
       results.adapter = adapter.Description;
       results.driver = adapter.Driver;
     }
-
-    auto measure = [&](const Options& settings, const std::string& filterName, double scale) {
-      sample.ApplySettings(settings);
-      RenderFrames(sample, plan.warmupFrames);
-      const std::vector<FrameRecord> frames = RenderFrames(sample, plan.measuredFrames);
-      BenchRow row;
-      row.view = view.name;
-      row.filter = filterName;
-      row.scale = scale;
-      std::vector<double> f, c, s, p, sc, wall;
-      for (const FrameRecord& r : frames) {
-        f.push_back(r.gpuFrame);
-        c.push_back(r.gpuClear);
-        s.push_back(r.gpuScene);
-        p.push_back(r.gpuPostP);
-        sc.push_back(r.gpuScale);
-        wall.push_back(r.cpuFrameMs);
-      }
-      row.gpuFrame = Summarise(f);
-      row.gpuClear = Summarise(c);
-      row.gpuScene = Summarise(s);
-      row.gpuPost = Summarise(p);
-      row.gpuScale = Summarise(sc);
-      row.wall = Summarise(wall);
-      const ImageRGBA8 image = Capture(sample);
-      row.error = CompareImages(ToImage(image), reference);
-      row.viewportW = sample.GetDynamicResolution().GetViewport().Width;
-      row.viewportH = sample.GetDynamicResolution().GetViewport().Height;
-      results.rows.push_back(row);
-      progress.Step(view.name + " " + filterName + " " + std::to_string(scale).substr(0, 4));
+    auto measure = [&](const Options& settings, const std::string& filterName, double scale,
+                       ImageRGBA8* image = nullptr) {
+      results.rows.push_back(Measure(sample, plan, settings, view.name, filterName, scale, reference,
+                                     plan.warmupFrames, plan.measuredFrames, image));
+      progress.Step(view.name + " " + filterName + " " + Num2(scale));
     };
 
     // Native: dynamic resolution off, the full-resolution path of the original.
@@ -321,17 +593,49 @@ int RunBench(const BenchPlan& plan) {
     native.filter = Filter::Point;
     measure(native, "native", 1.0);
 
-    for (Filter filter : plan.filters) {
+    BlitFloor blit(sample.GetDevice());
+    for (size_t fi = 0; fi < plan.filters.size(); ++fi) {
       for (float scale : plan.scales) {
         Options s = o;
         s.dynamicResolution = true;
-        s.filter = filter;
+        s.filter = plan.filters[fi];
         s.scaleX = s.scaleY = scale;
-        measure(s, FilterOption(filter), scale);
+        measure(s, FilterOption(plan.filters[fi]), scale);
+        if (fi != 0) continue;
+        // Blit floor of this scale, from the scene colour the first filter
+        // (point in the default plans) rendered: same source region, same
+        // back-buffer size, linear filter.
+        const ImageRGBA8 scene = sample.CapturedSceneColor();
+        const BenchRow& last = results.rows.back();
+        BenchRow row;
+        row.view = view.name;
+        row.filter = kBlitFloor;
+        row.scale = scale;
+        row.viewportW = last.viewportW;
+        row.viewportH = last.viewportH;
+        std::vector<double> ms;
+        ImageRGBA8 image;
+        if (!blit.Run(scene, uint32_t(last.viewportW), uint32_t(last.viewportH), sample.BackBufferWidth(),
+                      sample.BackBufferHeight(), plan.measuredFrames, &ms, &image, &error)) {
+          std::fprintf(stderr, "\nbench: %s\n", error.c_str());
+          return 1;
+        }
+        row.gpuScale = Summarise(ms);
+        row.error = CompareImages(ToImage(image), reference);
+        results.rows.push_back(row);
+        progress.Step(view.name + " blit-floor " + Num2(scale));
       }
     }
+    if (vi == 0 && plan.claims) MeasureClaims(sample, plan, o, view, reference, &results, &progress);
     results.validationMessages += sample.ValidationMessages();
     sample.Shutdown();
+  }
+  if (plan.ghosting || plan.claims) {
+    std::string error;
+    if (!MeasureMoving(plan, &results, &progress, &error)) {
+      std::fprintf(stderr, "\nbench: moving camera: %s\n", error.c_str());
+      return 1;
+    }
   }
   results.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

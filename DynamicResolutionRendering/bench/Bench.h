@@ -6,6 +6,19 @@
 // super sampling of the back buffer, box-filtered down, no jitter, no motion
 // blur), GPU time per pass (median and quartiles over N frames) and wall time.
 // It writes results.csv, results.json, summary.md and PNG plots into --out.
+//
+// Besides the sweep it records (issue #6):
+//  - "blit-floor" rows per view and scale: a linear vkCmdBlitImage
+//    (DeviceContext::BlitRegion) of the viewport region of the captured scene
+//    colour to a back-buffer-sized target, timed with its own timestamp
+//    queries: the physical floor of the scale pass;
+//  - claim rows on the first view (pixel-shader vs API clear, super sampling,
+//    fast vs velocity-reading TAA) and on the cinematic camera (motion blur
+//    at 0.71 vs native), judged in summary.md's "Claims" section;
+//  - ghosting rows ("ghost <filter>") on the moving cinematic camera: the
+//    animation advances by a fixed step per frame (Options::fixedDt) so the
+//    animation time of the captured frame is known exactly and the reference
+//    is rendered at that time.
 #pragma once
 
 #include <string>
@@ -30,6 +43,11 @@ struct BenchPlan {
   int warmupFrames = 8;
   int measuredFrames = 24;
   uint32_t referenceFactor = 4;
+  bool claims = true;          // claim rows on the first view (and motion blur on the cinematic camera)
+  bool ghosting = true;        // ghosting rows on the cinematic camera
+  double ghostTime = 12.0;     // animation time of the captured ghosting frame (s)
+  double ghostStep = 1.0 / 30.0;  // animation step per frame (Options::fixedDt)
+  int ghostFrames = 24;        // frames rendered (moving) before the capture
   Options base;  // size, scene, motion blur, symmetric TAA ... from the command line
 };
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -21,7 +22,18 @@ struct BenchRow {
   float viewportW = 0, viewportH = 0;
   ImageError error;
   Stat gpuFrame, gpuClear, gpuScene, gpuPost, gpuScale, wall;  // milliseconds
+  // Ghosting / moving-camera rows: animation time of the captured frame, the
+  // fraction of pixels whose largest RGB error against the reference is
+  // above 0.1 (ghost trails), and the PSNR against the native image of the
+  // same frame (motion-blur claim). NaN where not measured.
+  double animTime = std::numeric_limits<double>::quiet_NaN();
+  double ghostFraction = std::numeric_limits<double>::quiet_NaN();
+  double psnrVsNative = std::numeric_limits<double>::quiet_NaN();
 };
+
+// Filter names of the rows that are not part of the filter x scale sweep.
+inline constexpr const char* kBlitFloor = "blit-floor";
+inline constexpr const char* kReferenceRepeat = "reference-repeat";
 
 struct BenchResults {
   const BenchPlan* plan = nullptr;

@@ -1,0 +1,169 @@
+// Checks the outputs of `DynamicResolutionRendering --bench --quick`:
+// every file is there (results.csv, results.json, summary.md, three non-empty
+// PNG plots), every row is valid with finite GPU times (the reference-repeat
+// row has none and must be identical to the reference: PSNR inf in the CSV,
+// "identical": true in the JSON), point filtering on the static view gets
+// strictly better from scale 0.3 to 1.0, blit-floor rows exist, and the run
+// logged zero validation messages. Timings are never compared (lavapipe's
+// are not monotonic in resolution).
+//
+//   drr_quick_bench_check DIR      exit 0 = all good, 1 = failures (listed)
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+int g_failures = 0;
+void Fail(const std::string& what) {
+  std::fprintf(stderr, "FAIL: %s\n", what.c_str());
+  ++g_failures;
+}
+
+bool ReadFile(const std::string& path, std::string* out) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream s;
+  s << in.rdbuf();
+  *out = s.str();
+  return true;
+}
+
+// One CSV line; fields may be double-quoted (no escaped quotes in ours).
+std::vector<std::string> SplitCsv(const std::string& line) {
+  std::vector<std::string> f;
+  std::string cur;
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    else if (c == ',' && !quoted) f.push_back(cur), cur.clear();
+    else if (c != '\r') cur += c;
+  }
+  f.push_back(cur);
+  return f;
+}
+
+// "" -> NaN, "inf" -> +inf, else the number (NaN if not a number).
+double Parse(const std::string& s) {
+  if (s.empty()) return std::nan("");
+  if (s == "inf") return INFINITY;
+  if (s == "-inf") return -INFINITY;
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  return end && *end == 0 ? v : std::nan("");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: %s BENCH_OUT_DIR\n", argv[0]);
+    return 2;
+  }
+  const std::string dir = argv[1];
+  std::string csv, json, summary;
+  if (!ReadFile(dir + "/results.csv", &csv) || csv.empty()) Fail("results.csv missing or empty");
+  if (!ReadFile(dir + "/results.json", &json) || json.empty()) Fail("results.json missing or empty");
+  if (!ReadFile(dir + "/summary.md", &summary) || summary.empty()) Fail("summary.md missing or empty");
+  for (const char* png : {"error_vs_scale_time.png", "error_vs_frame_time.png", "frame_time_vs_scale.png"}) {
+    std::string data;
+    if (!ReadFile(dir + "/" + png, &data) || data.size() < 8 || data.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0)
+      Fail(std::string(png) + " missing, empty or not a PNG");
+  }
+  if (g_failures) return 1;
+
+  // CSV: header, then rows.
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);
+  const std::vector<std::string> header = SplitCsv(line);
+  std::map<std::string, size_t> col;
+  for (size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
+  for (const char* c : {"view", "filter", "scale", "psnr_db", "valid", "gpu_frame_ms", "gpu_clear_ms",
+                        "gpu_scene_ms", "gpu_post_ms", "gpu_scale_ms"})
+    if (!col.count(c)) Fail(std::string("results.csv has no column ") + c);
+  if (g_failures) return 1;
+
+  size_t rows = 0, blitRows = 0, repeatRows = 0, ghostRows = 0;
+  std::map<double, double> pointPsnr;  // static view, filter point
+  std::string firstView;
+  while (std::getline(lines, line)) {
+    if (line.empty()) continue;
+    const std::vector<std::string> f = SplitCsv(line);
+    if (f.size() != header.size()) {
+      Fail("row with " + std::to_string(f.size()) + " fields instead of " + std::to_string(header.size()) + ": " + line);
+      continue;
+    }
+    ++rows;
+    const std::string& view = f[col["view"]];
+    const std::string& filter = f[col["filter"]];
+    const std::string where = "row '" + view + "' / '" + filter + "' / " + f[col["scale"]];
+    if (firstView.empty()) firstView = view;
+    if (f[col["valid"]] != "1") Fail(where + ": not valid");
+    const double psnr = Parse(f[col["psnr_db"]]);
+    if (std::isnan(psnr)) Fail(where + ": PSNR is not a number");
+    if (filter == "reference-repeat") {
+      ++repeatRows;
+      if (!(std::isinf(psnr) && psnr > 0)) Fail(where + ": the repeated reference differs (PSNR " + f[col["psnr_db"]] + ")");
+      for (const char* c : {"gpu_frame_ms", "gpu_scale_ms"})
+        if (!f[col[c]].empty()) Fail(where + ": has a GPU time in " + c);
+      continue;
+    }
+    std::vector<const char*> times = {"gpu_scale_ms"};
+    if (filter == "blit-floor") ++blitRows;
+    else times = {"gpu_frame_ms", "gpu_clear_ms", "gpu_scene_ms", "gpu_post_ms", "gpu_scale_ms"};
+    for (const char* c : times) {
+      const double v = Parse(f[col[c]]);
+      if (!std::isfinite(v) || v < 0) Fail(where + ": " + c + " is not a finite time ('" + f[col[c]] + "')");
+    }
+    if (filter.rfind("ghost ", 0) == 0) {
+      ++ghostRows;
+      const double g = col.count("ghost_fraction") ? Parse(f[col["ghost_fraction"]]) : std::nan("");
+      if (!(g >= 0 && g <= 1)) Fail(where + ": ghost fraction not in [0, 1]");
+    }
+    if (view == firstView && filter == "point") pointPsnr[Parse(f[col["scale"]])] = psnr;
+  }
+  if (rows == 0) Fail("results.csv has no rows");
+  if (repeatRows == 0) Fail("no reference-repeat row");
+  if (blitRows == 0) Fail("no blit-floor rows");
+  if (ghostRows == 0) Fail("no ghosting rows");
+
+  // Point filtering on the static view: strictly better from 0.3 to 1.0.
+  double prev = -INFINITY;
+  size_t inRange = 0;
+  for (const auto& [scale, psnr] : pointPsnr) {
+    if (scale < 0.3 - 1e-6 || scale > 1.0 + 1e-6) continue;
+    ++inRange;
+    if (!(psnr > prev)) Fail("point PSNR does not increase at scale " + std::to_string(scale));
+    prev = psnr;
+  }
+  if (inRange < 2) Fail("fewer than two point rows between 0.3 and 1.0 on the static view");
+
+  // JSON: the repeat row is identical, zero validation messages, row count.
+  const size_t rr = json.find("\"filter\": \"reference-repeat\"");
+  if (rr == std::string::npos) Fail("results.json has no reference-repeat row");
+  else {
+    const size_t end = json.find('\n', rr);
+    if (json.substr(rr, end - rr).find("\"identical\": true") == std::string::npos)
+      Fail("results.json: reference-repeat is not \"identical\": true");
+  }
+  if (json.find("\"validation_messages\": 0,") == std::string::npos) Fail("results.json: validation messages are not 0");
+  size_t jsonRows = 0;
+  for (size_t p = json.find("{\"view\": "); p != std::string::npos; p = json.find("{\"view\": ", p + 1)) ++jsonRows;
+  if (jsonRows != rows) Fail("results.json has " + std::to_string(jsonRows) + " rows, results.csv " + std::to_string(rows));
+  for (const char* section : {"ratio to blit", "### Claims", "### Ghosting"})
+    if (summary.find(section) == std::string::npos) Fail(std::string("summary.md lacks '") + section + "'");
+
+  if (g_failures) {
+    std::fprintf(stderr, "%d check(s) failed in %s\n", g_failures, dir.c_str());
+    return 1;
+  }
+  std::printf("quick bench outputs OK: %zu rows (%zu blit-floor, %zu ghosting), point PSNR increasing over %zu scales\n",
+              rows, blitRows, ghostRows, inRange);
+  return 0;
+}
