@@ -444,14 +444,16 @@ bool Sample::ReloadShaders() {
   // Nothing may still use the shaders that get replaced.
   m_Context->Flush();
   m_Device->WaitIdle();
+  bool guiCompiled = false;
   bool ok = LoadShaders(&err, /*fromSources=*/true);
-  ok = ok && m_GuiRenderer.ReloadShaders(m_ShaderDir, &err);
+  ok = ok && m_GuiRenderer.ReloadShaders(m_ShaderDir, &err, ShaderSourceDir(), &guiCompiled);
   ok = ok && m_ZoomBox.ReloadShaders(m_ShaderDir, &err);
   ok = ok && m_Scene->ReloadShaders(&err);
   if (ok) {
     m_LastMessage = m_PostShadersCompiled > 0
                         ? "Shaders reloaded: " + std::to_string(m_PostShadersCompiled) +
-                              " post-processing shaders compiled from " + ShaderSourceDir()
+                              " post-processing shaders" + (guiCompiled ? " and the GUI's" : "") +
+                              " compiled from " + ShaderSourceDir()
                         : "Shaders reloaded from " + m_ShaderDir + " (no HLSL sources in " +
                               ShaderSourceDir() + ")";
   } else {

@@ -7,7 +7,10 @@
 #include <cfloat>
 #include <cstring>
 #include <cstddef>
+#include <filesystem>
 #include <vector>
+
+#include "d3dl/ShaderCompiler.h"
 
 #include "Utility.h"
 
@@ -20,14 +23,37 @@ struct GuiConstants {
 };
 }  // namespace
 
-bool GuiRenderer::LoadShaders(const std::string& dir, std::string* error) {
+bool GuiRenderer::LoadShaders(const std::string& dir, std::string* error, const std::string& sourceDir,
+                              bool* compiled) {
   d3dl::ComPtr<d3dl::VertexShader> vs;
   d3dl::ComPtr<d3dl::PixelShader> ps;
   d3dl::ComPtr<d3dl::InputLayout> layout;
   std::vector<uint32_t> vsCode;
-  if (d3dl::FAILED(Utility::LoadVertexShader(m_Device, dir, "Gui_GuiVS", vs.GetAddressOf(), &vsCode, error)) ||
-      d3dl::FAILED(Utility::LoadPixelShader(m_Device, dir, "Gui_GuiPS", ps.GetAddressOf(), error)))
+  if (compiled) *compiled = false;
+  const std::string source = sourceDir.empty() ? std::string() : sourceDir + "/Gui.hlsl";
+  if (!source.empty() && std::filesystem::exists(source)) {
+    std::vector<uint32_t> psCode;
+    std::string errs;
+    for (const bool vertex : {true, false}) {
+      d3dl::ShaderCompileDesc d;
+      d.SourcePath = source;
+      d.EntryPoint = vertex ? "GuiVS" : "GuiPS";
+      d.Stage = vertex ? d3dl::ShaderStage::Vertex : d3dl::ShaderStage::Pixel;
+      if (d3dl::FAILED(d3dl::CompileHLSL(d, vertex ? &vsCode : &psCode, &errs))) {
+        if (error) *error = std::string("Gui.hlsl (") + d.EntryPoint + ") did not compile:\n" + errs;
+        return false;
+      }
+    }
+    if (d3dl::FAILED(m_Device->CreateVertexShader(vsCode.data(), vsCode.size() * 4, vs.GetAddressOf())) ||
+        d3dl::FAILED(m_Device->CreatePixelShader(psCode.data(), psCode.size() * 4, ps.GetAddressOf()))) {
+      if (error) *error = "GUI: creating the compiled shaders failed";
+      return false;
+    }
+    if (compiled) *compiled = true;
+  } else if (d3dl::FAILED(Utility::LoadVertexShader(m_Device, dir, "Gui_GuiVS", vs.GetAddressOf(), &vsCode, error)) ||
+             d3dl::FAILED(Utility::LoadPixelShader(m_Device, dir, "Gui_GuiPS", ps.GetAddressOf(), error))) {
     return false;
+  }
   const d3dl::INPUT_ELEMENT_DESC elements[] = {
       {"POSITION", 0, d3dl::DXGI_FORMAT_R32G32_FLOAT, 0, uint32_t(offsetof(ImDrawVert, pos))},
       {"TEXCOORD", 0, d3dl::DXGI_FORMAT_R32G32_FLOAT, 0, uint32_t(offsetof(ImDrawVert, uv))},
@@ -44,8 +70,9 @@ bool GuiRenderer::LoadShaders(const std::string& dir, std::string* error) {
   return true;
 }
 
-bool GuiRenderer::ReloadShaders(const std::string& dir, std::string* error) {
-  return LoadShaders(dir, error);
+bool GuiRenderer::ReloadShaders(const std::string& dir, std::string* error, const std::string& sourceDir,
+                                bool* compiled) {
+  return LoadShaders(dir, error, sourceDir, compiled);
 }
 
 bool GuiRenderer::Init(d3dl::Device* device, const std::string& shaderDir, std::string* error) {
