@@ -286,7 +286,7 @@ class RawVulkanRecorder final : public Recorder {
   }
 
   bool CreatePipeline(std::string* error) {
-    const std::string dir = DRR_BENCH_SHADER_DIR;
+    const std::string dir = BenchShaderDir();
     std::vector<uint32_t> vs = ReadSpirv(dir + "/BenchDraw.vs.spv");
     std::vector<uint32_t> ps = ReadSpirv(dir + "/BenchDraw.ps.spv");
     if (vs.empty() || ps.empty()) {

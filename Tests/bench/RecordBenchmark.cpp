@@ -18,6 +18,11 @@
 
 namespace drrbench {
 
+std::string BenchShaderDir() {
+  const char* env = std::getenv("DRR_BENCH_SHADER_DIR");
+  return env && *env ? env : DRR_BENCH_SHADER_DIR;
+}
+
 DrawConstants ConstantsForDraw(uint32_t i, uint32_t n) {
   // A grid of triangles over the target, colours from the index.
   const uint32_t side = static_cast<uint32_t>(std::ceil(std::sqrt(double(n))));

@@ -15,6 +15,9 @@ struct DrawConstants {
   float color[4];
 };
 
+// Folder of the compiled benchmark shaders: $DRR_BENCH_SHADER_DIR, else the build's.
+std::string BenchShaderDir();
+
 // Deterministic constants for draw i of n (positions spread over the target).
 DrawConstants ConstantsForDraw(uint32_t i, uint32_t n);
 

@@ -58,7 +58,7 @@ class RhiRecorder final : public Recorder {
     bd.Usage = d3dl::USAGE_DYNAMIC;
     bd.BindFlags = d3dl::BIND_CONSTANT_BUFFER;
     bd.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
-    const std::string dir = DRR_BENCH_SHADER_DIR;
+    const std::string dir = BenchShaderDir();
     std::vector<char> vs = ReadFile(dir + "/BenchDraw.vs.spv");
     std::vector<char> ps = ReadFile(dir + "/BenchDraw.ps.spv");
     d3dl::RASTERIZER_DESC rd;

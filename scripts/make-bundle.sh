@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# Builds a self-contained bundle of the sample for a Linux x86-64 machine that
+# has a Vulkan driver but none of the project's Debian packages (for example a
+# bare GPU server): the binaries, their non-system shared libraries (Debian's),
+# the compiled shaders, the Arena (small; large as a .tar.xz) and run.sh.
+#
+#   scripts/make-bundle.sh [OUT_DIR] [--with-validation]
+#
+# Images go through stb (-DDRR_IMAGE_IO=STB): OpenImageIO's dependency closure
+# is hundreds of megabytes. On the target: OUT_DIR/run.sh [sample options].
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+out="$root/bundle"
+validation=0
+for a in "$@"; do
+  case "$a" in
+    --with-validation) validation=1 ;;
+    -*) echo "make-bundle: unknown option '$a'" >&2; exit 2 ;;
+    *) out="$a" ;;
+  esac
+done
+build="$root/build-bundle"
+
+"$root/scripts/setup.sh"
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DDRR_IMAGE_IO=STB >/dev/null
+cmake --build "$build" --parallel "$(nproc)" \
+  --target DynamicResolutionRendering drr_rhi_bench drr_arena drr_arena_large
+
+rm -rf "$out"
+mkdir -p "$out/bin" "$out/lib" "$out/media"
+cp "$build/DynamicResolutionRendering/DynamicResolutionRendering" "$build/Tests/bench/drr_rhi_bench" "$out/bin/"
+strip "$out"/bin/*
+cp -r "$build/shaders" "$out/shaders"
+mkdir -p "$out/bench-shaders" && cp "$build"/Tests/bench/shaders/*.spv "$out/bench-shaders/"
+cp -r "$build/Media/Arena" "$out/media/Arena"
+tar -C "$build/Media" -cJf "$out/media/ArenaLarge.tar.xz" ArenaLarge
+
+# Shared libraries except the C/C++ runtime, which every target system has.
+system='^(libc|libm|libstdc\+\+|libgcc_s|ld-linux-x86-64|libpthread|libdl|librt)\.so'
+for bin in "$out"/bin/*; do
+  ldd "$bin" | awk '/=>/ && $3 ~ /^\// {print $3}'
+done | sort -u | while read -r lib; do
+  name="$(basename "$lib")"
+  [[ "$name" =~ $system ]] || cp -L "$lib" "$out/lib/$name"
+done
+if ((validation)); then
+  # The layer is large (22 MB); it travels compressed and run.sh unpacks it.
+  mkdir -p "$out/layers"
+  xz -9 -c /usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so >"$out/layers/libVkLayer_khronos_validation.so.xz"
+  sed 's|"library_path": *"[^"]*"|"library_path": "./libVkLayer_khronos_validation.so"|' \
+    /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json >"$out/layers/VkLayer_khronos_validation.json"
+fi
+
+cat >"$out/run.sh" <<'RUN'
+#!/usr/bin/env bash
+# Runs the bundled sample (arguments as for DynamicResolutionRendering --help).
+# DRR_ARENA=large uses the large Arena (unpacked on first use).
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+export LD_LIBRARY_PATH="$here/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+if [ -d "$here/layers" ]; then
+  [ -f "$here/layers/libVkLayer_khronos_validation.so" ] ||
+    xz -dc "$here/layers/libVkLayer_khronos_validation.so.xz" >"$here/layers/libVkLayer_khronos_validation.so"
+  export VK_LAYER_PATH="$here/layers"
+fi
+export DRR_SHADER_DIR="$here/shaders"
+if [ "${DRR_ARENA:-small}" = large ]; then
+  [ -d "$here/media/large/Arena" ] || { mkdir -p "$here/media/large" &&
+    tar -C "$here/media/large" -xJf "$here/media/ArenaLarge.tar.xz" &&
+    mv "$here/media/large/ArenaLarge" "$here/media/large/Arena"; }
+  export DRR_MEDIA_DIR="$here/media/large"
+else
+  export DRR_MEDIA_DIR="$here/media"
+fi
+export DRR_BENCH_SHADER_DIR="$here/bench-shaders"
+exec "$here/bin/${DRR_BIN:-DynamicResolutionRendering}" "$@"
+RUN
+chmod +x "$out/run.sh"
+du -sh "$out"
