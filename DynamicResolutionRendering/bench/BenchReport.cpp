@@ -368,8 +368,10 @@ void WriteGhosting(const BenchResults& res, std::ostringstream& md) {
      << "Camera 0 animated by " << Num(plan.ghostStep, 4) << " s per frame (`fixedDt`), "
      << plan.ghostFrames << " frames after switching the filter, captured at animation time "
      << Num(rows.front()->animTime, 4) << " s and compared with the reference rendered at that time; "
-        "scale 0.71, motion blur off (the reference has none). Ghost fraction = pixels whose "
-        "largest RGB error is above 0.1.\n\n| filter | PSNR dB | SSIM | ghost fraction | frame ms |\n"
+        "scale 0.71, motion blur off (the reference has none). PSNR/SSIM: against the reference. "
+        "Ghost fraction = pixels whose largest RGB difference from the same filter's settled "
+        "image of the same animation time (camera held still for as many frames) is above 0.1: "
+        "what the motion adds, not the filter's spatial error.\n\n| filter | PSNR dB | SSIM | ghost fraction | frame ms |\n"
         "| --- | ---: | ---: | ---: | ---: |\n";
   const BenchRow* worst = nullptr;
   for (const BenchRow* r : rows) {

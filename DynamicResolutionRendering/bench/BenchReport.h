@@ -13,7 +13,10 @@ namespace drr {
 struct BenchPlan;
 
 struct Stat {
-  double median = 0, p25 = 0, p75 = 0;  // NaN when nothing was measured
+  // NaN when nothing was measured (e.g. the reference-repeat row).
+  double median = std::numeric_limits<double>::quiet_NaN();
+  double p25 = std::numeric_limits<double>::quiet_NaN();
+  double p75 = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct BenchRow {
@@ -23,8 +26,9 @@ struct BenchRow {
   ImageError error;
   Stat gpuFrame, gpuClear, gpuScene, gpuPost, gpuScale, wall;  // milliseconds
   // Ghosting / moving-camera rows: animation time of the captured frame, the
-  // fraction of pixels whose largest RGB error against the reference is
-  // above 0.1 (ghost trails), and the PSNR against the native image of the
+  // fraction of pixels whose largest RGB difference from the same filter's
+  // settled image of that animation time (camera held still) is above 0.1
+  // (ghost trails: what the motion adds), and the PSNR against the native image of the
   // same frame (motion-blur claim). NaN where not measured.
   double animTime = std::numeric_limits<double>::quiet_NaN();
   double ghostFraction = std::numeric_limits<double>::quiet_NaN();
