@@ -109,7 +109,12 @@ double NiceStep(double lo, double hi, int n) {
 
 std::string Format(double v, double step) {
   char buf[32];
-  const int decimals = std::clamp(int(-std::floor(std::log10(step))), 0, 6);
+  // Enough decimals for the step itself (0.025 needs 3, 0.5 needs 1).
+  int decimals = 0;
+  while (decimals < 6 && std::abs(step * std::pow(10.0, decimals) -
+                                  std::round(step * std::pow(10.0, decimals))) > 1e-6) {
+    ++decimals;
+  }
   std::snprintf(buf, sizeof(buf), "%.*f", decimals, v);
   return buf;
 }
