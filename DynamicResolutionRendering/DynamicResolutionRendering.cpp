@@ -225,6 +225,20 @@ int Sample::Init(const Options& options, std::string* error) {
 
   SceneLoadOptions so;
   so.shaderDir = m_ShaderDir;
+  // The original samples the scene with anisotropic x16. llvmpipe's
+  // anisotropic filter walks the whole footprint and costs 3-30x at some
+  // sizes (Docs/Lavapipe-Performance.md), so CPU rasterisers default to
+  // trilinear; --anisotropy N chooses explicitly.
+  so.maxAnisotropy = options.anisotropy > 0 ? uint32_t(options.anisotropy) : 16u;
+  if (options.anisotropy == 0) {
+    d3dl::ADAPTER_DESC adapter;
+    m_Device->GetAdapterDesc(&adapter);
+    if (adapter.IsSoftware) {
+      so.maxAnisotropy = 1;
+      std::printf("%s is a CPU rasteriser: scene sampler trilinear instead of anisotropic x16 "
+                  "(--anisotropy 16 to force it)\n", adapter.Description);
+    }
+  }
   std::string sceneError;
   m_Scene = Scene::Load(m_Device.Get(), m_ScenePath, so, &sceneError);
   if (!m_Scene) {
@@ -1343,7 +1357,11 @@ bool Sample::SaveScreenshot(const std::string& path, bool noGui, std::string* er
   std::error_code ec;
   const auto parent = std::filesystem::path(path).parent_path();
   if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-  return Utility::SaveImageRGBA8(path, img.width, img.height, img.pixels.data(), error);
+  // The back buffer's alpha holds no coverage (the post passes write velocity
+  // weights there); a screenshot is what the window shows: opaque.
+  std::vector<uint8_t> opaque = img.pixels;
+  for (size_t i = 3; i < opaque.size(); i += 4) opaque[i] = 255;
+  return Utility::SaveImageRGBA8(path, img.width, img.height, opaque.data(), error);
 }
 
 bool Sample::WriteReport(const std::string& path, std::string* error) const {

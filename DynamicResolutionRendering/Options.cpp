@@ -84,6 +84,8 @@ std::string Usage() {
        "  --report PATH            JSON report (options, adapter, GPU times, scales, RT bytes)\n"
        "  --validation             Vulkan core + sync validation; exit code 3 on any message\n"
        "  --stats                  print the scene statistics\n"
+       "  --anisotropy N           scene sampler: 0 auto (x16 on GPUs, trilinear on CPU\n"
+       "                           rasterisers such as lavapipe), 1 trilinear, 2..16 (default 0)\n"
        "  --time T                 fixed animation time in seconds (reproducible frames)\n"
        "  --fixed-dt DT            animation advances DT seconds per frame (0..10)\n"
        "  --shader-dir DIR         compiled shaders (default: the build's, or DRR_SHADER_DIR)\n"
@@ -258,6 +260,11 @@ ParseStatus ParseCommandLine(const std::vector<std::string>& args, Options* o,
       r.validation = true;
     } else if (name == "--stats") {
       r.stats = true;
+    } else if (name == "--anisotropy") {
+      double v = 0;
+      err = number(0, 16, &v);
+      if (err.empty() && v != std::floor(v)) err = "option --anisotropy: expected an integer in [0, 16]";
+      r.anisotropy = int(v);
     } else if (name == "--time") {
       err = number(0, 1e7, &r.time);
     } else if (name == "--fixed-dt") {
@@ -310,6 +317,7 @@ std::string OptionsToJson(const Options& o) {
     << ", \"ps_clear\": " << (o.psClear ? "true" : "false")
     << ", \"pause\": " << (o.pause ? "true" : "false")
     << ", \"zoom\": " << (o.zoom ? "true" : "false") << ", \"gui\": " << (o.gui ? "true" : "false")
+    << ", \"anisotropy\": " << o.anisotropy
     << ", \"time\": " << o.time << ", \"fixed_dt\": " << o.fixedDt
     << ", \"validation\": " << (o.validation ? "true" : "false") << "}";
   return j.str();

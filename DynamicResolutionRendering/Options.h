@@ -66,6 +66,10 @@ struct Options {
   std::string report;
   bool validation = false;
   bool stats = false;
+  // Scene sampler anisotropy: 0 = auto (x16 as the original on GPUs; trilinear
+  // on CPU rasterisers, whose anisotropic filter is pathologically slow, see
+  // Docs/Lavapipe-Performance.md), 1 = trilinear, 2..16 = anisotropic.
+  int anisotropy = 0;
   double time = -1.0;    // >= 0: fixed animation time
   double fixedDt = 0.0;  // > 0: animation advances by this per frame
   // Test aid: fill the dynamic colour/velocity RTs outside the viewport with a

@@ -405,9 +405,10 @@ std::unique_ptr<Scene> Scene::Load(d3dl::Device* device, const std::string& path
   init.pSysMem = &unlit;
   ok = ok && SUCCEEDED(device->CreateBuffer(&cb, &init, s.unlitCB.GetAddressOf()));
   d3dl::SAMPLER_DESC sd;
-  sd.Filter = d3dl::FILTER_ANISOTROPIC;
+  const uint32_t anisotropy = opts.maxAnisotropy;
+  sd.Filter = anisotropy > 1 ? d3dl::FILTER_ANISOTROPIC : d3dl::FILTER_MIN_MAG_MIP_LINEAR;
   sd.AddressU = sd.AddressV = sd.AddressW = d3dl::TEXTURE_ADDRESS_WRAP;
-  sd.MaxAnisotropy = 16;
+  sd.MaxAnisotropy = std::clamp<uint32_t>(anisotropy, 1, 16);
   sd.MinLOD = 0.f;
   ok = ok && SUCCEEDED(device->CreateSamplerState(&sd, s.samplerAniso.GetAddressOf()));
   sd.MipLODBias = -0.5f;

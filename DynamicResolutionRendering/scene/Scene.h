@@ -23,6 +23,8 @@ namespace drr {
 struct SceneLoadOptions {
   std::string shaderDir;  // folder of the compiled scene_*.spv; empty = the build's shader folder
   bool verbose = false;   // print what is loaded (and the warnings) to stdout
+  // Anisotropy of the scene samplers (the original: x16); 1 = trilinear.
+  uint32_t maxAnisotropy = 16;
 };
 
 struct CameraPose {
