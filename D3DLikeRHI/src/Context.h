@@ -92,6 +92,10 @@ class ContextImpl final : public DeviceContext {
   void MarkDirtyAll();
   void InvalidateTexture(TextureCore* t);  // a texture's layout changed behind our back
   bool IsRendering() const { return rendering_; }
+  // Constant buffers Map(WRITE_DISCARD)ed this frame keep their latest data
+  // only in the ring: copied back to their shadows before the frame ends.
+  void SaveDiscardedConstants();
+  void ForgetDiscardedConstants(BufferImpl* b);  // `b` is being destroyed
 
  private:
   enum Dirty : uint32_t {
@@ -110,7 +114,11 @@ class ContextImpl final : public DeviceContext {
     kAll = 0xffffffffu,
   };
 
-  bool Commit(bool indexed);
+  inline bool Commit(bool indexed);
+  bool CommitSlow(bool indexed);
+  bool BindDescriptors(VkCommandBuffer cmd);
+  bool WriteNewSet();
+  HRESULT MapDiscardConstants(BufferImpl* b, MAPPED_SUBRESOURCE* mapped);
   bool BeginRendering();
   void ErrorOnce(uint32_t bit, const char* msg);
   void SetCBs(uint32_t stage, UINT start, UINT num, Buffer* const* buffers);
@@ -178,7 +186,20 @@ class ContextImpl final : public DeviceContext {
 
   std::vector<VkImageMemoryBarrier2> imageBarriers_;
   std::vector<VkBufferMemoryBarrier2> bufferBarriers_;
+  std::vector<BufferImpl*> discardedCBs_;  // see SaveDiscardedConstants (no references held)
 };
+
+// Draw-time commit. Hot path: nothing but constant data changed since the last
+// successful commit, inside the same rendering scope. Every setter that could
+// change the outcome of CommitSlow's checks, barriers or bindings sets another
+// dirty bit (kIndexBuffer matters only to indexed draws).
+inline bool ContextImpl::Commit(bool indexed) {
+  const uint32_t ignored = indexed ? uint32_t(kConstants) : uint32_t(kConstants | kIndexBuffer);
+  if ((dirty_ & ~ignored) != 0 || !rendering_ || HasPendingBarriers()) return CommitSlow(indexed);
+  if ((dirty_ & kConstants) && !BindDescriptors(dev_->Cmd())) return false;
+  dirty_ &= indexed ? 0u : uint32_t(kIndexBuffer);
+  return true;
+}
 
 template <class T>
 inline void SetRef(T*& slot, T* value) {

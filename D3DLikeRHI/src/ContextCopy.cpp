@@ -28,7 +28,39 @@ bool ContextImpl::WaitForResource(uint64_t lastUse, UINT flags, HRESULT* hr) {
   return true;
 }
 
+// Hot path of Map: a fresh ring slice per WRITE_DISCARD, written by the
+// application in place (no shadow copy per draw; see BufferImpl::SyncShadow).
+HRESULT ContextImpl::MapDiscardConstants(BufferImpl* b, MAPPED_SUBRESOURCE* mapped) {
+  RingAlloc a;
+  if (!dev_->AllocateRing(b->desc_.ByteWidth, dev_->uboAlign(), &a)) {
+    *mapped = {};
+    return E_OUTOFMEMORY;
+  }
+  b->ring = a;
+  b->ringSerial = dev_->CurrentSerial();
+  if (!b->shadowStale) {
+    b->shadowStale = true;
+    discardedCBs_.push_back(b);
+  }
+  mapped->pData = a.ptr;
+  mapped->RowPitch = mapped->DepthPitch = b->desc_.ByteWidth;
+  return S_OK;
+}
+
+void ContextImpl::SaveDiscardedConstants() {
+  for (BufferImpl* b : discardedCBs_) b->SyncShadow();
+  discardedCBs_.clear();
+}
+
+void ContextImpl::ForgetDiscardedConstants(BufferImpl* b) {
+  discardedCBs_.erase(std::remove(discardedCBs_.begin(), discardedCBs_.end(), b), discardedCBs_.end());
+}
+
 HRESULT ContextImpl::Map(Resource* resource, UINT sub, MAP type, UINT flags, MAPPED_SUBRESOURCE* mapped) {
+  if (type == MAP_WRITE_DISCARD && sub == 0 && mapped) {
+    BufferImpl* b = AsBuffer(resource);
+    if (b && b->isDynamicConstant) return MapDiscardConstants(b, mapped);
+  }
   if (!resource || !mapped) {
     dev_->Log(LogLevel::Error, "Map: %s is null", resource ? "pMappedResource" : "pResource");
     return E_INVALIDARG;
@@ -49,6 +81,7 @@ HRESULT ContextImpl::Map(Resource* resource, UINT sub, MAP type, UINT flags, MAP
         dev_->Log(LogLevel::Error, "Map: a constant buffer can be mapped only with WRITE_DISCARD and USAGE_DYNAMIC");
         return E_INVALIDARG;
       }
+      b->SyncShadow();  // WRITE_NO_OVERWRITE keeps what the last WRITE_DISCARD wrote
       mapped->pData = b->shadow.data();  // copied into the ring at the next draw that uses it
       mapped->RowPitch = mapped->DepthPitch = b->desc_.ByteWidth;
       return S_OK;
@@ -120,7 +153,9 @@ HRESULT ContextImpl::Map(Resource* resource, UINT sub, MAP type, UINT flags, MAP
 void ContextImpl::Unmap(Resource* resource, UINT sub) {
   if (BufferImpl* b = AsBuffer(resource)) {
     if (b->isConstant) {
-      b->ringSerial = 0;  // re-upload at the next draw
+      // After WRITE_DISCARD the data is already in this frame's ring slice;
+      // after another map type it is in the shadow: re-upload at the next draw.
+      if (!b->shadowStale) b->ringSerial = 0;
       dirty_ |= kConstants;
     } else if (b->isRing) {
       dirty_ |= kVertexBuffers | kIndexBuffer;
@@ -208,6 +243,7 @@ void ContextImpl::UpdateSubresource(Resource* dst, UINT sub, const BOX* box, con
       return;
     }
     if (b->isConstant) {
+      b->SyncShadow();
       std::memcpy(b->shadow.data() + lo, data, hi - lo);
       b->ringSerial = 0;
       dirty_ |= kConstants;

@@ -102,7 +102,7 @@ bool ContextImpl::BeginRendering() {
   return true;
 }
 
-bool ContextImpl::Commit(bool indexed) {
+bool ContextImpl::CommitSlow(bool indexed) {
   if (!vs_) return ErrorOnce(1u << 0, "draw skipped: no vertex shader is bound"), false;
   if (numRT_ == 0 && !dsv_) return ErrorOnce(1u << 1, "draw skipped: no render target or depth-stencil view is bound"), false;
   if (indexed && !ib_) return ErrorOnce(1u << 2, "DrawIndexed skipped: no index buffer is bound"), false;
@@ -220,74 +220,84 @@ bool ContextImpl::Commit(bool indexed) {
     vkCmdBindIndexBuffer(cmd, buf, off, ibType_);
   }
 
-  if ((dirty_ & (kDescriptors | kConstants)) &&
-      (!program_->cbs.empty() || !program_->srvs.empty() || !program_->samplers.empty())) {
-    bool newSet = (dirty_ & kDescriptors) || !set_;
-    const uint32_t nCB = static_cast<uint32_t>(program_->cbs.size());
-    for (uint32_t i = 0; i < nCB; ++i) {
-      const auto& s = program_->cbs[i];
-      BufferImpl* b = cbs_[s.stage][s.slot];
-      VkBuffer buf = dev_->dummyUniform;
-      uint32_t off = 0, range = static_cast<uint32_t>(dev_->dummyUniformSize);
-      if (b) {
-        b->EnsureUploaded();
-        buf = b->ring.buffer;
-        off = static_cast<uint32_t>(b->ring.offset);
-        range = b->desc_.ByteWidth;
-      }
-      if (buf != setCbBuffers_[i] || range != setCbRanges_[i]) newSet = true;
-      dynOffsets_[i] = off;
-    }
-    if (newSet) {
-      VkDescriptorSet set = dev_->AllocateSet(program_->setLayout);
-      if (!set) return ErrorOnce(1u << 8, "draw skipped: descriptor set allocation failed"), false;
-      VkDescriptorBufferInfo bufInfo[2 * kMaxConstantBufferSlots];
-      VkDescriptorImageInfo imgInfo[2 * (kMaxTextureSlots + kMaxSamplerSlots)];
-      VkWriteDescriptorSet writes[2 * (kMaxConstantBufferSlots + kMaxTextureSlots + kMaxSamplerSlots)];
-      uint32_t nw = 0, ni = 0;
-      for (uint32_t i = 0; i < nCB; ++i) {
-        const auto& s = program_->cbs[i];
-        BufferImpl* b = cbs_[s.stage][s.slot];
-        bufInfo[i] = {b ? b->ring.buffer : dev_->dummyUniform, 0,
-                      b ? b->desc_.ByteWidth : dev_->dummyUniformSize};
-        setCbBuffers_[i] = bufInfo[i].buffer;
-        setCbRanges_[i] = static_cast<uint32_t>(bufInfo[i].range);
-        writes[nw] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        writes[nw].dstSet = set;
-        writes[nw].dstBinding = s.binding;
-        writes[nw].descriptorCount = 1;
-        writes[nw].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
-        writes[nw++].pBufferInfo = &bufInfo[i];
-      }
-      for (const auto& s : program_->srvs) {
-        SRVImpl* v = srvs_[s.stage][s.slot];
-        imgInfo[ni] = {VK_NULL_HANDLE,
-                       v ? v->v.Current() : (s.image1D ? dev_->dummyImageView1D : dev_->dummyImageView2D),
-                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-        writes[nw] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        writes[nw].dstSet = set;
-        writes[nw].dstBinding = s.binding;
-        writes[nw].descriptorCount = 1;
-        writes[nw].descriptorType = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
-        writes[nw++].pImageInfo = &imgInfo[ni++];
-      }
-      for (const auto& s : program_->samplers) {
-        SamplerImpl* smp = samplers_[s.stage][s.slot];
-        imgInfo[ni] = {smp ? smp->sampler : dev_->dummySampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED};
-        writes[nw] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-        writes[nw].dstSet = set;
-        writes[nw].dstBinding = s.binding;
-        writes[nw].descriptorCount = 1;
-        writes[nw].descriptorType = VK_DESCRIPTOR_TYPE_SAMPLER;
-        writes[nw++].pImageInfo = &imgInfo[ni++];
-      }
-      vkUpdateDescriptorSets(dev_->vk(), nw, writes, 0, nullptr);
-      set_ = set;
-    }
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, program_->layout, 0, 1, &set_, nCB,
-                            dynOffsets_);
-  }
+  if ((dirty_ & (kDescriptors | kConstants)) && !BindDescriptors(cmd)) return false;
   dirty_ = indexed ? 0u : (dirty_ & kIndexBuffer);
+  return true;
+}
+
+// Binds the program's descriptor set with this draw's dynamic offsets (one per
+// constant buffer the program uses). A new set is written only when a bound
+// SRV/sampler/CB changed identity or a CB's ring slice moved to another chunk.
+bool ContextImpl::BindDescriptors(VkCommandBuffer cmd) {
+  const ProgramLayout& p = *program_;
+  const uint32_t nCB = static_cast<uint32_t>(p.cbs.size());
+  if (nCB == 0 && p.srvs.empty() && p.samplers.empty()) return true;
+  bool newSet = (dirty_ & kDescriptors) || !set_;
+  for (uint32_t i = 0; i < nCB; ++i) {
+    const auto& s = p.cbs[i];
+    BufferImpl* b = cbs_[s.stage][s.slot];
+    VkBuffer buf = dev_->dummyUniform;
+    uint32_t off = 0, range = static_cast<uint32_t>(dev_->dummyUniformSize);
+    if (b) {
+      b->EnsureUploaded();
+      buf = b->ring.buffer;
+      off = static_cast<uint32_t>(b->ring.offset);
+      range = b->desc_.ByteWidth;
+    }
+    if (buf != setCbBuffers_[i] || range != setCbRanges_[i]) newSet = true;
+    dynOffsets_[i] = off;
+  }
+  if (newSet && !WriteNewSet()) return false;
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.layout, 0, 1, &set_, nCB, dynOffsets_);
+  return true;
+}
+
+bool ContextImpl::WriteNewSet() {
+  VkDescriptorSet set = dev_->AllocateSet(program_->setLayout);
+  if (!set) return ErrorOnce(1u << 8, "draw skipped: descriptor set allocation failed"), false;
+  VkDescriptorBufferInfo bufInfo[2 * kMaxConstantBufferSlots];
+  VkDescriptorImageInfo imgInfo[2 * (kMaxTextureSlots + kMaxSamplerSlots)];
+  VkWriteDescriptorSet writes[2 * (kMaxConstantBufferSlots + kMaxTextureSlots + kMaxSamplerSlots)];
+  uint32_t nw = 0, ni = 0;
+  const uint32_t nCB = static_cast<uint32_t>(program_->cbs.size());
+  for (uint32_t i = 0; i < nCB; ++i) {
+    const auto& s = program_->cbs[i];
+    BufferImpl* b = cbs_[s.stage][s.slot];
+    bufInfo[i] = {b ? b->ring.buffer : dev_->dummyUniform, 0,
+                  b ? b->desc_.ByteWidth : dev_->dummyUniformSize};
+    setCbBuffers_[i] = bufInfo[i].buffer;
+    setCbRanges_[i] = static_cast<uint32_t>(bufInfo[i].range);
+    writes[nw] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writes[nw].dstSet = set;
+    writes[nw].dstBinding = s.binding;
+    writes[nw].descriptorCount = 1;
+    writes[nw].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC;
+    writes[nw++].pBufferInfo = &bufInfo[i];
+  }
+  for (const auto& s : program_->srvs) {
+    SRVImpl* v = srvs_[s.stage][s.slot];
+    imgInfo[ni] = {VK_NULL_HANDLE,
+                   v ? v->v.Current() : (s.image1D ? dev_->dummyImageView1D : dev_->dummyImageView2D),
+                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    writes[nw] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writes[nw].dstSet = set;
+    writes[nw].dstBinding = s.binding;
+    writes[nw].descriptorCount = 1;
+    writes[nw].descriptorType = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    writes[nw++].pImageInfo = &imgInfo[ni++];
+  }
+  for (const auto& s : program_->samplers) {
+    SamplerImpl* smp = samplers_[s.stage][s.slot];
+    imgInfo[ni] = {smp ? smp->sampler : dev_->dummySampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED};
+    writes[nw] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    writes[nw].dstSet = set;
+    writes[nw].dstBinding = s.binding;
+    writes[nw].descriptorCount = 1;
+    writes[nw].descriptorType = VK_DESCRIPTOR_TYPE_SAMPLER;
+    writes[nw++].pImageInfo = &imgInfo[ni++];
+  }
+  vkUpdateDescriptorSets(dev_->vk(), nw, writes, 0, nullptr);
+  set_ = set;
   return true;
 }
 

@@ -22,6 +22,7 @@ ContextImpl::ContextImpl(DeviceImpl* dev) : dev_(dev) {
 }
 
 ContextImpl::~ContextImpl() {
+  SaveDiscardedConstants();
   ClearState();
   if (defRaster_) defRaster_->Release();
   if (defBlend_) defBlend_->Release();

@@ -113,6 +113,7 @@ void DeviceImpl::SubmitFrame(const std::vector<VkSemaphore>& wait,
   if (context_) {
     context_->EndRendering();
     context_->FlushBarriers();
+    context_->SaveDiscardedConstants();  // their ring slices die with this frame
   }
   // Everything written this frame becomes visible to the host (Map READ).
   VkMemoryBarrier2 mb{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
@@ -251,7 +252,7 @@ void DeviceImpl::DestroyNow(const Garbage& g) {
   }
 }
 
-bool DeviceImpl::AllocateRing(VkDeviceSize size, VkDeviceSize align, RingAlloc* out) {
+bool DeviceImpl::AllocateRingSlow(VkDeviceSize size, VkDeviceSize align, RingAlloc* out) {
   auto& ring = frames_[slot_].ring;
   uint64_t before = ring.bytesAllocated;
   bool ok = ring.Allocate(size, align, out);

@@ -162,6 +162,20 @@ class ConstantRing {
   void Destroy();
   void Reset();  // the frame that used these chunks has completed
   bool Allocate(VkDeviceSize size, VkDeviceSize align, RingAlloc* out);
+  // Hot path of Allocate (one per constant-buffer Map): succeeds only when the
+  // current chunk has room. `align` is a power of two (all callers; Vulkan
+  // guarantees it for minUniformBufferOffsetAlignment).
+  bool TryAllocate(VkDeviceSize size, VkDeviceSize align, RingAlloc* out) {
+    if (current_ >= chunks_.size() || size == 0) return false;
+    const Chunk& c = chunks_[current_];
+    const VkDeviceSize off = (offset_ + align - 1) & ~(align - 1);
+    if (off + size > c.size) return false;
+    out->buffer = c.buffer;
+    out->offset = off;
+    out->ptr = c.ptr + off;
+    offset_ = off + size;
+    return true;
+  }
   uint64_t bytesAllocated = 0;
 
  private:
@@ -185,10 +199,20 @@ class BufferImpl final : public Child<Buffer> {
   void OnDebugName() override;
 
   // Ensures the ring holds this frame's copy of a constant buffer.
-  void EnsureUploaded();
+  inline void EnsureUploaded();
+  // Map(WRITE_DISCARD) of a DYNAMIC constant buffer writes straight into a
+  // ring slice; the shadow is refreshed from it only when the slice is about
+  // to die (frame end) or when a partial write needs the old contents.
+  void SyncShadow() {
+    if (!shadowStale) return;
+    std::memcpy(shadow.data(), ring.ptr, desc_.ByteWidth);
+    shadowStale = false;
+  }
 
   BUFFER_DESC desc_;
   bool isConstant = false;  // CPU shadow + ring copy
+  bool isDynamicConstant = false;  // isConstant && USAGE_DYNAMIC: Map(WRITE_DISCARD) hot path
+  bool shadowStale = false;  // `ring` (this frame) is newer than `shadow`
   bool isRing = false;      // DYNAMIC vertex/index buffer living in the ring
   std::vector<uint8_t> shadow;
   RingAlloc ring{};
@@ -263,7 +287,6 @@ class TextureImpl final : public Child<Iface> {
 using Texture2DImpl = TextureImpl<Texture2D, RESOURCE_DIMENSION_TEXTURE2D>;
 using Texture1DImpl = TextureImpl<Texture1D, RESOURCE_DIMENSION_TEXTURE1D>;
 
-BufferImpl* AsBuffer(Resource* r);
 bool CreateTextureImage(DeviceImpl* dev, TextureCore& core, TextureImage* out);
 TextureCore* AsTexture(Resource* r);
 
@@ -561,7 +584,7 @@ class DeviceImpl final : public Device {
   void WaitForSerial(uint64_t serial);
   // Semaphores the next submission waits for (swap-chain acquires).
   void AddPendingWait(VkSemaphore s) { pendingWaits_.push_back(s); }
-  bool AllocateRing(VkDeviceSize size, VkDeviceSize align, RingAlloc* out);
+  inline bool AllocateRing(VkDeviceSize size, VkDeviceSize align, RingAlloc* out);
   VkDescriptorSet AllocateSet(VkDescriptorSetLayout layout);
   bool AllocateTimestamp(QueryImpl* q, uint32_t* index);
 
@@ -634,6 +657,7 @@ class DeviceImpl final : public Device {
   std::atomic<uint64_t> uidCounter_{0};
   std::vector<Garbage> dummyGarbage_;
   bool shuttingDown_ = false;
+  bool AllocateRingSlow(VkDeviceSize size, VkDeviceSize align, RingAlloc* out);
 
  public:
   bool anisotropy() const { return anisotropy_; }
@@ -643,5 +667,25 @@ class DeviceImpl final : public Device {
 };
 
 std::string ToUpper(const char* s);
+
+// Hot-path helpers, inline because they run once per draw.
+inline bool DeviceImpl::AllocateRing(VkDeviceSize size, VkDeviceSize align, RingAlloc* out) {
+  if (frames_[slot_].ring.TryAllocate(size, align, out)) return true;
+  return AllocateRingSlow(size, align, out);  // a new chunk: keeps the stats
+}
+
+inline void BufferImpl::EnsureUploaded() {
+  if (ringSerial == dev_->CurrentSerial()) return;
+  RingAlloc a;
+  if (!dev_->AllocateRing(desc_.ByteWidth, dev_->uboAlign(), &a)) return;
+  std::memcpy(a.ptr, shadow.data(), desc_.ByteWidth);
+  ring = a;
+  ringSerial = dev_->CurrentSerial();
+}
+
+inline BufferImpl* AsBuffer(Resource* r) {
+  if (!r || r->GetType() != RESOURCE_DIMENSION_BUFFER) return nullptr;
+  return static_cast<BufferImpl*>(static_cast<Buffer*>(r));
+}
 
 }  // namespace d3dl::impl

@@ -31,11 +31,6 @@ void LinearLayout(const FormatInfo* f, uint32_t w, uint32_t h, uint32_t* rowPitc
 }
 }  // namespace
 
-BufferImpl* AsBuffer(Resource* r) {
-  if (!r || r->GetType() != RESOURCE_DIMENSION_BUFFER) return nullptr;
-  return static_cast<BufferImpl*>(static_cast<Buffer*>(r));
-}
-
 TextureCore* AsTexture(Resource* r) {
   if (!r) return nullptr;
   switch (r->GetType()) {
@@ -52,20 +47,12 @@ TextureCore* AsTexture(Resource* r) {
 BufferImpl::BufferImpl(DeviceImpl* d, const BUFFER_DESC& desc) : Child(d), desc_(desc) {}
 
 BufferImpl::~BufferImpl() {
+  if (shadowStale && dev_->context()) dev_->context()->ForgetDiscardedConstants(this);
   dev_->Defer(VK_OBJECT_TYPE_BUFFER, reinterpret_cast<uint64_t>(buffer));
   dev_->Defer(VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<uint64_t>(memory));
 }
 
 void BufferImpl::OnDebugName() { dev_->SetName(VK_OBJECT_TYPE_BUFFER, reinterpret_cast<uint64_t>(buffer), name_); }
-
-void BufferImpl::EnsureUploaded() {
-  if (ringSerial == dev_->CurrentSerial()) return;
-  RingAlloc a;
-  if (!dev_->AllocateRing(desc_.ByteWidth, dev_->uboAlign(), &a)) return;
-  std::memcpy(a.ptr, shadow.data(), desc_.ByteWidth);
-  ring = a;
-  ringSerial = dev_->CurrentSerial();
-}
 
 HRESULT DeviceImpl::CreateBuffer(const BUFFER_DESC* desc, const SUBRESOURCE_DATA* init,
                                  Buffer** out) {
@@ -125,6 +112,7 @@ HRESULT DeviceImpl::CreateBuffer(const BUFFER_DESC* desc, const SUBRESOURCE_DATA
   auto* b = new BufferImpl(this, d);
   if (isCB) {
     b->isConstant = true;
+    b->isDynamicConstant = d.Usage == USAGE_DYNAMIC;
     b->shadow.assign(d.ByteWidth, 0);
     if (init) std::memcpy(b->shadow.data(), init->pSysMem, d.ByteWidth);
   } else if (d.Usage == USAGE_DYNAMIC) {

@@ -40,19 +40,29 @@ DrawConstants ConstantsForDraw(uint32_t i, uint32_t n) {
 
 namespace {
 
+// The benchmarks' recorders, kept across repetitions. They must be destroyed
+// before main returns: a static destructor would run after the Vulkan driver
+// (loaded after this array's registration) has torn itself down at exit.
+std::unique_ptr<Recorder> g_recorders[2];
+
+void DestroyRecorders() {
+  for (auto& r : g_recorders) r.reset();
+}
+
 std::unique_ptr<Recorder> Make(bool rhi) {
   std::unique_ptr<Recorder> r(rhi ? CreateRhiRecorder() : CreateRawVulkanRecorder());
   std::string error;
   if (!r->Init(&error)) {
     std::fprintf(stderr, "%s recorder: %s\n", rhi ? "rhi" : "raw", error.c_str());
+    r.reset();
+    DestroyRecorders();  // std::exit runs static destructors, not these
     std::exit(1);
   }
   return r;
 }
 
 void RecordDraws(benchmark::State& state, bool rhi) {
-  static std::unique_ptr<Recorder> recorders[2];
-  auto& rec = recorders[rhi ? 1 : 0];
+  auto& rec = g_recorders[rhi ? 1 : 0];
   if (!rec) rec = Make(rhi);
   const auto n = static_cast<uint32_t>(state.range(0));
   for (auto _ : state) {
@@ -129,6 +139,7 @@ int main(int argc, char** argv) {
   benchmark::Initialize(&n, args.data());
   drrbench::RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
+  drrbench::DestroyRecorders();
   const auto raw = reporter.times.find("BM_RawVulkan");
   const auto rhi = reporter.times.find("BM_D3DLikeRHI");
   if (raw != reporter.times.end() && rhi != reporter.times.end() && raw->second > 0) {
