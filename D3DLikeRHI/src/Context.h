@@ -111,12 +111,15 @@ class ContextImpl final : public DeviceContext {
     kSrvLayouts = 1u << 9,   // some texture changed layout: re-check SRVs
     kProgram = 1u << 10,
     kTopology = 1u << 11,
+    kCbSlots = 1u << 12,     // a CB slot was (re)bound: hotCbs_ is out of date
     kAll = 0xffffffffu,
   };
 
   inline bool Commit(bool indexed);
   bool CommitSlow(bool indexed);
   bool BindDescriptors(VkCommandBuffer cmd);
+  inline bool BindConstantsHot(VkCommandBuffer cmd);
+  void ListDiscarded(BufferImpl* b);
   bool WriteNewSet();
   HRESULT MapDiscardConstants(BufferImpl* b, MAPPED_SUBRESOURCE* mapped);
   bool BeginRendering();
@@ -182,6 +185,11 @@ class ContextImpl final : public DeviceContext {
   VkBuffer setCbBuffers_[2 * kMaxConstantBufferSlots] = {};
   uint32_t setCbRanges_[2 * kMaxConstantBufferSlots] = {};
   uint32_t dynOffsets_[2 * kMaxConstantBufferSlots] = {};
+  // What BindDescriptors last bound, for BindConstantsHot: the program's CBs
+  // in binding order (null: dummy) and its layout (null: no descriptor set).
+  BufferImpl* hotCbs_[2 * kMaxConstantBufferSlots] = {};
+  uint32_t nHotCbs_ = 0;
+  VkPipelineLayout hotLayout_ = VK_NULL_HANDLE;
   int labelDepth_ = 0;
 
   std::vector<VkImageMemoryBarrier2> imageBarriers_;
@@ -196,8 +204,23 @@ class ContextImpl final : public DeviceContext {
 inline bool ContextImpl::Commit(bool indexed) {
   const uint32_t ignored = indexed ? uint32_t(kConstants) : uint32_t(kConstants | kIndexBuffer);
   if ((dirty_ & ~ignored) != 0 || !rendering_ || HasPendingBarriers()) return CommitSlow(indexed);
-  if ((dirty_ & kConstants) && !BindDescriptors(dev_->Cmd())) return false;
+  if ((dirty_ & kConstants) && !BindConstantsHot(dev_->Cmd())) return false;
   dirty_ &= indexed ? 0u : uint32_t(kIndexBuffer);
+  return true;
+}
+
+// Same descriptor set and CB bindings as the last BindDescriptors: only the
+// dynamic offsets change (unless a CB's ring slice moved to another chunk).
+inline bool ContextImpl::BindConstantsHot(VkCommandBuffer cmd) {
+  if (!hotLayout_) return true;
+  for (uint32_t i = 0; i < nHotCbs_; ++i) {
+    BufferImpl* b = hotCbs_[i];
+    if (!b) continue;  // the dummy buffer: offset 0
+    b->EnsureUploaded();
+    if (b->ring.buffer != setCbBuffers_[i]) return BindDescriptors(cmd);
+    dynOffsets_[i] = static_cast<uint32_t>(b->ring.offset);
+  }
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, hotLayout_, 0, 1, &set_, nHotCbs_, dynOffsets_);
   return true;
 }
 

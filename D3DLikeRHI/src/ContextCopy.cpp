@@ -31,20 +31,21 @@ bool ContextImpl::WaitForResource(uint64_t lastUse, UINT flags, HRESULT* hr) {
 // Hot path of Map: a fresh ring slice per WRITE_DISCARD, written by the
 // application in place (no shadow copy per draw; see BufferImpl::SyncShadow).
 HRESULT ContextImpl::MapDiscardConstants(BufferImpl* b, MAPPED_SUBRESOURCE* mapped) {
-  RingAlloc a;
-  if (!dev_->AllocateRing(b->desc_.ByteWidth, dev_->uboAlign(), &a)) {
+  if (!dev_->AllocateRing(b->desc_.ByteWidth, dev_->uboAlign(), &b->ring)) {  // writes only on success
     *mapped = {};
     return E_OUTOFMEMORY;
   }
-  b->ring = a;
   b->ringSerial = dev_->CurrentSerial();
-  if (!b->shadowStale) {
-    b->shadowStale = true;
-    discardedCBs_.push_back(b);
-  }
-  mapped->pData = a.ptr;
+  if (!b->shadowStale) ListDiscarded(b);  // once per buffer and frame
+  mapped->pData = b->ring.ptr;
   mapped->RowPitch = mapped->DepthPitch = b->desc_.ByteWidth;
   return S_OK;
+}
+
+// Out of line so that MapDiscardConstants stays a leaf without spills.
+__attribute__((noinline)) void ContextImpl::ListDiscarded(BufferImpl* b) {
+  b->shadowStale = true;
+  discardedCBs_.push_back(b);
 }
 
 void ContextImpl::SaveDiscardedConstants() {

@@ -231,6 +231,8 @@ bool ContextImpl::CommitSlow(bool indexed) {
 bool ContextImpl::BindDescriptors(VkCommandBuffer cmd) {
   const ProgramLayout& p = *program_;
   const uint32_t nCB = static_cast<uint32_t>(p.cbs.size());
+  hotLayout_ = VK_NULL_HANDLE;
+  nHotCbs_ = 0;
   if (nCB == 0 && p.srvs.empty() && p.samplers.empty()) return true;
   bool newSet = (dirty_ & kDescriptors) || !set_;
   for (uint32_t i = 0; i < nCB; ++i) {
@@ -246,8 +248,11 @@ bool ContextImpl::BindDescriptors(VkCommandBuffer cmd) {
     }
     if (buf != setCbBuffers_[i] || range != setCbRanges_[i]) newSet = true;
     dynOffsets_[i] = off;
+    hotCbs_[i] = b;
   }
   if (newSet && !WriteNewSet()) return false;
+  hotLayout_ = p.layout;
+  nHotCbs_ = nCB;
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.layout, 0, 1, &set_, nCB, dynOffsets_);
   return true;
 }

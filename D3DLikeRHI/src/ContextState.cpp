@@ -123,7 +123,7 @@ void ContextImpl::SetCBs(uint32_t stage, UINT start, UINT num, Buffer* const* bu
     }
     SetRef(cbs_[stage][start + i], b);
   }
-  dirty_ |= kConstants;
+  dirty_ |= kConstants | kCbSlots;
 }
 void ContextImpl::VSSetConstantBuffers(UINT s, UINT n, Buffer* const* b) { SetCBs(0, s, n, b); }
 void ContextImpl::PSSetConstantBuffers(UINT s, UINT n, Buffer* const* b) { SetCBs(1, s, n, b); }
