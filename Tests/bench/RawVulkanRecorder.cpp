@@ -148,15 +148,14 @@ class RawVulkanRecorder final : public Recorder {
     VK_TRY(vkAllocateCommandBuffers(device_, &cai, &cmd_));
     VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     VK_TRY(vkCreateFence(device_, &fci, nullptr, &fence_));
+    BeginCommandBuffer();
     return true;
   }
 
+  // The command buffer was begun after the previous submission's wait (as the
+  // RHI does at its frame boundary), so only the frame's commands are timed.
   void Record(uint32_t n) override {
     EnsureRing(n);
-    vkResetCommandPool(device_, pool_, 0);
-    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    vkBeginCommandBuffer(cmd_, &bi);
 
     Transition(VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
@@ -221,6 +220,7 @@ class RawVulkanRecorder final : public Recorder {
     vkQueueSubmit2(queue_, 1, &si, fence_);
     vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX);
     vkResetFences(device_, 1, &fence_);
+    BeginCommandBuffer();
   }
 
   std::vector<uint8_t> ReadBack() override {
@@ -231,6 +231,13 @@ class RawVulkanRecorder final : public Recorder {
   uint64_t ValidationMessages() const override { return g_rawValidationMessages; }
 
  private:
+  void BeginCommandBuffer() {
+    vkResetCommandPool(device_, pool_, 0);
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vkBeginCommandBuffer(cmd_, &bi);
+  }
+
   uint32_t FindMemory(uint32_t typeBits, VkMemoryPropertyFlags flags) const {
     VkPhysicalDeviceMemoryProperties mp;
     vkGetPhysicalDeviceMemoryProperties(gpu_, &mp);

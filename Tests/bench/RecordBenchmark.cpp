@@ -82,13 +82,14 @@ class RatioReporter : public benchmark::ConsoleReporter {
  public:
   void ReportRuns(const std::vector<Run>& runs) override {
     ConsoleReporter::ReportRuns(runs);
+    // Single runs land under "", repetitions' aggregates under "mean"/"median".
     for (const Run& run : runs) {
-      if (run.run_type == Run::RT_Aggregate && run.aggregate_name != "median") continue;
-      const std::string name = run.run_name.function_name;
-      times[name] = run.GetAdjustedRealTime();
+      const std::string kind = run.run_type == Run::RT_Aggregate ? run.aggregate_name : "";
+      if (kind == "" || kind == "mean" || kind == "median")
+        times[kind][run.run_name.function_name] = run.GetAdjustedRealTime();
     }
   }
-  std::map<std::string, double> times;
+  std::map<std::string, std::map<std::string, double>> times;
 };
 
 int Smoke() {
@@ -140,11 +141,12 @@ int main(int argc, char** argv) {
   drrbench::RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   drrbench::DestroyRecorders();
-  const auto raw = reporter.times.find("BM_RawVulkan");
-  const auto rhi = reporter.times.find("BM_D3DLikeRHI");
-  if (raw != reporter.times.end() && rhi != reporter.times.end() && raw->second > 0) {
-    std::printf("ratio D3DLikeRHI / raw Vulkan recording (%lld draws): %.3f\n",
-                static_cast<long long>(draws), rhi->second / raw->second);
+  for (const auto& [kind, t] : reporter.times) {
+    const auto raw = t.find("BM_RawVulkan"), rhi = t.find("BM_D3DLikeRHI");
+    if (raw == t.end() || rhi == t.end() || raw->second <= 0) continue;
+    std::printf("ratio D3DLikeRHI / raw Vulkan recording (%lld draws%s%s): %.3f\n",
+                static_cast<long long>(draws), kind.empty() ? "" : ", ", kind.c_str(),
+                rhi->second / raw->second);
   }
   benchmark::Shutdown();
   return 0;
