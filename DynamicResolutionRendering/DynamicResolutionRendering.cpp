@@ -708,6 +708,10 @@ void Sample::OnFrameMove(double time, double elapsed) {
 }
 
 void Sample::ControlResolution(double innerFrameSeconds, double frameSeconds) {
+  if (m_CostModel) {
+    innerFrameSeconds = frameSeconds =
+        m_CostModel(m_DynamicResolution.GetScaleX(), m_DynamicResolution.GetScaleY()) / 1000.0;
+  }
   FrameTiming timing;
   timing.gpuInnerSeconds = innerFrameSeconds;
   timing.frameSeconds = frameSeconds;

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <chrono>
+#include <functional>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -89,6 +90,12 @@ class Sample {
   // The next RenderFrame reads back the back buffer (with and without the
   // GUI), the target the scene drew colour into, and the current velocity.
   void RequestCapture() { m_CaptureRequested = true; }
+  // Replaces the measured times that ControlResolution sees with a model of
+  // the GPU frame time (ms) at a viewport scale, so a closed-loop test is
+  // deterministic; the laws still run on the real timer cadence. Empty = off.
+  void SetFrameCostModel(std::function<double(double scaleX, double scaleY)> gpuMs) {
+    m_CostModel = std::move(gpuMs);
+  }
   const ImageRGBA8& CapturedBackBuffer() const { return m_CapBackBuffer; }
   const ImageRGBA8& CapturedBackBufferNoGui() const { return m_CapBackBufferNoGui; }
   const ImageRGBA8& CapturedSceneColor() const { return m_CapSceneColor; }  // whole RT
@@ -261,6 +268,7 @@ class Sample {
   ImageRG32F m_CapVelocity;
 
   uint64_t m_ValidationAtInit = 0;
+  std::function<double(double, double)> m_CostModel;
 };
 
 // The program: parses the command line, runs the sample, returns the exit code.

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "imageio/ImageFile.h"
+#include "imageio/Srgb.h"
 
 namespace drr::Utility {
 
@@ -74,7 +75,7 @@ bool SaveImageRGBA8(const std::string& path, uint32_t w, uint32_t h, const uint8
   std::vector<float> f(size_t(w) * h * 4);
   for (size_t i = 0; i < f.size(); ++i) {
     const float c = rgba[i] / 255.0f;
-    f[i] = (i % 4 == 3) ? c : (c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f));
+    f[i] = (i % 4 == 3) ? c : SrgbToLinear(c);
   }
   return WriteImageFileFloat(path, w, h, 4, f.data(), error);
 }

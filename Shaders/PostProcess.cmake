@@ -1,5 +1,5 @@
 # Post-processing, zoom box and GUI shaders of the sample (issue #5).
-set(_drr_post_common ${CMAKE_CURRENT_SOURCE_DIR}/CommonPost.hlsli)
+set(_drr_post_common ${CMAKE_CURRENT_SOURCE_DIR}/CommonPost.hlsli ${CMAKE_CURRENT_SOURCE_DIR}/ClearPS.hlsli)
 set(_drr_post_outputs)
 
 # drr_post_shader(<output name> <source> <entry> <stage> [defines...])

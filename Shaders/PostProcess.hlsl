@@ -37,18 +37,4 @@ float4 MotionBlurPS(PostVSOut i) : SV_Target0 {
   return float4(acc / wsum, saturate(dot(vPix, vPix)));
 }
 
-struct ClearOut {
-  float4 color : SV_Target0;
-#ifdef CLEAR_VELOCITY
-  float2 velocity : SV_Target1;
-#endif
-};
-
-ClearOut ClearPS(PostVSOut i) {
-  ClearOut o;
-  o.color = g_ClearColor;
-#ifdef CLEAR_VELOCITY
-  o.velocity = float2(0.0, 0.0);
-#endif
-  return o;
-}
+#include "ClearPS.hlsli"

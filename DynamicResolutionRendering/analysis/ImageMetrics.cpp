@@ -20,15 +20,6 @@ ImageF ImageFromRGBA8(const uint8_t* rgba, uint32_t width, uint32_t height, uint
   return img;
 }
 
-float SrgbToLinear(float v) {
-  return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
-
-float LinearToSrgb(float v) {
-  v = std::clamp(v, 0.0f, 1.0f);
-  return v <= 0.0031308f ? v * 12.92f : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-}
-
 ImageF Downsample(const ImageF& image, uint32_t factor) {
   ImageF out;
   if (factor == 0 || image.width % factor || image.height % factor) return out;

@@ -8,6 +8,8 @@
 #include <limits>
 #include <vector>
 
+#include "imageio/Srgb.h"
+
 namespace drr {
 
 // An RGB(A) image with float channels in [0, 1] (display-encoded, i.e. the
@@ -39,8 +41,5 @@ ImageError CompareImages(const ImageF& a, const ImageF& b);
 // sampled reference of the reports). Width and height must be divisible.
 ImageF Downsample(const ImageF& image, uint32_t factor);
 
-// Linear <-> sRGB transfer for averaging in linear light.
-float SrgbToLinear(float v);
-float LinearToSrgb(float v);
 
 }  // namespace drr

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "imageio/ImageFile.h"
+#include "imageio/Srgb.h"
 
 namespace drr {
 namespace fs = std::filesystem;
@@ -34,20 +35,13 @@ namespace {
 const std::array<float, 256>& SrgbToLinearTable() {
   static const std::array<float, 256> t = [] {
     std::array<float, 256> a{};
-    for (int i = 0; i < 256; ++i) {
-      float c = i / 255.f;
-      a[i] = c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-    }
+    for (int i = 0; i < 256; ++i) a[i] = SrgbToLinear(i / 255.f);
     return a;
   }();
   return t;
 }
 
-uint8_t LinearToSrgb8(float l) {
-  l = std::clamp(l, 0.f, 1.f);
-  float c = l <= 0.0031308f ? l * 12.92f : 1.055f * std::pow(l, 1.f / 2.4f) - 0.055f;
-  return static_cast<uint8_t>(std::lround(c * 255.f));
-}
+uint8_t LinearToSrgb8(float l) { return static_cast<uint8_t>(std::lround(LinearToSrgb(l) * 255.f)); }
 
 uint8_t ToByte(float v) { return static_cast<uint8_t>(std::lround(std::clamp(v, 0.f, 1.f) * 255.f)); }
 
