@@ -146,15 +146,22 @@ float TAAWeight(float4 cC, float4 cP, float2 uvC, float2 uvP) {
 #endif
 }
 
-float4 TAAPS(PostVSOut i) : SV_Target0 {
-  float2 uvC, uvP;
-  TAAUVs(i.uv, uvC, uvP);
+// Samples the current and previous frames at their UVs, clamped to the used
+// part of each RT. basic = plain average; else the velocity-weighted blend
+// C = (C_n + S C_n-1) / (1 + S).
+float4 TAABlend(float2 uvC, float2 uvP, bool basic) {
   uvC = ClampToUsed(uvC, g_SubSampleRTCurrRatio);
   uvP = ClampToUsed(uvP, g_SubSampleRTPrevRatio);
   float4 cC = SanitizeColor(g_ColorCurr.SampleLevel(g_PointClamp, uvC, 0));
   float4 cP = SanitizeColor(g_ColorPrev.SampleLevel(g_PointClamp, uvP, 0));
-  float S = TAAWeight(cC, cP, uvC, uvP);
+  float S = basic ? 1.0 : TAAWeight(cC, cP, uvC, uvP);
   return float4((cC.rgb + S * cP.rgb) / (1.0 + S), 1.0);
+}
+
+float4 TAAPS(PostVSOut i) : SV_Target0 {
+  float2 uvC, uvP;
+  TAAUVs(i.uv, uvC, uvP);
+  return TAABlend(uvC, uvP, false);
 }
 
 // TAA with the noise-offset jitter; the noise is looked up at the sum of
@@ -164,21 +171,12 @@ float4 TAANoiseOffsetPS(PostVSOut i) : SV_Target0 {
   TAAUVs(i.uv, uvC, uvP);
   float4 n = g_Noise.SampleLevel(g_PointWrap, (uvC + uvP) * g_DynSize / kNoiseSize, 0);
   float2 offset = 2.0 * (n.xy - 0.5) * (0.5 * g_InvDynSize);
-  uvC = ClampToUsed(uvC + offset, g_SubSampleRTCurrRatio);
-  uvP = ClampToUsed(uvP + offset, g_SubSampleRTPrevRatio);
-  float4 cC = SanitizeColor(g_ColorCurr.SampleLevel(g_PointClamp, uvC, 0));
-  float4 cP = SanitizeColor(g_ColorPrev.SampleLevel(g_PointClamp, uvP, 0));
-  float S = TAAWeight(cC, cP, uvC, uvP);
-  return float4((cC.rgb + S * cP.rgb) / (1.0 + S), 1.0);
+  return TAABlend(uvC + offset, uvP + offset, false);
 }
 
 // TAA basic: plain average (shows ghosting on motion).
 float4 TAABasicPS(PostVSOut i) : SV_Target0 {
   float2 uvC, uvP;
   TAAUVs(i.uv, uvC, uvP);
-  uvC = ClampToUsed(uvC, g_SubSampleRTCurrRatio);
-  uvP = ClampToUsed(uvP, g_SubSampleRTPrevRatio);
-  float4 cC = SanitizeColor(g_ColorCurr.SampleLevel(g_PointClamp, uvC, 0));
-  float4 cP = SanitizeColor(g_ColorPrev.SampleLevel(g_PointClamp, uvP, 0));
-  return float4(0.5 * (cC.rgb + cP.rgb), 1.0);
+  return TAABlend(uvC, uvP, true);
 }

@@ -108,22 +108,36 @@ template class ViewImpl<ShaderResourceView, ViewKind::SRV>;
 template class ViewImpl<RenderTargetView, ViewKind::RTV>;
 template class ViewImpl<DepthStencilView, ViewKind::DSV>;
 
+// What every Create*View starts with: the output pointer, a new view object
+// and the resource / format / bind-flag checks of Prepare. nullptr (and *hr
+// set) when any of them fails; the caller then returns *hr.
+template <class Impl, class Iface>
+static Impl* BeginView(DeviceImpl* dev, const char* fn, const char* outName, Resource* r,
+                       DXGI_FORMAT format, UINT bind, const char* bindName, Iface** out,
+                       HRESULT* hr) {
+  if (!out) {
+    dev->Log(LogLevel::Error, "%s: %s is null", fn, outName);
+    *hr = E_INVALIDARG;
+    return nullptr;
+  }
+  *out = nullptr;
+  auto* view = new Impl(dev);
+  *hr = Prepare(dev, fn, r, format, bind, bindName, view->v);
+  if (FAILED(*hr)) {
+    view->Release();
+    return nullptr;
+  }
+  return view;
+}
+
 HRESULT DeviceImpl::CreateShaderResourceView(Resource* r, const SHADER_RESOURCE_VIEW_DESC* desc,
                                              ShaderResourceView** out) {
   const char* fn = "CreateShaderResourceView";
-  if (!out) {
-    Log(LogLevel::Error, "%s: ppSRView is null", fn);
-    return E_INVALIDARG;
-  }
-  *out = nullptr;
-  auto* view = new SRVImpl(this);
+  HRESULT hr;
+  auto* view = BeginView<SRVImpl>(this, fn, "ppSRView", r, desc ? desc->Format : DXGI_FORMAT_UNKNOWN,
+                                  BIND_SHADER_RESOURCE, "BIND_SHADER_RESOURCE", out, &hr);
+  if (!view) return hr;
   ViewCore& v = view->v;
-  HRESULT hr = Prepare(this, fn, r, desc ? desc->Format : DXGI_FORMAT_UNKNOWN,
-                       BIND_SHADER_RESOURCE, "BIND_SHADER_RESOURCE", v);
-  if (FAILED(hr)) {
-    view->Release();
-    return hr;
-  }
   const TextureCore* t = v.tex;
   uint32_t most = 0, count = t->desc.MipLevels;
   if (desc) {
@@ -157,19 +171,11 @@ HRESULT DeviceImpl::CreateShaderResourceView(Resource* r, const SHADER_RESOURCE_
 HRESULT DeviceImpl::CreateRenderTargetView(Resource* r, const RENDER_TARGET_VIEW_DESC* desc,
                                            RenderTargetView** out) {
   const char* fn = "CreateRenderTargetView";
-  if (!out) {
-    Log(LogLevel::Error, "%s: ppRTView is null", fn);
-    return E_INVALIDARG;
-  }
-  *out = nullptr;
-  auto* view = new RTVImpl(this);
+  HRESULT hr;
+  auto* view = BeginView<RTVImpl>(this, fn, "ppRTView", r, desc ? desc->Format : DXGI_FORMAT_UNKNOWN,
+                                  BIND_RENDER_TARGET, "BIND_RENDER_TARGET", out, &hr);
+  if (!view) return hr;
   ViewCore& v = view->v;
-  HRESULT hr = Prepare(this, fn, r, desc ? desc->Format : DXGI_FORMAT_UNKNOWN, BIND_RENDER_TARGET,
-                       "BIND_RENDER_TARGET", v);
-  if (FAILED(hr)) {
-    view->Release();
-    return hr;
-  }
   uint32_t mip = desc ? desc->MipSlice : 0;
   if (mip >= v.tex->desc.MipLevels) {
     Log(LogLevel::Error, "%s: MipSlice %u out of range (texture has %u mips)", fn, mip, v.tex->desc.MipLevels);
@@ -185,19 +191,12 @@ HRESULT DeviceImpl::CreateRenderTargetView(Resource* r, const RENDER_TARGET_VIEW
 HRESULT DeviceImpl::CreateDepthStencilView(Resource* r, const DEPTH_STENCIL_VIEW_DESC* desc,
                                            DepthStencilView** out) {
   const char* fn = "CreateDepthStencilView";
-  if (!out) {
-    Log(LogLevel::Error, "%s: ppDepthStencilView is null", fn);
-    return E_INVALIDARG;
-  }
-  *out = nullptr;
-  auto* view = new DSVImpl(this);
+  HRESULT hr;
+  auto* view = BeginView<DSVImpl>(this, fn, "ppDepthStencilView", r,
+                                  desc ? desc->Format : DXGI_FORMAT_UNKNOWN, BIND_DEPTH_STENCIL,
+                                  "BIND_DEPTH_STENCIL", out, &hr);
+  if (!view) return hr;
   ViewCore& v = view->v;
-  HRESULT hr = Prepare(this, fn, r, desc ? desc->Format : DXGI_FORMAT_UNKNOWN, BIND_DEPTH_STENCIL,
-                       "BIND_DEPTH_STENCIL", v);
-  if (FAILED(hr)) {
-    view->Release();
-    return hr;
-  }
   if (desc && desc->Format != DXGI_FORMAT_UNKNOWN && desc->Format != DXGI_FORMAT_D32_FLOAT) {
     Log(LogLevel::Error, "%s: Format %s is not a depth format", fn, FormatName(desc->Format));
     view->Release();
