@@ -215,6 +215,16 @@ TEST_F(SampleFixture, PointAtHalfEqualsNearestNeighbourUpscale) {
   EXPECT_LE(d.maxAbs, 1);
 }
 
+// Magenta-ish pixels: the marker that --debug-marker-outside writes outside the viewport.
+uint64_t CountMarkerPixels(const ImageRGBA8& img) {
+  uint64_t n = 0;
+  for (size_t p = 0; p < img.pixels.size(); p += 4) {
+    const int r = img.pixels[p], g = img.pixels[p + 1], b = img.pixels[p + 2];
+    n += (r > 60 && b > 60 && g < r / 2 && g < b / 2 && std::abs(r - b) < 40);
+  }
+  return n;
+}
+
 TEST_F(SampleFixture, MotionBlurNeverReadsOutsideTheViewport) {
   Options o = TinyOptions(160, 90);
   o.motionBlur = true;
@@ -230,22 +240,12 @@ TEST_F(SampleFixture, MotionBlurNeverReadsOutsideTheViewport) {
       o.scaleX = o.scaleY = scale;
       sample.ApplySettings(o);
       RenderFrames(sample, 4);
-      const ImageRGBA8& bb = sample.CapturedBackBuffer();
-      uint64_t marker = 0;
-      for (size_t p = 0; p < bb.pixels.size(); p += 4) {
-        const int r = bb.pixels[p], g = bb.pixels[p + 1], b = bb.pixels[p + 2];
-        marker += (r > 60 && b > 60 && g < r / 2 && g < b / 2 && std::abs(r - b) < 40);
-      }
+      const uint64_t marker = CountMarkerPixels(sample.CapturedBackBuffer());
       // The scene's own colours may contain magenta-ish pixels: compare with the run without markers.
       o.debugMarkerOutside = false;
       sample.ApplySettings(o);
       RenderFrames(sample, 4);
-      const ImageRGBA8& ref = sample.CapturedBackBuffer();
-      uint64_t refMarker = 0;
-      for (size_t p = 0; p < ref.pixels.size(); p += 4) {
-        const int r = ref.pixels[p], g = ref.pixels[p + 1], b = ref.pixels[p + 2];
-        refMarker += (r > 60 && b > 60 && g < r / 2 && g < b / 2 && std::abs(r - b) < 40);
-      }
+      const uint64_t refMarker = CountMarkerPixels(sample.CapturedBackBuffer());
       o.debugMarkerOutside = true;
       EXPECT_LE(marker, refMarker) << FilterOption(f) << " at " << scale;
       total += marker > refMarker ? marker - refMarker : 0;
