@@ -661,8 +661,21 @@ void Sample::OnMouse(int button, int action, double x, double y) {
   }
 }
 
+bool Sample::WindowShown() const {
+  return m_Window && glfwGetWindowAttrib(m_Window, GLFW_VISIBLE) && !glfwGetWindowAttrib(m_Window, GLFW_ICONIFIED);
+}
+
 void Sample::ToggleFullscreen() {
   if (!m_Window) return;
+  // GLFW 3.3's X11 backend maps a hidden window before going full screen and
+  // waits for it to become visible; that wait never times out while unrelated
+  // events are queued, so a toggle while minimised would spin forever. Defer
+  // the toggle until the window is shown again.
+  if (!WindowShown()) {
+    m_FullscreenTogglePending = !m_FullscreenTogglePending;
+    return;
+  }
+  m_FullscreenTogglePending = false;
   if (!m_Fullscreen) {
     GLFWmonitor* mon = glfwGetPrimaryMonitor();
     const GLFWvidmode* mode = mon ? glfwGetVideoMode(mon) : nullptr;
@@ -1217,19 +1230,30 @@ bool Sample::RenderFrame() {
     switch (m_FrameCount) {
       case 5: glfwSetWindowSize(m_Window, 1, 1); break;
       case 10: glfwIconifyWindow(m_Window); break;
+      case 13: ToggleFullscreen(); break;  // while minimised: deferred to the restore
       case 15: glfwRestoreWindow(m_Window); break;
-      case 18: glfwSetWindowSize(m_Window, int(m_Options.width), int(m_Options.height)); break;
-      case 22: ToggleFullscreen(); break;
-      case 28: ToggleFullscreen(); break;
-      case 32: glfwSetWindowSize(m_Window, int(m_Options.width), int(m_Options.height)); break;
+      case 20: ToggleFullscreen(); break;
+      case 23: glfwSetWindowSize(m_Window, int(m_Options.width), int(m_Options.height)); break;
+      case 26: ToggleFullscreen(); break;
+      case 31: ToggleFullscreen(); break;
+      case 35: glfwSetWindowSize(m_Window, int(m_Options.width), int(m_Options.height)); break;
       default: break;
     }
   }
   if (m_Window) {
     glfwPollEvents();
     if (glfwWindowShouldClose(m_Window)) return false;
+    if (m_FullscreenTogglePending && WindowShown()) ToggleFullscreen();
     int fw = 0, fh = 0;
     glfwGetFramebufferSize(m_Window, &fw, &fh);
+    if (m_Options.windowTest) {  // log each change of the window's state
+      char state[160];
+      std::snprintf(state, sizeof(state), "framebuffer %dx%d visible %d iconified %d fullscreen %d%s", fw, fh,
+                    glfwGetWindowAttrib(m_Window, GLFW_VISIBLE), glfwGetWindowAttrib(m_Window, GLFW_ICONIFIED),
+                    int(m_Fullscreen), m_FullscreenTogglePending ? " (toggle pending)" : "");
+      if (m_WindowTestState != state) std::fprintf(stderr, "window-test frame %lld: %s\n", (long long)m_FrameCount, state);
+      m_WindowTestState = state;
+    }
     if (fw <= 0 || fh <= 0 || glfwGetWindowAttrib(m_Window, GLFW_ICONIFIED)) {
       // Minimised: render nothing, wait a little.
       ++m_FrameCount;
@@ -1237,6 +1261,7 @@ bool Sample::RenderFrame() {
       FrameRecord r;
       r.frame = m_FrameCount - 1;
       r.rendered = false;
+      r.fullscreen = m_Fullscreen;
       m_Frames.push_back(r);
       glfwWaitEventsTimeout(0.02);
       return true;
@@ -1275,6 +1300,9 @@ bool Sample::RenderFrame() {
   r.scaleY = m_DynamicResolution.GetScaleY();
   r.viewportW = m_Options.dynamicResolution ? m_DynamicResolution.GetViewportWidth() : m_BackBufferWidth;
   r.viewportH = m_Options.dynamicResolution ? m_DynamicResolution.GetViewportHeight() : m_BackBufferHeight;
+  r.backBufferW = m_BackBufferWidth;
+  r.backBufferH = m_BackBufferHeight;
+  r.fullscreen = m_Fullscreen;
   r.cpuFrameMs = elapsed * 1000.0;
   r.gpuFrame = m_TimerFrame.LastMs();
   r.gpuFrameNew = m_TimerFrame.NewResults() > 0;
@@ -1448,7 +1476,8 @@ bool Sample::WriteReport(const std::string& path, std::string* error) const {
     const FrameRecord& r = m_Frames[i];
     f << "    {\"frame\": " << r.frame << ", \"rendered\": " << (r.rendered ? "true" : "false")
       << ", \"scale\": [" << JsonNumber(r.scaleX) << ", " << JsonNumber(r.scaleY) << "], \"viewport\": ["
-      << r.viewportW << ", " << r.viewportH << "], \"cpu_ms\": " << JsonNumber(r.cpuFrameMs)
+      << r.viewportW << ", " << r.viewportH << "], \"back_buffer\": [" << r.backBufferW << ", " << r.backBufferH
+      << "], \"fullscreen\": " << (r.fullscreen ? "true" : "false") << ", \"cpu_ms\": " << JsonNumber(r.cpuFrameMs)
       << ", \"gpu_new\": " << (r.gpuFrameNew ? "true" : "false") << ", \"gpu_delay_frames\": " << r.gpuFrameDelay
       << ", \"gpu_ms\": {\"frame\": " << JsonNumber(r.gpuFrame) << ", \"clear\": " << JsonNumber(r.gpuClear)
       << ", \"scene\": " << JsonNumber(r.gpuScene) << ", \"postp\": " << JsonNumber(r.gpuPostP)

@@ -57,6 +57,8 @@ struct FrameRecord {
   bool gpuFrameNew = false;
   uint32_t gpuFrameDelay = 0;
   bool rendered = true;  // false while minimised
+  uint32_t backBufferW = 0, backBufferH = 0;  // 0x0 while minimised
+  bool fullscreen = false;
 };
 
 // Everything the GUI shows as statistics (refreshed by UpdateStats).
@@ -120,6 +122,7 @@ class Sample {
   bool SaveScreenshot(const std::string& path, bool noGui, std::string* error) const;
   bool WriteReport(const std::string& path, std::string* error) const;
   void ToggleFullscreen();
+  bool WindowShown() const;  // mapped and not minimised
   // F4: recompiles the post-processing shaders from their HLSL sources
   // (ShaderSourceDir(); the compiled .spv files when the sources are absent),
   // reloads the GUI and zoom-box shaders and the scene's. On any error the
@@ -173,6 +176,8 @@ class Sample {
   GLFWwindow* m_Window = nullptr;
   bool m_GlfwInitialised = false;
   bool m_Fullscreen = false;
+  bool m_FullscreenTogglePending = false;  // asked for while minimised
+  std::string m_WindowTestState;           // --window-test: last state logged
   int m_WindowedPos[2] = {100, 100}, m_WindowedSize[2] = {1280, 720};
   std::string m_ShaderDir, m_ScenePath;
 

@@ -10,7 +10,7 @@ PACKAGES=(
   libglfw3-dev libglm-dev libassimp-dev assimp-testmodels
   libopenimageio-dev openimageio-tools libimgui-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth xdotool
+  xvfb xauth xdotool openbox matchbox-window-manager
 )
 
 missing=()
