@@ -90,7 +90,8 @@ std::string Usage() {
        "  --fixed-dt DT            animation advances DT seconds per frame (0..10)\n"
        "  --shader-dir DIR         compiled shaders (default: the build's, or DRR_SHADER_DIR)\n"
        "  --debug-marker-outside   test aid: mark the RT outside the viewport\n"
-       "  --window-test            test aid: resize to 1x1, minimise, restore, fullscreen, windowed\n"
+       "  --window-test            test aid: resize to 1x1, minimise, full screen while minimised,\n"
+       "                           restore, windowed, full screen and back\n"
        "\n"
        "  --bench [--quick] --out DIR   measure image error against run time instead of running\n"
        "                           the sample (see --bench --help)\n";
