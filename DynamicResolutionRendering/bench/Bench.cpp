@@ -41,6 +41,9 @@ const char* kBenchUsage =
     "                       the blit-floor, claim and ghosting rows\n"
     "  --out DIR            output folder (default: bench_out)\n"
     "  --bench-warmup N     frames rendered before measuring (default 8, quick 4)\n"
+    "  --bench-warmup-ms T  and warm up for at least T ms (default 500, quick 0): GPU\n"
+    "                       clocks drop while the CPU compares images, and a few\n"
+    "                       frames do not bring them back\n"
     "  --bench-frames N     frames measured per configuration (default 24, quick 6)\n"
     "  --camera N           only this camera (a static view at its default time)\n"
     "  --filter F           only this filter\n"
@@ -296,7 +299,7 @@ int ParseBenchCommandLine(const std::vector<std::string>& args, BenchPlan* plan,
                           std::string* message) {
   std::vector<std::string> rest;
   bool cameraGiven = false, filterGiven = false, scaleGiven = false, sizeGiven = false;
-  int warmup = -1, frames = -1, ghostFrames = -1;
+  int warmup = -1, warmupMs = -1, frames = -1, ghostFrames = -1;
   plan->outDir = "bench_out";
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -326,6 +329,12 @@ int ParseBenchCommandLine(const std::vector<std::string>& args, BenchPlan* plan,
       if (!value("--ghost-frames", &v)) return 2;
       if (!ParseInt(v, 2, 300, &ghostFrames)) {
         *message = "--ghost-frames: expected an integer in [2, 300], got '" + v + "'";
+        return 2;
+      }
+    } else if (a == "--bench-warmup-ms") {
+      if (!value("--bench-warmup-ms", &v)) return 2;
+      if (!ParseInt(v, 0, 60000, &warmupMs)) {
+        *message = "--bench-warmup-ms: expected an integer in [0, 60000], got '" + v + "'";
         return 2;
       }
     } else if (a == "--bench-warmup" || a == "--bench-frames") {
@@ -364,6 +373,7 @@ int ParseBenchCommandLine(const std::vector<std::string>& args, BenchPlan* plan,
     plan->base.height = 180;
   }
   plan->warmupFrames = warmup >= 0 ? warmup : (plan->quick ? 4 : 8);
+  plan->warmupMs = warmupMs >= 0 ? warmupMs : (plan->quick ? 0 : 500);
   plan->measuredFrames = frames >= 0 ? frames : (plan->quick ? 6 : 24);
   plan->ghostFrames = ghostFrames >= 0 ? ghostFrames : (plan->quick ? 6 : 24);
 
@@ -403,7 +413,11 @@ BenchRow Measure(Sample& sample, const BenchPlan& plan, const Options& settings,
                  const std::string& viewName, const std::string& filterName, double scale,
                  const ImageF& reference, int warmup, int frames, ImageRGBA8* imageOut = nullptr) {
   sample.ApplySettings(settings);
+  const auto start = std::chrono::steady_clock::now();
   RenderFrames(sample, warmup);
+  // Moving runs (warmup 0) count their frames exactly; static ones may add more.
+  while (warmup > 0 && std::chrono::steady_clock::now() - start < std::chrono::milliseconds(plan.warmupMs))
+    RenderFrames(sample, 1);
   const std::vector<FrameRecord> records = RenderFrames(sample, frames);
   BenchRow row;
   row.view = viewName;
@@ -434,7 +448,6 @@ BenchRow Measure(Sample& sample, const BenchPlan& plan, const Options& settings,
     row.viewportH = float(sample.BackBufferHeight());
   }
   if (imageOut) *imageOut = image;
-  (void)plan;
   return row;
 }
 

@@ -41,6 +41,9 @@ struct BenchPlan {
   std::vector<Filter> filters;
   std::vector<float> scales;
   int warmupFrames = 8;
+  // Warm-up also lasts at least this long (static views): GPUs drop their
+  // clocks while the CPU compares images between configurations.
+  int warmupMs = 500;
   int measuredFrames = 24;
   uint32_t referenceFactor = 4;
   bool claims = true;          // claim rows on the first view (and motion blur on the cinematic camera)

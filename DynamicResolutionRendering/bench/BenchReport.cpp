@@ -105,7 +105,7 @@ bool WriteJson(const BenchResults& res, const std::string& path, std::string* er
       << ",\n  \"quick\": " << (plan.quick ? "true" : "false") << ",\n  \"width\": "
       << plan.base.width << ",\n  \"height\": " << plan.base.height
       << ",\n  \"reference_factor\": " << plan.referenceFactor
-      << ",\n  \"warmup_frames\": " << plan.warmupFrames
+      << ",\n  \"warmup_frames\": " << plan.warmupFrames << ",\n  \"warmup_min_ms\": " << plan.warmupMs
       << ",\n  \"measured_frames\": " << plan.measuredFrames << ",\n  \"seconds\": "
       << Num(res.seconds, 2) << ",\n  \"validation_messages\": " << res.validationMessages
       << ",\n  \"options\": " << OptionsToJson(plan.base) << ",\n  \"rows\": [\n";
@@ -390,7 +390,8 @@ bool WriteSummary(const BenchResults& res, const std::string& path, std::string*
   md << "## " << (plan.quick ? "Quick" : "Full") << " sweep on " << res.adapter << "\n\n"
      << "Driver " << res.driver << ", " << Today() << ", back buffer " << plan.base.width << "x"
      << plan.base.height << ", reference " << plan.referenceFactor << "x"
-     << plan.referenceFactor << " super sampling, " << plan.warmupFrames << " warm-up + "
+     << plan.referenceFactor << " super sampling, " << plan.warmupFrames << " warm-up frames (at least "
+     << plan.warmupMs << " ms) + "
      << plan.measuredFrames << " measured frames per configuration, " << res.rows.size()
      << " configurations in " << Num(res.seconds, 1) << " s, " << res.validationMessages
      << " validation messages.\n\n";

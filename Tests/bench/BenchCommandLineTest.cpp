@@ -1,0 +1,60 @@
+// The --bench command line: defaults of the full and quick presets, and bad
+// values rejected with their allowed range (exit code 2).
+#include <gtest/gtest.h>
+
+#include "bench/Bench.h"
+
+namespace {
+using drr::BenchPlan;
+
+int Parse(std::vector<std::string> args, BenchPlan* plan, std::string* message) {
+  args.insert(args.begin(), "--bench");
+  return drr::ParseBenchCommandLine(args, plan, message);
+}
+}  // namespace
+
+TEST(BenchCommandLine, FullAndQuickDefaults) {
+  BenchPlan full, quick;
+  std::string m;
+  ASSERT_EQ(Parse({}, &full, &m), 0) << m;
+  EXPECT_EQ(full.warmupFrames, 8);
+  EXPECT_EQ(full.warmupMs, 500);  // GPU clocks need time, not frames, to come back
+  EXPECT_EQ(full.measuredFrames, 24);
+  ASSERT_EQ(Parse({"--quick"}, &quick, &m), 0) << m;
+  EXPECT_EQ(quick.warmupFrames, 4);
+  EXPECT_EQ(quick.warmupMs, 0);
+  EXPECT_EQ(quick.base.width, 320u);
+  EXPECT_EQ(quick.base.height, 180u);
+}
+
+TEST(BenchCommandLine, WarmUpValues) {
+  BenchPlan plan;
+  std::string m;
+  ASSERT_EQ(Parse({"--bench-warmup", "0", "--bench-warmup-ms", "0", "--bench-frames", "3"}, &plan, &m), 0) << m;
+  EXPECT_EQ(plan.warmupFrames, 0);
+  EXPECT_EQ(plan.warmupMs, 0);
+  EXPECT_EQ(plan.measuredFrames, 3);
+  ASSERT_EQ(Parse({"--quick", "--bench-warmup-ms", "250"}, &plan, &m), 0) << m;
+  EXPECT_EQ(plan.warmupMs, 250);
+}
+
+TEST(BenchCommandLine, BadValuesNameTheirRange) {
+  struct Case {
+    std::vector<std::string> args;
+    const char* range;
+  } cases[] = {
+      {{"--bench-warmup-ms", "-1"}, "[0, 60000]"},
+      {{"--bench-warmup-ms", "60001"}, "[0, 60000]"},
+      {{"--bench-warmup-ms", "fast"}, "[0, 60000]"},
+      {{"--bench-warmup-ms"}, "missing value"},
+      {{"--bench-warmup", "-2"}, "[0, 10000]"},
+      {{"--bench-frames", "0"}, "[1, 10000]"},
+      {{"--ghost-frames", "1"}, "[2, 300]"},
+  };
+  for (const Case& c : cases) {
+    BenchPlan plan;
+    std::string m;
+    EXPECT_EQ(Parse(c.args, &plan, &m), 2) << c.args[0];
+    EXPECT_NE(m.find(c.range), std::string::npos) << c.args[0] << ": " << m;
+  }
+}
