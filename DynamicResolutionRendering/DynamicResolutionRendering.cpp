@@ -1251,7 +1251,8 @@ bool Sample::RenderFrame() {
       std::snprintf(state, sizeof(state), "framebuffer %dx%d visible %d iconified %d fullscreen %d%s", fw, fh,
                     glfwGetWindowAttrib(m_Window, GLFW_VISIBLE), glfwGetWindowAttrib(m_Window, GLFW_ICONIFIED),
                     int(m_Fullscreen), m_FullscreenTogglePending ? " (toggle pending)" : "");
-      if (m_WindowTestState != state) std::fprintf(stderr, "window-test frame %lld: %s\n", (long long)m_FrameCount, state);
+      if (m_WindowTestState != state)
+        std::fprintf(stderr, "window-test frame %lld: %s\n", static_cast<long long>(m_FrameCount), state);
       m_WindowTestState = state;
     }
     if (fw <= 0 || fh <= 0 || glfwGetWindowAttrib(m_Window, GLFW_ICONIFIED)) {
