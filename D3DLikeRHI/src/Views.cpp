@@ -85,6 +85,21 @@ HRESULT Finish(DeviceImpl* dev, const char* fn, Resource* r, V* view, ViewCore& 
   return S_OK;
 }
 
+// Render-target and depth-stencil views: one mip, one layer.
+template <class V>
+HRESULT FinishMipSlice(DeviceImpl* dev, const char* fn, Resource* r, V* view, uint32_t mip, auto** out) {
+  ViewCore& v = view->v;
+  if (mip >= v.tex->desc.MipLevels) {
+    dev->Log(LogLevel::Error, "%s: MipSlice %u out of range (texture has %u mips)", fn, mip, v.tex->desc.MipLevels);
+    view->Release();
+    return E_INVALIDARG;
+  }
+  v.baseMip = mip;
+  v.mipCount = 1;
+  v.layerCount = 1;
+  return Finish(dev, fn, r, view, v, out);
+}
+
 }  // namespace
 
 template <class Iface, ViewKind Kind>
@@ -175,17 +190,7 @@ HRESULT DeviceImpl::CreateRenderTargetView(Resource* r, const RENDER_TARGET_VIEW
   auto* view = BeginView<RTVImpl>(this, fn, "ppRTView", r, desc ? desc->Format : DXGI_FORMAT_UNKNOWN,
                                   BIND_RENDER_TARGET, "BIND_RENDER_TARGET", out, &hr);
   if (!view) return hr;
-  ViewCore& v = view->v;
-  uint32_t mip = desc ? desc->MipSlice : 0;
-  if (mip >= v.tex->desc.MipLevels) {
-    Log(LogLevel::Error, "%s: MipSlice %u out of range (texture has %u mips)", fn, mip, v.tex->desc.MipLevels);
-    view->Release();
-    return E_INVALIDARG;
-  }
-  v.baseMip = mip;
-  v.mipCount = 1;
-  v.layerCount = 1;
-  return Finish(this, fn, r, view, v, out);
+  return FinishMipSlice(this, fn, r, view, desc ? desc->MipSlice : 0, out);
 }
 
 HRESULT DeviceImpl::CreateDepthStencilView(Resource* r, const DEPTH_STENCIL_VIEW_DESC* desc,
@@ -196,22 +201,12 @@ HRESULT DeviceImpl::CreateDepthStencilView(Resource* r, const DEPTH_STENCIL_VIEW
                                   desc ? desc->Format : DXGI_FORMAT_UNKNOWN, BIND_DEPTH_STENCIL,
                                   "BIND_DEPTH_STENCIL", out, &hr);
   if (!view) return hr;
-  ViewCore& v = view->v;
   if (desc && desc->Format != DXGI_FORMAT_UNKNOWN && desc->Format != DXGI_FORMAT_D32_FLOAT) {
     Log(LogLevel::Error, "%s: Format %s is not a depth format", fn, FormatName(desc->Format));
     view->Release();
     return E_INVALIDARG;
   }
-  uint32_t mip = desc ? desc->MipSlice : 0;
-  if (mip >= v.tex->desc.MipLevels) {
-    Log(LogLevel::Error, "%s: MipSlice %u out of range", fn, mip);
-    view->Release();
-    return E_INVALIDARG;
-  }
-  v.baseMip = mip;
-  v.mipCount = 1;
-  v.layerCount = 1;
-  return Finish(this, fn, r, view, v, out);
+  return FinishMipSlice(this, fn, r, view, desc ? desc->MipSlice : 0, out);
 }
 
 }  // namespace d3dl::impl

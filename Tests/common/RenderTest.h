@@ -59,6 +59,12 @@ class RenderTest : public ::testing::Test {
     std::string text;
   };
 
+  // Directory of the compiled test shaders (env D3DL_TEST_SHADER_DIR overrides).
+  static std::string ShaderDir();
+  // Reads a SPIR-V file (a failure if it cannot be opened); a relative path is
+  // taken relative to ShaderDir().
+  static std::vector<uint32_t> LoadSpirv(const std::string& path);
+
  protected:
   void SetUp() override;
   void TearDown() override;
@@ -69,10 +75,6 @@ class RenderTest : public ::testing::Test {
   // Copies mip `mip` of `texture` into a STAGING texture and maps it (READ).
   Image ReadBack(d3dl::Texture2D* texture, uint32_t mip = 0);
 
-  // Directory of the compiled test shaders (env D3DL_TEST_SHADER_DIR overrides).
-  static std::string ShaderDir();
-  // Reads a SPIR-V file; a relative path is taken relative to ShaderDir().
-  static std::vector<uint32_t> LoadSpirv(const std::string& path);
   d3dl::ComPtr<d3dl::VertexShader> LoadVertexShader(const std::string& path);
   d3dl::ComPtr<d3dl::PixelShader> LoadPixelShader(const std::string& path);
   template <class T>

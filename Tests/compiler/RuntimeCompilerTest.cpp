@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "RenderTest.h"
 #include "d3dl/ShaderCompiler.h"
 
 namespace {
@@ -46,15 +47,6 @@ std::vector<ManifestEntry> ReadManifest() {
   return entries;
 }
 
-std::vector<uint32_t> ReadWords(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return {};
-  std::vector<uint32_t> words(static_cast<size_t>(in.tellg()) / 4);
-  in.seekg(0);
-  in.read(reinterpret_cast<char*>(words.data()), static_cast<std::streamsize>(words.size() * 4));
-  return words;
-}
-
 TEST(RuntimeCompiler, MatchesEveryBuildTimeShader) {
   const auto entries = ReadManifest();
   ASSERT_FALSE(entries.empty()) << "no shaders in " << DRR_SHADER_MANIFEST;
@@ -69,7 +61,7 @@ TEST(RuntimeCompiler, MatchesEveryBuildTimeShader) {
     std::vector<uint32_t> spirv;
     std::string errors;
     ASSERT_EQ(d3dl::CompileHLSL(desc, &spirv, &errors), d3dl::S_OK) << errors;
-    const auto built = ReadWords(e.output);
+    const auto built = drrtest::RenderTest::LoadSpirv(e.output);  // absolute path
     ASSERT_FALSE(built.empty()) << "missing " << e.output;
     EXPECT_EQ(spirv, built) << "runtime SPIR-V differs from " << e.output;
   }
