@@ -66,7 +66,8 @@ fi
 
 if command -v xdotool >/dev/null; then
   echo "== external resize, unmap and map with xdotool"
-  run "${common[@]}" --frames 150 --report "$out/xdotool.json" &
+  # Runs until Escape below: a fixed frame count could end before the steps on a fast machine.
+  run "${common[@]}" --frames 1000000 --report "$out/xdotool.json" &
   pid=$!
   for _ in $(seq 1 50); do
     wid=$(xdotool search --name "Dynamic Resolution Rendering" 2>/dev/null | head -1)
@@ -78,6 +79,8 @@ if command -v xdotool >/dev/null; then
     xdotool windowsize "$wid" 500 300; sleep 0.5
     xdotool windowminimize "$wid"; sleep 0.5
     xdotool windowactivate "$wid" 2>/dev/null; sleep 0.3
+    # Real key events (XTEST) go to the focused window: Escape closes the sample.
+    xdotool windowactivate --sync "$wid" 2>/dev/null; xdotool key Escape
   else
     echo "window not found by xdotool"; fail=1
   fi
