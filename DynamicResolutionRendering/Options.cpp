@@ -1,5 +1,7 @@
 #include "Options.h"
 
+#include "Json.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -19,22 +21,6 @@ constexpr const char* kControlOptions[] = {"manual", "half-vsync", "vsync"};
 constexpr const char* kLawNames[] = {"Article (original)", "Robust", "UE-style"};
 constexpr const char* kLawOptions[] = {"article", "robust", "ue-style"};
 
-std::string JsonEscape(const std::string& s) {
-  std::string o;
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      o += '\\';
-      o += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char b[8];
-      snprintf(b, sizeof b, "\\u%04x", c);
-      o += b;
-    } else {
-      o += c;
-    }
-  }
-  return o;
-}
 }  // namespace
 
 const char* FilterName(Filter f) { return kFilterNames[static_cast<int>(f)]; }
@@ -305,7 +291,7 @@ std::string OptionsToJson(const Options& o) {
   std::ostringstream j;
   j << "{\"headless\": " << (o.headless ? "true" : "false") << ", \"width\": " << o.width
     << ", \"height\": " << o.height << ", \"frames\": " << o.EffectiveFrames()
-    << ", \"scene\": \"" << JsonEscape(o.scene) << "\", \"camera\": " << o.camera
+    << ", \"scene\": " << JsonQuote(o.scene) << ", \"camera\": " << o.camera
     << ", \"filter\": \"" << FilterOption(o.filter) << "\", \"scale_x\": " << o.scaleX
     << ", \"scale_y\": " << o.scaleY
     << ", \"dynamic_resolution\": " << (o.dynamicResolution ? "true" : "false")

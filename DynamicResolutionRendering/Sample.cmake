@@ -3,7 +3,7 @@
 # (command-line parser, no GPU).
 set(DRR_SAMPLE_DIR ${CMAKE_CURRENT_LIST_DIR})
 
-add_library(drr_options STATIC ${DRR_SAMPLE_DIR}/Options.cpp)
+add_library(drr_options STATIC ${DRR_SAMPLE_DIR}/Options.cpp ${DRR_SAMPLE_DIR}/Json.cpp)
 target_include_directories(drr_options PUBLIC ${DRR_SAMPLE_DIR})
 target_compile_features(drr_options PUBLIC cxx_std_20)
 

@@ -1,5 +1,7 @@
 #include "bench/BenchReport.h"
 
+#include "Json.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -28,15 +30,6 @@ std::string JsonNum(double v, int decimals = 6) {
   return std::isfinite(v) ? Num(v, decimals) : "null";
 }
 
-std::string JsonString(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) continue;
-    out += c;
-  }
-  return out + "\"";
-}
 
 // Mean over views of a row value, for one filter and scale (NaN if none).
 template <class Get>
@@ -100,8 +93,8 @@ bool WriteJson(const BenchResults& res, const std::string& path, std::string* er
     return false;
   }
   const BenchPlan& plan = *res.plan;
-  out << "{\n  \"adapter\": " << JsonString(res.adapter) << ",\n  \"driver\": "
-      << JsonString(res.driver) << ",\n  \"date\": " << JsonString(Today())
+  out << "{\n  \"adapter\": " << JsonQuote(res.adapter) << ",\n  \"driver\": "
+      << JsonQuote(res.driver) << ",\n  \"date\": " << JsonQuote(Today())
       << ",\n  \"quick\": " << (plan.quick ? "true" : "false") << ",\n  \"width\": "
       << plan.base.width << ",\n  \"height\": " << plan.base.height
       << ",\n  \"reference_factor\": " << plan.referenceFactor
@@ -111,7 +104,7 @@ bool WriteJson(const BenchResults& res, const std::string& path, std::string* er
       << ",\n  \"options\": " << OptionsToJson(plan.base) << ",\n  \"rows\": [\n";
   for (size_t i = 0; i < res.rows.size(); ++i) {
     const auto& r = res.rows[i];
-    out << "    {\"view\": " << JsonString(r.view) << ", \"filter\": " << JsonString(r.filter)
+    out << "    {\"view\": " << JsonQuote(r.view) << ", \"filter\": " << JsonQuote(r.filter)
         << ", \"scale\": " << Num(r.scale, 3) << ", \"viewport\": [" << r.viewportW << ", "
         << r.viewportH << "], \"valid\": " << (r.error.valid ? "true" : "false")
         << ", \"identical\": " << (r.error.valid && r.error.mse == 0 ? "true" : "false")
