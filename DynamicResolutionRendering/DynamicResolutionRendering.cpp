@@ -270,7 +270,7 @@ int Sample::Init(const Options& options, std::string* error) {
   if (m_Window) m_GuiInput.Install(m_Window, this, KeyThunk, MouseThunk);
 
   // Resolution control.
-  m_Controller = MakeLaw();
+  m_Controller = MakeController(m_Options.law, m_LawLatency);
   m_RefreshHz = options.refresh > 0 ? options.refresh : 60.0;
   if (options.refresh <= 0 && m_Window) {
     if (GLFWmonitor* mon = glfwGetPrimaryMonitor())
@@ -523,20 +523,6 @@ bool Sample::InitDynamicResolution() {
   return ok;
 }
 
-std::unique_ptr<ResolutionController> Sample::MakeLaw() const {
-  switch (m_Options.law) {
-    case ControlLaw::Robust: {
-      // Told how many GPU results after a scale change still describe the old
-      // scale (Docs/Controller.md: unstable otherwise).
-      RobustController::Params p;
-      p.latencyFrames = m_LawLatency;
-      return std::make_unique<RobustController>(p);
-    }
-    case ControlLaw::UEStyle: return MakeController(ControllerKind::UEStyle);
-    default: return MakeController(ControllerKind::Article);
-  }
-}
-
 void Sample::ReleaseDynamicResolution() {
   for (Utility::RenderTarget* rt : {&g_ColorDynamic, &g_DepthDynamic, &g_VelocityDynamic[0],
                                     &g_VelocityDynamic[1], &g_FinalRTDynamic[0], &g_FinalRTDynamic[1],
@@ -568,7 +554,8 @@ void Sample::ApplySettings(const Options& o) {
   m_Options.height = keep.height;
   m_ShowGUI = o.gui;
   if (o.refresh > 0) m_RefreshHz = o.refresh;
-  if (o.law != keep.law || !m_Controller) m_Controller = MakeLaw();  // switching resets the law
+  if (o.law != keep.law || !m_Controller)  // switching resets the law
+    m_Controller = MakeController(m_Options.law, m_LawLatency);
   else if (o.control != keep.control) m_Controller->Reset();
   if (camera >= 0 && camera < CameraCount() && camera != m_Camera) SelectCamera(camera);
   AllocationKey want{m_Options.dynamicResolution, m_Options.superSampling, m_Options.motionBlur,
@@ -729,9 +716,7 @@ void Sample::ControlResolution(double innerFrameSeconds, double frameSeconds) {
   timing.gpuInnerSeconds = innerFrameSeconds;
   timing.frameSeconds = frameSeconds;
   ControlTarget target;
-  target.budgetSeconds = TargetFrameSeconds(
-      m_RefreshHz, m_Options.control == ControlMode::HalfVSync ? ResolutionControlMode::VSyncHalf
-                                                               : ResolutionControlMode::VSync);
+  target.budgetSeconds = TargetFrameSeconds(m_RefreshHz, m_Options.control);
   target.minScale = 0.3;
   target.maxScale = m_Options.superSampling ? 2.0 : 1.0;
   const double s = m_Controller->Update(m_DynamicResolution.GetScaleX(), timing, target);
@@ -811,7 +796,7 @@ void Sample::OnFrameRender(double elapsed) {
       const int stale = std::max(0, int(m_TimerFrame.LastDelayFrames()) - 1);
       if (m_Options.law == ControlLaw::Robust && stale > m_LawLatency) {
         m_LawLatency = stale;
-        m_Controller = MakeLaw();
+        m_Controller = MakeController(m_Options.law, m_LawLatency);
       }
       ControlResolution(m_TimerFrame.LastMs() / 1000.0, m_LastFrameSeconds);
     }

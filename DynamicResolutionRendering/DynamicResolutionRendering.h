@@ -158,7 +158,6 @@ class Sample {
   void ReleaseBackBufferViews();
   bool ResizeSwapChain(uint32_t w, uint32_t h);
   bool TAAActive() const;
-  std::unique_ptr<ResolutionController> MakeLaw() const;
   int SceneCameraCount() const;
   int CameraCount() const;  // scene cameras + First Person
   std::string CameraName(int i) const;

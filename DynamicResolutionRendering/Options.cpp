@@ -16,10 +16,6 @@ constexpr const char* kFilterNames[] = {"None",          "Point",       "Bilinea
 constexpr const char* kFilterOptions[] = {"none",  "point",        "bilinear",
                                           "bicubic", "noise",      "noise-offset",
                                           "taa",   "taa-noise-offset", "taa-basic"};
-constexpr const char* kControlNames[] = {"Manual", "VSync/2", "VSync"};
-constexpr const char* kControlOptions[] = {"manual", "half-vsync", "vsync"};
-constexpr const char* kLawNames[] = {"Article (original)", "Robust", "UE-style"};
-constexpr const char* kLawOptions[] = {"article", "robust", "ue-style"};
 
 }  // namespace
 
@@ -28,10 +24,6 @@ const char* FilterOption(Filter f) { return kFilterOptions[static_cast<int>(f)];
 bool IsTAA(Filter f) {
   return f == Filter::TAA || f == Filter::TAANoiseOffset || f == Filter::TAABasic;
 }
-const char* ControlModeName(ControlMode m) { return kControlNames[static_cast<int>(m)]; }
-const char* ControlModeOption(ControlMode m) { return kControlOptions[static_cast<int>(m)]; }
-const char* ControlLawName(ControlLaw l) { return kLawNames[static_cast<int>(l)]; }
-const char* ControlLawOption(ControlLaw l) { return kLawOptions[static_cast<int>(l)]; }
 
 std::string Usage() {
   std::ostringstream u;
@@ -197,7 +189,7 @@ ParseStatus ParseCommandLine(const std::vector<std::string>& args, Options* o,
       } else {
         bool found = false;
         for (int m = 0; m < static_cast<int>(ControlMode::Count); ++m)
-          if (v == kControlOptions[m]) {
+          if (v == ControlModeOption(static_cast<ControlMode>(m))) {
             r.control = static_cast<ControlMode>(m);
             found = true;
           }
@@ -211,7 +203,7 @@ ParseStatus ParseCommandLine(const std::vector<std::string>& args, Options* o,
       } else {
         bool found = false;
         for (int l = 0; l < static_cast<int>(ControlLaw::Count); ++l)
-          if (v == kLawOptions[l]) {
+          if (v == ControlLawOption(static_cast<ControlLaw>(l))) {
             r.law = static_cast<ControlLaw>(l);
             found = true;
           }

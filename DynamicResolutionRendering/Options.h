@@ -1,6 +1,8 @@
 // Command line of the sample. Option names are stable (scripts use them).
 #pragma once
 
+#include "ResolutionController.h"
+
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -25,15 +27,8 @@ const char* FilterName(Filter f);     // GUI name ("Temporal AA")
 const char* FilterOption(Filter f);   // command-line value ("taa")
 bool IsTAA(Filter f);
 
-enum class ControlMode : int { Manual = 0, HalfVSync, VSync, Count };
-const char* ControlModeName(ControlMode m);    // "VSync/2"
-const char* ControlModeOption(ControlMode m);  // "half-vsync"
-
-// Resolution control law used in the VSync and VSync/2 modes (see
-// ResolutionController.h and Docs/Controller.md). Article is the original's.
-enum class ControlLaw : int { Article = 0, Robust, UEStyle, Count };
-const char* ControlLawName(ControlLaw l);    // GUI name ("Article (original)")
-const char* ControlLawOption(ControlLaw l);  // command-line value ("article")
+// ControlMode (--control) and ControlLaw (--law) and their names are the
+// controller core's (ResolutionController.h).
 
 struct Options {
   bool headless = false;

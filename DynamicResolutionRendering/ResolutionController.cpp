@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace drr {
 namespace {
@@ -18,12 +19,44 @@ double Median(std::vector<double> values) {  // by value: sorted copy
 
 double AimOf(const ControlTarget& sanitized) { return sanitized.budgetSeconds * (1.0 - sanitized.headroom); }
 
+// One row per enumerator, in the enum's order: GUI name, command-line value.
+struct EnumNames {
+  const char* name;
+  const char* option;
+};
+constexpr EnumNames kLawNames[] = {{"Article (original)", "article"}, {"Robust", "robust"}, {"UE-style", "ue-style"}};
+constexpr EnumNames kModeNames[] = {{"Manual", "manual"}, {"VSync/2", "half-vsync"}, {"VSync", "vsync"}};
+static_assert(std::size(kLawNames) == static_cast<std::size_t>(ControlLaw::Count));
+static_assert(std::size(kModeNames) == static_cast<std::size_t>(ControlMode::Count));
+
+template <class Enum, std::size_t N>
+const EnumNames& Row(const EnumNames (&table)[N], Enum e) {
+  static constexpr EnumNames kUnknown{"?", "?"};
+  const auto i = static_cast<std::size_t>(e);
+  return i < N ? table[i] : kUnknown;
+}
+
 }  // namespace
 
-double TargetFrameSeconds(double refreshHz, ResolutionControlMode mode) {
+const char* ControlLawName(ControlLaw law) { return Row(kLawNames, law).name; }
+const char* ControlLawOption(ControlLaw law) { return Row(kLawNames, law).option; }
+const char* ControlModeName(ControlMode mode) { return Row(kModeNames, mode).name; }
+const char* ControlModeOption(ControlMode mode) { return Row(kModeNames, mode).option; }
+
+bool ParseControlLaw(std::string_view name, ControlLaw* law) {
+  ControlLaw found = ControlLaw::Count;
+  if (name == "ue") found = ControlLaw::UEStyle;
+  for (int i = 0; i < static_cast<int>(ControlLaw::Count); ++i)
+    if (name == kLawNames[i].option) found = static_cast<ControlLaw>(i);
+  if (found == ControlLaw::Count) return false;
+  if (law) *law = found;
+  return true;
+}
+
+double TargetFrameSeconds(double refreshHz, ControlMode mode) {
   if (!FinitePositive(refreshHz)) refreshHz = 60.0;
   const double period = 1.0 / refreshHz;
-  return mode == ResolutionControlMode::VSyncHalf ? 2.0 * period : period;
+  return mode == ControlMode::HalfVSync ? 2.0 * period : period;
 }
 
 ControlTarget SanitizeTarget(const ControlTarget& in) {
@@ -293,32 +326,18 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
 
 // ------------------------------------------------------------------ factory
 
-std::unique_ptr<ResolutionController> MakeController(ControllerKind kind) {
-  switch (kind) {
-    case ControllerKind::Article: return std::make_unique<ArticleController>();
-    case ControllerKind::UEStyle: return std::make_unique<UEStyleController>();
-    case ControllerKind::Robust: return std::make_unique<RobustController>();
+std::unique_ptr<ResolutionController> MakeController(ControlLaw law, int latencyFrames) {
+  switch (law) {
+    case ControlLaw::Robust: {
+      RobustController::Params p;
+      p.latencyFrames = latencyFrames;
+      return std::make_unique<RobustController>(p);
+    }
+    case ControlLaw::UEStyle: return std::make_unique<UEStyleController>();
+    case ControlLaw::Article:
+    case ControlLaw::Count: break;
   }
-  return std::make_unique<RobustController>();
-}
-
-bool ParseControllerKind(std::string_view name, ControllerKind* kind) {
-  ControllerKind k;
-  if (name == "article") k = ControllerKind::Article;
-  else if (name == "ue-style" || name == "ue") k = ControllerKind::UEStyle;
-  else if (name == "robust") k = ControllerKind::Robust;
-  else return false;
-  if (kind) *kind = k;
-  return true;
-}
-
-std::string_view ToString(ControllerKind kind) {
-  switch (kind) {
-    case ControllerKind::Article: return "article";
-    case ControllerKind::UEStyle: return "ue-style";
-    case ControllerKind::Robust: return "robust";
-  }
-  return "?";
+  return std::make_unique<ArticleController>();
 }
 
 }  // namespace drr

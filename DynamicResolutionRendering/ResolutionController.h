@@ -45,11 +45,23 @@ struct ControlTarget {
   double maxScale = 1.0;              // the maximum scaling (1, or 2 with super sampling)
 };
 
-enum class ResolutionControlMode { Manual, VSyncHalf, VSync };
+// Resolution control law used in the VSync and VSync/2 modes (Docs/Controller.md).
+// Article is the original's. The names come from one table (ResolutionController.cpp).
+enum class ControlLaw { Article, Robust, UEStyle, Count };
+const char* ControlLawName(ControlLaw law);    // GUI name ("Article (original)")
+const char* ControlLawOption(ControlLaw law);  // command-line value and ResolutionController::Name() ("ue-style")
+// A command-line value, or "ue" for ue-style; false (and *law untouched) for an unknown name.
+bool ParseControlLaw(std::string_view name, ControlLaw* law);
+
+// How the scale is chosen: by hand, or by the law for a frame period of
+// 2/refresh (VSync/2) or 1/refresh (VSync).
+enum class ControlMode { Manual, HalfVSync, VSync, Count };
+const char* ControlModeName(ControlMode mode);    // GUI name ("VSync/2")
+const char* ControlModeOption(ControlMode mode);  // command-line value ("half-vsync")
 
 // T = 1/refresh (VSync) or 2/refresh (VSync/2); Manual returns 1/refresh.
 // A refresh rate that is not finite and > 0 is replaced by 60 Hz.
-double TargetFrameSeconds(double refreshHz, ResolutionControlMode mode);
+double TargetFrameSeconds(double refreshHz, ControlMode mode);
 
 // Makes a target usable: budget finite > 0 (else 1/60), headroom in [0, 0.9]
 // (else 0.1), minScale finite > 0 (else 0.3), maxScale finite >= minScale
@@ -85,7 +97,7 @@ public:
   static constexpr double kMaxGain = 10.0;
 
   explicit ArticleController(double gain = kDefaultGain);
-  std::string_view Name() const override { return "article"; }
+  std::string_view Name() const override { return ControlLawOption(ControlLaw::Article); }
   double AimSeconds(const ControlTarget& target) const override;
   double Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) override;
   double Gain() const { return m_Gain; }
@@ -117,7 +129,7 @@ public:
   };
   UEStyleController();
   explicit UEStyleController(const Params& params);
-  std::string_view Name() const override { return "ue-style"; }
+  std::string_view Name() const override { return ControlLawOption(ControlLaw::UEStyle); }
   double Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) override;
   void Reset() override;
 
@@ -173,7 +185,7 @@ public:
   };
   RobustController();
   explicit RobustController(const Params& params);
-  std::string_view Name() const override { return "robust"; }
+  std::string_view Name() const override { return ControlLawOption(ControlLaw::Robust); }
   double Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) override;
   void Reset() override;
 
@@ -197,10 +209,9 @@ private:
   std::vector<double> m_Diffs;       // recent |log(t_i / t_i-1)|
 };
 
-enum class ControllerKind { Article, UEStyle, Robust };
-std::unique_ptr<ResolutionController> MakeController(ControllerKind kind);
-// "article", "ue-style" (or "ue"), "robust"; false for an unknown name.
-bool ParseControllerKind(std::string_view name, ControllerKind* kind);
-std::string_view ToString(ControllerKind kind);
+// A fresh controller of the law with its default parameters. The robust law is
+// told latencyFrames: how many GPU results after a scale change still describe
+// the old scale (Docs/Controller.md: unstable otherwise); the others ignore it.
+std::unique_ptr<ResolutionController> MakeController(ControlLaw law, int latencyFrames = 0);
 
 }  // namespace drr

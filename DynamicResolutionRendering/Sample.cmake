@@ -6,6 +6,7 @@ set(DRR_SAMPLE_DIR ${CMAKE_CURRENT_LIST_DIR})
 add_library(drr_options STATIC ${DRR_SAMPLE_DIR}/Options.cpp ${DRR_SAMPLE_DIR}/Json.cpp)
 target_include_directories(drr_options PUBLIC ${DRR_SAMPLE_DIR})
 target_compile_features(drr_options PUBLIC cxx_std_20)
+target_link_libraries(drr_options PUBLIC drr_core)  # ControlMode, ControlLaw and their names
 
 # The RHI, the scene renderer and the controller core are declared by other
 # units (some after this file is included), so the GPU targets are defined at

@@ -14,7 +14,7 @@
 
 namespace {
 
-using drr::ControllerKind;
+using drr::ControlLaw;
 using drr::sim::Scenario;
 
 void Usage(std::ostream& out) {
@@ -73,7 +73,7 @@ std::vector<std::string_view> SplitCommas(std::string_view s) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<ControllerKind> kinds;
+  std::vector<ControlLaw> laws;
   std::vector<Scenario> scenarios;
   drr::sim::SimConfig config;
   double gain = drr::ArticleController::kDefaultGain;
@@ -93,12 +93,12 @@ int main(int argc, char** argv) {
     } else if (arg == "--controller") {
       for (std::string_view name : SplitCommas(value(arg))) {
         if (name == "all") {
-          kinds = {ControllerKind::Article, ControllerKind::UEStyle, ControllerKind::Robust};
+          laws = drr::sim::AllLaws();
           continue;
         }
-        ControllerKind k;
-        if (!drr::ParseControllerKind(name, &k)) Fail("unknown controller '" + std::string(name) + "'");
-        kinds.push_back(k);
+        ControlLaw law;
+        if (!drr::ParseControlLaw(name, &law)) Fail("unknown controller '" + std::string(name) + "'");
+        laws.push_back(law);
       }
     } else if (arg == "--scenario") {
       for (std::string_view name : SplitCommas(value(arg))) {
@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
       Fail("unknown argument '" + std::string(arg) + "'");
     }
   }
-  if (kinds.empty()) kinds = {ControllerKind::Article, ControllerKind::UEStyle, ControllerKind::Robust};
+  if (laws.empty()) laws = drr::sim::AllLaws();
   if (scenarios.empty()) scenarios = drr::sim::AllScenarios();
 
   std::ofstream csv;
@@ -160,11 +160,11 @@ int main(int argc, char** argv) {
   }
 
   std::vector<drr::sim::SimResult> results;
-  for (ControllerKind k : kinds) {
+  for (ControlLaw law : laws) {
     for (Scenario s : scenarios) {
       std::unique_ptr<drr::ResolutionController> controller =
-          (k == ControllerKind::Article && gainSet) ? std::make_unique<drr::ArticleController>(gain)
-                                                    : drr::sim::MakeSimController(k, config);
+          (law == ControlLaw::Article && gainSet) ? std::make_unique<drr::ArticleController>(gain)
+                                                  : drr::MakeController(law, config.plant.latencyFrames);
       results.push_back(drr::sim::RunScenario(*controller, drr::sim::ConfigFor(s, config)));
     }
   }

@@ -81,14 +81,14 @@ struct SimResult {
   std::vector<FrameRecord> trace;  // filled when asked
 };
 
-// The controller of a kind as the simulator builds it: the robust law is told
-// the plant's measurement latency (the application knows its timer pipeline
-// depth); the others have no such setting.
-std::unique_ptr<ResolutionController> MakeSimController(ControllerKind kind, const SimConfig& config);
+// The laws in the order of the simulator's tables (article, ue-style, robust).
+const std::vector<ControlLaw>& AllLaws();
 
 SimResult RunScenario(ResolutionController& controller, const SimConfig& config, bool keepTrace = false);
-// Fresh controller of each kind for each scenario.
-std::vector<SimResult> RunMatrix(const std::vector<ControllerKind>& kinds, const std::vector<Scenario>& scenarios,
+// A fresh controller of each law for each scenario, made by MakeController: the
+// robust law is told the plant's measurement latency (the application knows its
+// timer pipeline depth); the others have no such setting.
+std::vector<SimResult> RunMatrix(const std::vector<ControlLaw>& laws, const std::vector<Scenario>& scenarios,
                                  const SimConfig& base);
 
 // Totals per controller over a matrix.

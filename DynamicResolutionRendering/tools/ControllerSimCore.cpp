@@ -228,22 +228,18 @@ SimResult RunScenario(ResolutionController& controller, const SimConfig& config,
   return r;
 }
 
-std::unique_ptr<ResolutionController> MakeSimController(ControllerKind kind, const SimConfig& config) {
-  if (kind == ControllerKind::Robust) {
-    RobustController::Params p;
-    p.latencyFrames = config.plant.latencyFrames;
-    return std::make_unique<RobustController>(p);
-  }
-  return MakeController(kind);
+const std::vector<ControlLaw>& AllLaws() {
+  static const std::vector<ControlLaw> laws = {ControlLaw::Article, ControlLaw::UEStyle, ControlLaw::Robust};
+  return laws;
 }
 
-std::vector<SimResult> RunMatrix(const std::vector<ControllerKind>& kinds, const std::vector<Scenario>& scenarios,
+std::vector<SimResult> RunMatrix(const std::vector<ControlLaw>& laws, const std::vector<Scenario>& scenarios,
                                  const SimConfig& base) {
   std::vector<SimResult> out;
-  for (ControllerKind k : kinds) {
+  for (ControlLaw law : laws) {
     for (Scenario s : scenarios) {
       const SimConfig c = ConfigFor(s, base);
-      auto controller = MakeSimController(k, c);
+      auto controller = MakeController(law, c.plant.latencyFrames);
       out.push_back(RunScenario(*controller, c));
     }
   }

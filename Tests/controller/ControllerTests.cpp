@@ -23,11 +23,12 @@ constexpr double kT = 1.0 / 60.0;
 ControlTarget Target() { return ControlTarget{kT, 0.1, 0.3, 1.0}; }
 
 TEST(TargetFrameSeconds, VSyncAndHalf) {
-  EXPECT_DOUBLE_EQ(TargetFrameSeconds(60.0, ResolutionControlMode::VSync), 1.0 / 60.0);
-  EXPECT_DOUBLE_EQ(TargetFrameSeconds(60.0, ResolutionControlMode::VSyncHalf), 2.0 / 60.0);
-  EXPECT_DOUBLE_EQ(TargetFrameSeconds(144.0, ResolutionControlMode::VSync), 1.0 / 144.0);
-  EXPECT_DOUBLE_EQ(TargetFrameSeconds(0.0, ResolutionControlMode::VSync), 1.0 / 60.0);
-  EXPECT_DOUBLE_EQ(TargetFrameSeconds(kNaN, ResolutionControlMode::VSyncHalf), 2.0 / 60.0);
+  EXPECT_DOUBLE_EQ(TargetFrameSeconds(60.0, ControlMode::VSync), 1.0 / 60.0);
+  EXPECT_DOUBLE_EQ(TargetFrameSeconds(60.0, ControlMode::HalfVSync), 2.0 / 60.0);
+  EXPECT_DOUBLE_EQ(TargetFrameSeconds(144.0, ControlMode::VSync), 1.0 / 144.0);
+  EXPECT_DOUBLE_EQ(TargetFrameSeconds(0.0, ControlMode::VSync), 1.0 / 60.0);
+  EXPECT_DOUBLE_EQ(TargetFrameSeconds(kNaN, ControlMode::HalfVSync), 2.0 / 60.0);
+  EXPECT_DOUBLE_EQ(TargetFrameSeconds(75.0, ControlMode::Manual), 1.0 / 75.0);
 }
 
 TEST(ArticleController, ExactLaw) {
@@ -41,7 +42,7 @@ TEST(ArticleController, ExactLaw) {
   EXPECT_DOUBLE_EQ(ArticleController::MeasuredSeconds({0.010, 0.020}), 0.015);
   // VSync/2 target.
   ControlTarget half = tg;
-  half.budgetSeconds = TargetFrameSeconds(60.0, ResolutionControlMode::VSyncHalf);
+  half.budgetSeconds = TargetFrameSeconds(60.0, ControlMode::HalfVSync);
   EXPECT_DOUBLE_EQ(ArticleController::Step(0.5, {0.02, 0.03}, half, 0.01), 0.5 * (1.0 + 0.01 * (1.0 - 0.025 * 30.0)));
   // clamps [0.3, max]
   EXPECT_DOUBLE_EQ(ArticleController::Step(0.3, {1.0, 1.0}, tg, 0.01), 0.3);
@@ -76,8 +77,8 @@ TEST(AllControllers, BoundedForAnyInput) {
     ArticleController law(k);
     ExpectBoundedForAnyInput(law, Target());
   }
-  for (ControllerKind kind : {ControllerKind::UEStyle, ControllerKind::Robust}) {
-    auto c = MakeController(kind);
+  for (ControlLaw law : {ControlLaw::UEStyle, ControlLaw::Robust}) {
+    auto c = MakeController(law);
     ExpectBoundedForAnyInput(*c, Target());
     ControlTarget ss{kT / 2, 0.2, 0.5, 2.0};
     ExpectBoundedForAnyInput(*c, ss);
@@ -90,8 +91,8 @@ TEST(AllControllers, BadTargetIsSanitised) {
     const ControlTarget s = SanitizeTarget(tg);
     EXPECT_TRUE(std::isfinite(s.budgetSeconds) && s.budgetSeconds > 0.0);
     EXPECT_TRUE(s.minScale > 0.0 && s.maxScale >= s.minScale);
-    for (ControllerKind kind : {ControllerKind::Article, ControllerKind::UEStyle, ControllerKind::Robust}) {
-      auto c = MakeController(kind);
+    for (ControlLaw law : {ControlLaw::Article, ControlLaw::UEStyle, ControlLaw::Robust}) {
+      auto c = MakeController(law);
       for (double gpu : kTimes) {
         const double out = c->Update(0.7, {gpu, kT}, tg);
         ASSERT_TRUE(std::isfinite(out));
@@ -247,15 +248,56 @@ TEST(UEStyleController, PanicsAfterConsecutiveOverBudgetFrames) {
 }
 
 TEST(Factory, Names) {
-  ControllerKind k;
-  EXPECT_TRUE(ParseControllerKind("article", &k));
-  EXPECT_EQ(k, ControllerKind::Article);
-  EXPECT_TRUE(ParseControllerKind("ue", &k));
-  EXPECT_EQ(k, ControllerKind::UEStyle);
-  EXPECT_TRUE(ParseControllerKind("robust", &k));
-  EXPECT_FALSE(ParseControllerKind("pid", &k));
-  for (ControllerKind kind : {ControllerKind::Article, ControllerKind::UEStyle, ControllerKind::Robust})
-    EXPECT_EQ(MakeController(kind)->Name(), ToString(kind));
+  ControlLaw law = ControlLaw::Count;
+  EXPECT_TRUE(ParseControlLaw("article", &law));
+  EXPECT_EQ(law, ControlLaw::Article);
+  EXPECT_TRUE(ParseControlLaw("ue", &law));
+  EXPECT_EQ(law, ControlLaw::UEStyle);
+  EXPECT_TRUE(ParseControlLaw("ue-style", &law));
+  EXPECT_EQ(law, ControlLaw::UEStyle);
+  EXPECT_TRUE(ParseControlLaw("robust", &law));
+  EXPECT_EQ(law, ControlLaw::Robust);
+  EXPECT_FALSE(ParseControlLaw("pid", &law));
+  EXPECT_FALSE(ParseControlLaw("", &law));
+  EXPECT_EQ(law, ControlLaw::Robust);  // untouched by a failed parse
+  // One name table: every law parses back from its option, and the controller
+  // made for it reports that option as its name.
+  for (int i = 0; i < static_cast<int>(ControlLaw::Count); ++i) {
+    const auto l = static_cast<ControlLaw>(i);
+    EXPECT_TRUE(ParseControlLaw(ControlLawOption(l), &law));
+    EXPECT_EQ(law, l);
+    EXPECT_EQ(MakeController(l)->Name(), ControlLawOption(l));
+    EXPECT_EQ(MakeController(l, 3)->Name(), ControlLawOption(l));
+  }
+  EXPECT_STREQ(ControlLawName(ControlLaw::Article), "Article (original)");
+  EXPECT_STREQ(ControlLawOption(ControlLaw::UEStyle), "ue-style");
+  EXPECT_STREQ(ControlModeName(ControlMode::HalfVSync), "VSync/2");
+  EXPECT_STREQ(ControlModeOption(ControlMode::HalfVSync), "half-vsync");
+  EXPECT_STREQ(ControlModeOption(ControlMode::Manual), "manual");
+  EXPECT_STREQ(ControlModeOption(ControlMode::VSync), "vsync");
+}
+
+// MakeController(Robust, n) is the law the sample and the simulator run with a
+// measurement latency of n frames: it behaves as a RobustController whose
+// Params say latencyFrames = n, not as the default one.
+TEST(Factory, RobustLatency) {
+  RobustController::Params p;
+  p.latencyFrames = 2;
+  RobustController expected(p);
+  RobustController zero;
+  auto made = MakeController(ControlLaw::Robust, 2);
+  const ControlTarget tg = Target();
+  double se = 0.7, sm = 0.7, sz = 0.7;
+  bool differsFromZero = false;
+  for (int i = 0; i < 60; ++i) {
+    const FrameTiming t{i < 20 ? 0.015 : 0.030, 0.016};
+    se = expected.Update(se, t, tg);
+    sm = made->Update(sm, t, tg);
+    sz = zero.Update(sz, t, tg);
+    EXPECT_EQ(sm, se) << i;
+    differsFromZero |= sm != sz;
+  }
+  EXPECT_TRUE(differsFromZero);
 }
 
 }  // namespace

@@ -21,8 +21,7 @@ const SimResult& Find(const std::vector<SimResult>& rs, std::string_view c, std:
 class Headline : public ::testing::Test {
 protected:
   static void SetUpTestSuite() {
-    results = new std::vector<SimResult>(RunMatrix(
-        {ControllerKind::Article, ControllerKind::UEStyle, ControllerKind::Robust}, AllScenarios(), SimConfig{}));
+    results = new std::vector<SimResult>(RunMatrix(AllLaws(), AllScenarios(), SimConfig{}));
   }
   static void TearDownTestSuite() { delete results; }
   static std::vector<SimResult>* results;
@@ -72,8 +71,8 @@ TEST_F(Headline, RobustIgnoresSpikesNaNAndCpuBoundFrames) {
 }
 
 TEST(Simulator, DeterministicForASeed) {
-  const auto a = RunMatrix({ControllerKind::Robust, ControllerKind::Article}, AllScenarios(), SimConfig{});
-  const auto b = RunMatrix({ControllerKind::Robust, ControllerKind::Article}, AllScenarios(), SimConfig{});
+  const auto a = RunMatrix({ControlLaw::Robust, ControlLaw::Article}, AllScenarios(), SimConfig{});
+  const auto b = RunMatrix({ControlLaw::Robust, ControlLaw::Article}, AllScenarios(), SimConfig{});
   std::ostringstream ca, cb;
   WriteCsv(ca, a);
   WriteCsv(cb, b);
@@ -102,7 +101,7 @@ TEST(Simulator, SweepFindsTheAnalyticInstability) {
 }
 
 TEST(Simulator, TableAndCsvHaveEveryRow) {
-  const auto rs = RunMatrix({ControllerKind::Robust}, AllScenarios(), SimConfig{});
+  const auto rs = RunMatrix({ControlLaw::Robust}, AllScenarios(), SimConfig{});
   std::ostringstream table, csv;
   PrintTable(table, rs);
   WriteCsv(csv, rs);
