@@ -7,12 +7,8 @@
 #include <cfloat>
 #include <cstring>
 #include <cstddef>
-#include <filesystem>
 #include <vector>
 
-#include "d3dl/ShaderCompiler.h"
-
-#include "Utility.h"
 
 namespace drr {
 
@@ -23,37 +19,14 @@ struct GuiConstants {
 };
 }  // namespace
 
-bool GuiRenderer::LoadShaders(const std::string& dir, std::string* error, const std::string& sourceDir,
-                              bool* compiled) {
+bool GuiRenderer::LoadShaders(const ShaderLibrary& lib, bool fromSource, std::string* error, bool* compiled) {
   d3dl::ComPtr<d3dl::VertexShader> vs;
   d3dl::ComPtr<d3dl::PixelShader> ps;
   d3dl::ComPtr<d3dl::InputLayout> layout;
   std::vector<uint32_t> vsCode;
-  if (compiled) *compiled = false;
-  const std::string source = sourceDir.empty() ? std::string() : sourceDir + "/Gui.hlsl";
-  if (!source.empty() && std::filesystem::exists(source)) {
-    std::vector<uint32_t> psCode;
-    std::string errs;
-    for (const bool vertex : {true, false}) {
-      d3dl::ShaderCompileDesc d;
-      d.SourcePath = source;
-      d.EntryPoint = vertex ? "GuiVS" : "GuiPS";
-      d.Stage = vertex ? d3dl::ShaderStage::Vertex : d3dl::ShaderStage::Pixel;
-      if (d3dl::FAILED(d3dl::CompileHLSL(d, vertex ? &vsCode : &psCode, &errs))) {
-        if (error) *error = std::string("Gui.hlsl (") + d.EntryPoint + ") did not compile:\n" + errs;
-        return false;
-      }
-    }
-    if (d3dl::FAILED(m_Device->CreateVertexShader(vsCode.data(), vsCode.size() * 4, vs.GetAddressOf())) ||
-        d3dl::FAILED(m_Device->CreatePixelShader(psCode.data(), psCode.size() * 4, ps.GetAddressOf()))) {
-      if (error) *error = "GUI: creating the compiled shaders failed";
-      return false;
-    }
-    if (compiled) *compiled = true;
-  } else if (d3dl::FAILED(Utility::LoadVertexShader(m_Device, dir, "Gui_GuiVS", vs.GetAddressOf(), &vsCode, error)) ||
-             d3dl::FAILED(Utility::LoadPixelShader(m_Device, dir, "Gui_GuiPS", ps.GetAddressOf(), error))) {
+  if (!lib.CreateVertexShader(m_Device, "Gui_GuiVS", fromSource, vs.GetAddressOf(), &vsCode, error, compiled) ||
+      !lib.CreatePixelShader(m_Device, "Gui_GuiPS", fromSource, ps.GetAddressOf(), error))
     return false;
-  }
   const d3dl::INPUT_ELEMENT_DESC elements[] = {
       {"POSITION", 0, d3dl::DXGI_FORMAT_R32G32_FLOAT, 0, uint32_t(offsetof(ImDrawVert, pos))},
       {"TEXCOORD", 0, d3dl::DXGI_FORMAT_R32G32_FLOAT, 0, uint32_t(offsetof(ImDrawVert, uv))},
@@ -70,14 +43,9 @@ bool GuiRenderer::LoadShaders(const std::string& dir, std::string* error, const 
   return true;
 }
 
-bool GuiRenderer::ReloadShaders(const std::string& dir, std::string* error, const std::string& sourceDir,
-                                bool* compiled) {
-  return LoadShaders(dir, error, sourceDir, compiled);
-}
-
-bool GuiRenderer::Init(d3dl::Device* device, const std::string& shaderDir, std::string* error) {
+bool GuiRenderer::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* error) {
   m_Device = device;
-  if (!LoadShaders(shaderDir, error)) return false;
+  if (!LoadShaders(shaders, false, error)) return false;
 
   ImGuiIO& io = ImGui::GetIO();
   unsigned char* pixels = nullptr;

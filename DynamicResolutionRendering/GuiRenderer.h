@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "ShaderLibrary.h"
 #include "d3dl/D3DLike.h"
 
 struct ImDrawData;
@@ -15,18 +16,14 @@ namespace drr {
 class GuiRenderer {
  public:
   // Needs an ImGui context; builds the font atlas texture.
-  bool Init(d3dl::Device* device, const std::string& shaderDir, std::string* error);
-  // F4: compiles <sourceDir>/Gui.hlsl when sourceDir is given and holds it
-  // (*compiled set), else reloads the .spv files. Keeps the old shaders on error.
-  bool ReloadShaders(const std::string& shaderDir, std::string* error, const std::string& sourceDir = {},
-                     bool* compiled = nullptr);
+  bool Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* error);
+  // Keeps the old shaders on error (F4); *compiled: compiled from HLSL.
+  bool LoadShaders(const ShaderLibrary& shaders, bool fromSource, std::string* error, bool* compiled = nullptr);
   void Release();
   // Draws into the bound render target; the caller set the back-buffer viewport.
   void Render(d3dl::DeviceContext* ctx, ImDrawData* drawData);
 
  private:
-  bool LoadShaders(const std::string& shaderDir, std::string* error, const std::string& sourceDir = {},
-                   bool* compiled = nullptr);
   bool EnsureBuffers(int vertexCount, int indexCount);
 
   d3dl::Device* m_Device = nullptr;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstring>
 
-#include "Utility.h"
 
 namespace drr {
 
@@ -16,12 +15,12 @@ struct ZoomConstants {
 };
 }  // namespace
 
-bool ZoomBox::LoadShaders(const std::string& dir, std::string* error) {
+bool ZoomBox::LoadShaders(const ShaderLibrary& lib, bool fromSource, std::string* error) {
   d3dl::ComPtr<d3dl::VertexShader> vs;
   d3dl::ComPtr<d3dl::PixelShader> zoom, border;
-  if (d3dl::FAILED(Utility::LoadVertexShader(m_Device, dir, "ZoomBox_ZoomVS", vs.GetAddressOf(), nullptr, error)) ||
-      d3dl::FAILED(Utility::LoadPixelShader(m_Device, dir, "ZoomBox_ZoomPS", zoom.GetAddressOf(), error)) ||
-      d3dl::FAILED(Utility::LoadPixelShader(m_Device, dir, "ZoomBox_BorderPS", border.GetAddressOf(), error)))
+  if (!lib.CreateVertexShader(m_Device, "ZoomBox_ZoomVS", fromSource, vs.GetAddressOf(), nullptr, error) ||
+      !lib.CreatePixelShader(m_Device, "ZoomBox_ZoomPS", fromSource, zoom.GetAddressOf(), error) ||
+      !lib.CreatePixelShader(m_Device, "ZoomBox_BorderPS", fromSource, border.GetAddressOf(), error))
     return false;
   m_VS = vs;
   m_ZoomPS = zoom;
@@ -29,11 +28,9 @@ bool ZoomBox::LoadShaders(const std::string& dir, std::string* error) {
   return true;
 }
 
-bool ZoomBox::ReloadShaders(const std::string& dir, std::string* error) { return LoadShaders(dir, error); }
-
-bool ZoomBox::Init(d3dl::Device* device, const std::string& shaderDir, std::string* error) {
+bool ZoomBox::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* error) {
   m_Device = device;
-  if (!LoadShaders(shaderDir, error)) return false;
+  if (!LoadShaders(shaders, false, error)) return false;
   d3dl::BUFFER_DESC cb;
   cb.ByteWidth = sizeof(ZoomConstants);
   cb.Usage = d3dl::USAGE_DYNAMIC;

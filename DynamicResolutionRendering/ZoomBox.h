@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "ShaderLibrary.h"
 #include "d3dl/D3DLike.h"
 
 namespace drr {
@@ -13,8 +14,9 @@ class ZoomBox {
  public:
   static constexpr float kMagnification = 4.0f;
 
-  bool Init(d3dl::Device* device, const std::string& shaderDir, std::string* error);
-  bool ReloadShaders(const std::string& shaderDir, std::string* error);
+  bool Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* error);
+  // Keeps the old shaders on error (F4).
+  bool LoadShaders(const ShaderLibrary& shaders, bool fromSource, std::string* error);
   void Release();
   // Called when the back buffer changes size; the copy is made lazily.
   void ReleaseCopy();
@@ -24,7 +26,6 @@ class ZoomBox {
   uint64_t Bytes() const { return m_Bytes; }
 
  private:
-  bool LoadShaders(const std::string& shaderDir, std::string* error);
   d3dl::Device* m_Device = nullptr;
   d3dl::ComPtr<d3dl::VertexShader> m_VS;
   d3dl::ComPtr<d3dl::PixelShader> m_ZoomPS, m_BorderPS;

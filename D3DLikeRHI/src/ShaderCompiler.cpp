@@ -152,4 +152,25 @@ HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
   return S_OK;
 }
 
+HRESULT ReadSpirvFile(const std::string& path, std::vector<uint32_t>* spirv, std::string* error) {
+  std::ifstream f(path, std::ios::binary | std::ios::ate);
+  if (!f) {
+    if (error) *error = "cannot open " + path;
+    return E_FAIL;
+  }
+  const std::streamsize size = f.tellg();
+  if (size <= 0 || size % 4 != 0) {
+    if (error) *error = path + ": not a SPIR-V file (size " + std::to_string(size) + ")";
+    return E_FAIL;
+  }
+  spirv->resize(size_t(size) / 4);
+  f.seekg(0);
+  f.read(reinterpret_cast<char*>(spirv->data()), size);
+  if (!f) {
+    if (error) *error = "cannot read " + path;
+    return E_FAIL;
+  }
+  return S_OK;
+}
+
 }  // namespace d3dl

@@ -84,7 +84,7 @@ Stat Summarise(const std::vector<double>& v) {
   return {Percentile(v, 0.5), Percentile(v, 0.25), Percentile(v, 0.75)};
 }
 
-ImageF ToImage(const ImageRGBA8& img) {
+ImageF ToImage(const Image& img) {
   return ImageFromRGBA8(img.pixels.data(), img.width, img.height, img.width * 4);
 }
 
@@ -120,7 +120,7 @@ std::vector<FrameRecord> RenderFrames(Sample& sample, int frames) {
                                   all.end());
 }
 
-ImageRGBA8 Capture(Sample& sample) {
+Image Capture(Sample& sample) {
   sample.RequestCapture();
   sample.RenderFrame();
   return sample.CapturedBackBufferNoGui();
@@ -153,8 +153,8 @@ bool MakeReference(const BenchPlan& plan, const BenchView& view, ImageF* referen
   Sample sample;
   if (sample.Init(o, error) != 0) return false;
   RenderFrames(sample, 2);
-  const ImageRGBA8 first = Capture(sample);
-  const ImageRGBA8 second = Capture(sample);
+  const Image first = Capture(sample);
+  const Image second = Capture(sample);
   sample.Shutdown();
   if (first.Empty() || second.Empty()) {
     *error = "the reference frame could not be read back";
@@ -202,8 +202,8 @@ class BlitFloor {
 
   // Times `frames` blits of (0,0,vpW,vpH) of `scene` (the whole dynamic RT,
   // sRGB bytes) to a bbW x bbH target; returns the times and the last image.
-  bool Run(const ImageRGBA8& scene, uint32_t vpW, uint32_t vpH, uint32_t bbW, uint32_t bbH, int frames,
-           std::vector<double>* ms, ImageRGBA8* image, std::string* error) {
+  bool Run(const Image& scene, uint32_t vpW, uint32_t vpH, uint32_t bbW, uint32_t bbH, int frames,
+           std::vector<double>* ms, Image* image, std::string* error) {
     if (!ok_ || scene.Empty() || vpW == 0 || vpH == 0 || vpW > scene.width || vpH > scene.height) {
       *error = "blit floor: no queries or no scene colour";
       return false;
@@ -214,7 +214,7 @@ class BlitFloor {
     d.Format = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
     d.BindFlags = d3dl::BIND_SHADER_RESOURCE | d3dl::BIND_RENDER_TARGET;
     d3dl::SUBRESOURCE_DATA init{scene.pixels.data(), scene.width * 4, 0};
-    d3dl::ComPtr<d3dl::Texture2D> src, dst, staging;
+    d3dl::ComPtr<d3dl::Texture2D> src, dst;
     if (d3dl::FAILED(device_->CreateTexture2D(&d, &init, src.GetAddressOf()))) {
       *error = "blit floor: cannot create the source texture";
       return false;
@@ -247,26 +247,11 @@ class BlitFloor {
                           : std::nan(""));
       }
     }
-    d.Usage = d3dl::USAGE_STAGING;
-    d.CPUAccessFlags = d3dl::CPU_ACCESS_READ;
-    d.BindFlags = 0;
-    if (d3dl::FAILED(device_->CreateTexture2D(&d, nullptr, staging.GetAddressOf()))) {
-      *error = "blit floor: cannot create the read-back texture";
+    std::string readError;
+    if (!ReadBack(device_, ctx_.Get(), dst.Get(), 0, image, &readError)) {
+      *error = "blit floor: cannot read the image back: " + readError;
       return false;
     }
-    ctx_->CopyResource(staging.Get(), dst.Get());
-    d3dl::MAPPED_SUBRESOURCE m;
-    if (d3dl::FAILED(ctx_->Map(staging.Get(), 0, d3dl::MAP_READ, 0, &m))) {
-      *error = "blit floor: cannot read the image back";
-      return false;
-    }
-    image->width = bbW;
-    image->height = bbH;
-    image->pixels.resize(size_t(bbW) * bbH * 4);
-    for (uint32_t y = 0; y < bbH; ++y)
-      std::memcpy(image->pixels.data() + size_t(y) * bbW * 4,
-                  static_cast<const uint8_t*>(m.pData) + size_t(y) * m.RowPitch, size_t(bbW) * 4);
-    ctx_->Unmap(staging.Get(), 0);
     return true;
   }
 
@@ -411,7 +396,7 @@ namespace {
 // capture. Returns the row (error against `reference`) and the image.
 BenchRow Measure(Sample& sample, const BenchPlan& plan, const Options& settings,
                  const std::string& viewName, const std::string& filterName, double scale,
-                 const ImageF& reference, int warmup, int frames, ImageRGBA8* imageOut = nullptr) {
+                 const ImageF& reference, int warmup, int frames, Image* imageOut = nullptr) {
   sample.ApplySettings(settings);
   const auto start = std::chrono::steady_clock::now();
   RenderFrames(sample, warmup);
@@ -438,7 +423,7 @@ BenchRow Measure(Sample& sample, const BenchPlan& plan, const Options& settings,
   row.gpuPost = Summarise(p);
   row.gpuScale = Summarise(scl);
   row.wall = Summarise(wall);
-  const ImageRGBA8 image = Capture(sample);
+  const Image image = Capture(sample);
   row.error = CompareImages(ToImage(image), reference);
   if (settings.dynamicResolution) {
     row.viewportW = sample.GetDynamicResolution().GetViewport().Width;
@@ -502,7 +487,7 @@ bool MeasureMoving(const BenchPlan& plan, BenchResults* results, Progress* progr
     return std::max(s.time, 0.0) + double(captureFrame) * s.fixedDt;
   };
   bool exact = true;
-  auto run = [&](const std::string& name, Options s, ImageRGBA8* image) {
+  auto run = [&](const std::string& name, Options s, Image* image) {
     s = moving(s);
     const int64_t captureFrame = sample.FrameCount() + n;
     BenchRow row = Measure(sample, plan, s, refView.name, name, s.scaleX, reference, 0, n, image);
@@ -518,7 +503,7 @@ bool MeasureMoving(const BenchPlan& plan, BenchResults* results, Progress* progr
       s.motionBlur = false;  // isolates the history: the reference has no motion blur
       s.filter = f;
       s.scaleX = s.scaleY = 0.71f;
-      ImageRGBA8 image, still;
+      Image image, still;
       BenchRow row = run(std::string("ghost ") + FilterOption(f), s, &image);
       // The same filter settled on the same animation time (camera held
       // still): the difference is what the motion adds (ghost trails), not
@@ -540,7 +525,7 @@ bool MeasureMoving(const BenchPlan& plan, BenchResults* results, Progress* progr
     s.dynamicResolution = false;
     s.motionBlur = true;
     s.filter = Filter::Point;
-    ImageRGBA8 nativeImage, scaledImage;
+    Image nativeImage, scaledImage;
     BenchRow native = run("motion-blur native", s, &nativeImage);
     s.dynamicResolution = true;
     s.filter = Filter::Bilinear;
@@ -607,7 +592,7 @@ int RunBench(const BenchPlan& plan) {
       results.driver = adapter.Driver;
     }
     auto measure = [&](const Options& settings, const std::string& filterName, double scale,
-                       ImageRGBA8* image = nullptr) {
+                       Image* image = nullptr) {
       results.rows.push_back(Measure(sample, plan, settings, view.name, filterName, scale, reference,
                                      plan.warmupFrames, plan.measuredFrames, image));
       progress.Step(view.name + " " + filterName + " " + Num2(scale));
@@ -631,7 +616,7 @@ int RunBench(const BenchPlan& plan) {
         // Blit floor of this scale, from the scene colour the first filter
         // (point in the default plans) rendered: same source region, same
         // back-buffer size, linear filter.
-        const ImageRGBA8 scene = sample.CapturedSceneColor();
+        const Image scene = sample.CapturedSceneColor();
         const BenchRow& last = results.rows.back();
         BenchRow row;
         row.view = view.name;
@@ -640,7 +625,7 @@ int RunBench(const BenchPlan& plan) {
         row.viewportW = last.viewportW;
         row.viewportH = last.viewportH;
         std::vector<double> ms;
-        ImageRGBA8 image;
+        Image image;
         if (!blit.Run(scene, uint32_t(last.viewportW), uint32_t(last.viewportH), sample.BackBufferWidth(),
                       sample.BackBufferHeight(), plan.measuredFrames, &ms, &image, &error)) {
           std::fprintf(stderr, "\nbench: %s\n", error.c_str());

@@ -13,16 +13,9 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "d3dl/D3DLike.h"
-#include "d3dl/ShaderCompiler.h"
 #include "scene/ModelLoader.h"
 #include "scene/SceneDescription.h"
 
-#ifndef DRR_SCENE_SHADER_DIR
-#define DRR_SCENE_SHADER_DIR "shaders"
-#endif
-#ifndef DRR_SCENE_HLSL
-#define DRR_SCENE_HLSL "Shaders/SceneShaders.hlsl"
-#endif
 
 namespace drr {
 namespace fs = std::filesystem;
@@ -59,26 +52,11 @@ struct LightingConstants {
 };
 
 int VariantIndex(bool normal, bool specular, bool velocity) { return (normal ? 4 : 0) | (specular ? 2 : 0) | (velocity ? 1 : 0); }
+// Names of the compiled variants in Shaders/CMakeLists.txt.
 std::string VariantFile(int v) {
   char b[64];
-  snprintf(b, sizeof b, "scene_ps_n%d_s%d_v%d.spv", (v >> 2) & 1, (v >> 1) & 1, v & 1);
+  snprintf(b, sizeof b, "scene_ps_n%d_s%d_v%d", (v >> 2) & 1, (v >> 1) & 1, v & 1);
   return b;
-}
-
-bool ReadSpv(const std::string& path, std::vector<uint32_t>* words, std::string* error) {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) {
-    *error = path + ": cannot open compiled shader";
-    return false;
-  }
-  std::vector<char> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-  if (bytes.empty() || bytes.size() % 4) {
-    *error = path + ": not a SPIR-V module (size " + std::to_string(bytes.size()) + ")";
-    return false;
-  }
-  words->resize(bytes.size() / 4);
-  std::memcpy(words->data(), bytes.data(), bytes.size());
-  return true;
 }
 
 float MaxScale(const glm::mat4& m) {
@@ -130,7 +108,7 @@ struct CameraRef {
 struct SceneImpl {
   ComPtr<d3dl::Device> device;
   SceneLoadOptions opts;
-  std::string shaderDir;
+  ShaderLibrary shaders;
   std::vector<Entry> entries;
   std::vector<CameraRef> cameras;
   int defaultCamera = 0;
@@ -168,17 +146,17 @@ struct SceneImpl {
 };
 
 // ---------------------------------------------------------------------------
-static std::string VsFile(int i) { return "scene_vs_n" + std::to_string(i >> 1) + "_v" + std::to_string(i & 1) + ".spv"; }
+static std::string VsFile(int i) { return "scene_vs_n" + std::to_string(i >> 1) + "_v" + std::to_string(i & 1); }
 
 bool SceneImpl::CreateShaders(std::string* error) {
   for (int v = 0; v < 8; ++v) {
     ps[v] = nullptr;
     if (!psWanted[v]) continue;
-    if (!ReadSpv(shaderDir + "/" + VariantFile(v), &psCode[v], error)) return false;
+    if (!shaders.Load(VariantFile(v), false, &psCode[v], error)) return false;
     int vi = ((v >> 2) & 1) * 2 + (v & 1);
-    if (vsCode[vi].empty() && !ReadSpv(shaderDir + "/" + VsFile(vi), &vsCode[vi], error)) return false;
+    if (vsCode[vi].empty() && !shaders.Load(VsFile(vi), false, &vsCode[vi], error)) return false;
     int vi0 = ((v >> 2) & 1) * 2;  // the no-velocity variant of the same material
-    if (vsCode[vi0].empty() && !ReadSpv(shaderDir + "/" + VsFile(vi0), &vsCode[vi0], error)) return false;
+    if (vsCode[vi0].empty() && !shaders.Load(VsFile(vi0), false, &vsCode[vi0], error)) return false;
   }
   return true;
 }
@@ -188,7 +166,7 @@ bool SceneImpl::VertexStage(int v, d3dl::VertexShader** shader, d3dl::InputLayou
   int vi = ((v >> 2) & 1) * 2 + (v & 1);
   if (!vs[vi]) {
     std::string err;
-    if (vsCode[vi].empty() && !ReadSpv(shaderDir + "/" + VsFile(vi), &vsCode[vi], &err)) {
+    if (vsCode[vi].empty() && !shaders.Load(VsFile(vi), false, &vsCode[vi], &err)) {
       Warn(err);
       return false;
     }
@@ -221,7 +199,7 @@ d3dl::PixelShader* SceneImpl::Variant(int v) {
   if (!ps[v]) {
     if (psCode[v].empty()) {
       std::string err;
-      if (!ReadSpv(shaderDir + "/" + VariantFile(v), &psCode[v], &err)) {
+      if (!shaders.Load(VariantFile(v), false, &psCode[v], &err)) {
         Warn(err);
         return nullptr;
       }
@@ -360,7 +338,8 @@ std::unique_ptr<Scene> Scene::Load(d3dl::Device* device, const std::string& path
   SceneImpl& s = *scene->impl_;
   s.device = ComPtr<d3dl::Device>(device);
   s.opts = opts;
-  s.shaderDir = opts.shaderDir.empty() ? std::string(DRR_SCENE_SHADER_DIR) : opts.shaderDir;
+  if (opts.shaders) s.shaders = *opts.shaders;
+  else s.shaders.Open(ShaderLibrary::DefaultSpvDir({}), ShaderLibrary::DefaultSourceDir());
 
   // Entries: from a description, or one LIT entry for a single model file.
   const bool single = !IsSceneDescriptionPath(path);
@@ -621,37 +600,18 @@ void Scene::Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p) {
   ctx->EndEvent();
 }
 
-bool Scene::ReloadShaders(std::string* error) {
+bool Scene::ReloadShaders(const ShaderLibrary& shaders, bool fromSource, std::string* error) {
   SceneImpl& s = *impl_;
   std::string dummy;
   if (!error) error = &dummy;
-  std::string errs;
   std::vector<uint32_t> vcode[4], code[8];
-  for (int vi = 0; vi < 4; ++vi) {
-    d3dl::ShaderCompileDesc vd;
-    vd.SourcePath = DRR_SCENE_HLSL;
-    vd.EntryPoint = "SceneVS";
-    vd.Stage = d3dl::ShaderStage::Vertex;
-    vd.Defines = {{"NORMAL_MAP", std::to_string(vi >> 1)}, {"WRITE_VELOCITY", std::to_string(vi & 1)}};
-    if (FAILED(d3dl::CompileHLSL(vd, &vcode[vi], &errs))) {
-      *error = std::string(DRR_SCENE_HLSL) + ": SceneVS (" + VsFile(vi) + "): " + errs;
-      return false;
-    }
-  }
+  for (int vi = 0; vi < 4; ++vi)
+    if (!shaders.Load(VsFile(vi), fromSource, &vcode[vi], error)) return false;
   for (int v = 0; v < 8; ++v) {
     if (!s.psWanted[v] && !s.ps[v]) continue;
-    d3dl::ShaderCompileDesc pd;
-    pd.SourcePath = DRR_SCENE_HLSL;
-    pd.EntryPoint = "ScenePS";
-    pd.Stage = d3dl::ShaderStage::Pixel;
-    pd.Defines = {{"NORMAL_MAP", std::to_string((v >> 2) & 1)},
-                  {"SPECULAR_MAP", std::to_string((v >> 1) & 1)},
-                  {"WRITE_VELOCITY", std::to_string(v & 1)}};
-    if (FAILED(d3dl::CompileHLSL(pd, &code[v], &errs))) {
-      *error = std::string(DRR_SCENE_HLSL) + ": ScenePS (" + VariantFile(v) + "): " + errs;
-      return false;
-    }
+    if (!shaders.Load(VariantFile(v), fromSource, &code[v], error)) return false;
   }
+  s.shaders = shaders;
   // All compiled: swap in (objects are recreated lazily from the new code).
   for (int vi = 0; vi < 4; ++vi) {
     s.vsCode[vi] = std::move(vcode[vi]);

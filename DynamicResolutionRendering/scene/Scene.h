@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include "ShaderLibrary.h"
 #include "scene/SceneVertex.h"
 
 namespace d3dl {
@@ -21,7 +22,7 @@ class DeviceContext;
 namespace drr {
 
 struct SceneLoadOptions {
-  std::string shaderDir;  // folder of the compiled scene_*.spv; empty = the build's shader folder
+  const ShaderLibrary* shaders = nullptr;  // the compiled scene_* shaders; null = the build's
   bool verbose = false;   // print what is loaded (and the warnings) to stdout
   // Anisotropy of the scene samplers (the original: x16); 1 = trilinear.
   uint32_t maxAnisotropy = 16;
@@ -71,7 +72,8 @@ class Scene {
   // Caller has set RTVs, DSV and viewport; Render sets everything else it needs.
   void Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p);
   SceneStats Stats() const;
-  bool ReloadShaders(std::string* error);  // F4
+  // F4: reloads (fromSource: recompiles) every variant; the old ones stay on error.
+  bool ReloadShaders(const ShaderLibrary& shaders, bool fromSource, std::string* error);
 
   // Additions: warnings gathered while loading (missing textures, repaired data).
   const std::vector<std::string>& Warnings() const;

@@ -1,5 +1,7 @@
 #include "RenderTest.h"
 
+#include "d3dl/ShaderCompiler.h"
+
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -8,47 +10,6 @@
 using namespace d3dl;
 
 namespace drrtest {
-namespace {
-float HalfToFloat(uint16_t h) {
-  uint32_t s = (h >> 15) & 1, e = (h >> 10) & 0x1f, m = h & 0x3ff;
-  float v;
-  if (e == 0) v = std::ldexp(float(m), -24);
-  else if (e == 31) v = m ? NAN : INFINITY;
-  else v = std::ldexp(float(m | 0x400), int(e) - 25);
-  return s ? -v : v;
-}
-}  // namespace
-
-std::array<uint8_t, 4> Image::RGBA8(uint32_t x, uint32_t y) const {
-  const uint8_t* p = At(x, y);
-  if (format == DXGI_FORMAT_B8G8R8A8_UNORM || format == DXGI_FORMAT_B8G8R8A8_UNORM_SRGB) return {p[2], p[1], p[0], p[3]};
-  return {p[0], p[1], p[2], p[3]};
-}
-
-float Image::Float(uint32_t x, uint32_t y, uint32_t c) const {
-  const uint8_t* p = At(x, y);
-  switch (format) {
-    case DXGI_FORMAT_R32_FLOAT:
-    case DXGI_FORMAT_R32G32_FLOAT:
-    case DXGI_FORMAT_R32G32B32A32_FLOAT:
-    case DXGI_FORMAT_D32_FLOAT:
-    case DXGI_FORMAT_R32_TYPELESS: {
-      float f;
-      std::memcpy(&f, p + 4 * c, 4);
-      return f;
-    }
-    case DXGI_FORMAT_R16_FLOAT:
-    case DXGI_FORMAT_R16G16_FLOAT:
-    case DXGI_FORMAT_R16G16B16A16_FLOAT: {
-      uint16_t h;
-      std::memcpy(&h, p + 2 * c, 2);
-      return HalfToFloat(h);
-    }
-    default:
-      return RGBA8(x, y)[c] / 255.0f;
-  }
-}
-
 void RenderTest::LogThunk(LogLevel level, const char* message, void* user) {
   auto* self = static_cast<RenderTest*>(user);
   std::lock_guard<std::mutex> lock(self->mutex_);
@@ -90,16 +51,10 @@ std::string RenderTest::ShaderDir() {
 }
 
 std::vector<uint32_t> RenderTest::LoadSpirv(const std::string& path) {
-  std::string full = (!path.empty() && path[0] == '/') ? path : ShaderDir() + "/" + path;
-  std::ifstream in(full, std::ios::binary | std::ios::ate);
-  if (!in) {
-    ADD_FAILURE() << "cannot open shader " << full;
-    return {};
-  }
-  size_t size = static_cast<size_t>(in.tellg());
-  std::vector<uint32_t> words(size / 4);
-  in.seekg(0);
-  in.read(reinterpret_cast<char*>(words.data()), static_cast<std::streamsize>(words.size() * 4));
+  const std::string full = (!path.empty() && path[0] == '/') ? path : ShaderDir() + "/" + path;
+  std::vector<uint32_t> words;
+  std::string error;
+  if (FAILED(ReadSpirvFile(full, &words, &error))) ADD_FAILURE() << "cannot load shader: " << error;
   return words;
 }
 
@@ -142,43 +97,10 @@ void RenderTest::SetViewport(uint32_t w, uint32_t h) {
 
 Image RenderTest::ReadBack(Texture2D* texture, uint32_t mip) {
   Image img;
-  if (!texture) {
-    ADD_FAILURE() << "ReadBack: null texture";
-    return img;
-  }
-  TEXTURE2D_DESC d;
-  texture->GetDesc(&d);
-  if (mip >= d.MipLevels) {
-    ADD_FAILURE() << "ReadBack: mip " << mip << " out of range";
-    return img;
-  }
-  TEXTURE2D_DESC sd;
-  sd.Width = std::max(1u, d.Width >> mip);
-  sd.Height = std::max(1u, d.Height >> mip);
-  sd.Format = d.Format;
-  sd.Usage = USAGE_STAGING;
-  sd.CPUAccessFlags = CPU_ACCESS_READ;
-  ComPtr<Texture2D> staging;
-  HRESULT hr = device_->CreateTexture2D(&sd, nullptr, staging.ReleaseAndGetAddressOf());
-  if (hr != S_OK) {
-    ADD_FAILURE() << "ReadBack: staging texture: " << HResultName(hr);
-    return img;
-  }
-  context_->CopySubresourceRegion(staging.Get(), 0, 0, 0, 0, texture, CalcSubresource(mip, 0, d.MipLevels), nullptr);
-  MAPPED_SUBRESOURCE m;
-  hr = context_->Map(staging.Get(), 0, MAP_READ, 0, &m);
-  if (hr != S_OK) {
-    ADD_FAILURE() << "ReadBack: Map: " << HResultName(hr);
-    return img;
-  }
-  img.width = sd.Width;
-  img.height = sd.Height;
-  img.format = d.Format == DXGI_FORMAT_R32_TYPELESS ? DXGI_FORMAT_R32_FLOAT : d.Format;
-  const uint32_t row = img.width * FormatBytesPerElement(img.format);
-  img.data.resize(size_t(row) * img.height);
-  for (uint32_t y = 0; y < img.height; ++y)
-    std::memcpy(img.data.data() + size_t(y) * row, static_cast<const uint8_t*>(m.pData) + size_t(y) * m.RowPitch, row);
-  context_->Unmap(staging.Get(), 0);
+  std::string error;
+  if (!texture) ADD_FAILURE() << "ReadBack: null texture";
+  else if (!drr::ReadBack(device_.Get(), context_.Get(), texture, mip, &img, &error))
+    ADD_FAILURE() << "ReadBack of mip " << mip << ": " << error;
   return img;
 }
 

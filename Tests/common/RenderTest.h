@@ -25,32 +25,17 @@
 #include <string>
 #include <vector>
 
+#include "Readback.h"
+#include "RenderTargets.h"
 #include "d3dl/D3DLike.h"
 
 namespace drrtest {
 
-// Tightly packed pixels of one subresource (rows of width * BytesPerPixel()).
-struct Image {
-  uint32_t width = 0;
-  uint32_t height = 0;
-  d3dl::DXGI_FORMAT format = d3dl::DXGI_FORMAT_UNKNOWN;
-  std::vector<uint8_t> data;
-
-  uint32_t BytesPerPixel() const { return d3dl::FormatBytesPerElement(format); }
-  const uint8_t* At(uint32_t x, uint32_t y) const { return data.data() + (size_t(y) * width + x) * BytesPerPixel(); }
-  // R, G, B, A of an 8-bit RGBA or BGRA pixel (BGRA is swizzled to RGBA).
-  std::array<uint8_t, 4> RGBA8(uint32_t x, uint32_t y) const;
-  // Channel c of a float pixel (R32_FLOAT, R32G32_FLOAT, R32G32B32A32_FLOAT,
-  // R16_FLOAT, R16G16_FLOAT, R16G16B16A16_FLOAT) or a UNORM8 pixel (as 0..1).
-  float Float(uint32_t x, uint32_t y, uint32_t c = 0) const;
-};
-
-// A texture usable as render target and shader resource, with its views.
-struct RenderTarget {
-  d3dl::ComPtr<d3dl::Texture2D> texture;
-  d3dl::ComPtr<d3dl::RenderTargetView> rtv;
-  d3dl::ComPtr<d3dl::ShaderResourceView> srv;
-};
+// The sample's image and render-target types (DynamicResolutionRendering/
+// Readback.h, RenderTargets.h): pixels of one subresource in its format, and
+// a texture with its views.
+using Image = drr::Image;
+using RenderTarget = drr::RenderTarget;
 
 class RenderTest : public ::testing::Test {
  public:

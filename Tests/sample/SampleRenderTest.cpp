@@ -60,7 +60,7 @@ struct Diff {
   double meanAbs = 0;
 };
 
-Diff Compare(const ImageRGBA8& a, const ImageRGBA8& b) {
+Diff Compare(const Image& a, const Image& b) {
   Diff d;
   if (a.width != b.width || a.height != b.height) {
     d.maxAbs = 256;
@@ -120,7 +120,7 @@ TEST_P(SampleMatrix, AllScalesMotionBlurSymmetric) {
         o.symmetricTAA = sym;
         s.ApplySettings(o);
         RenderFrames(s, 3);
-        const ImageRGBA8& img = s.CapturedBackBuffer();
+        const Image& img = s.CapturedBackBuffer();
         ASSERT_EQ(img.width, 160u);
         ASSERT_EQ(img.height, 90u);
         // Not blank: the scene is visible.
@@ -131,14 +131,14 @@ TEST_P(SampleMatrix, AllScalesMotionBlurSymmetric) {
         // Velocity (half floats) inside the viewport stays finite (outside it the
         // RT is never written nor read). Colour targets are UNORM and cannot
         // hold NaN; the post shaders sanitise whatever they read.
-        const ImageRG32F& v = s.CapturedVelocity();
+        const Image& v = s.CapturedVelocity();
         const DynamicResolution& dr = s.GetDynamicResolution();
         size_t bad = 0;
         const uint32_t vw = o.dynamicResolution ? dr.GetViewportWidth() : v.width;
         const uint32_t vh = o.dynamicResolution ? dr.GetViewportHeight() : v.height;
         for (uint32_t y = 0; y < std::min(vh, v.height); ++y)
-          for (uint32_t x = 0; x < std::min(vw, v.width) * 2; ++x)
-            bad += !std::isfinite(v.pixels[size_t(y) * v.width * 2 + x]);
+          for (uint32_t x = 0; x < std::min(vw, v.width); ++x)
+            bad += !std::isfinite(v.Float(x, y, 0)) + !std::isfinite(v.Float(x, y, 1));
         EXPECT_EQ(bad, 0u) << "non-finite velocity inside the viewport";
         char name[256];
         std::snprintf(name, sizeof name, "%s/%s_s%.2f_mb%d_sym%d.png", dir.c_str(), FilterOption(filter),
@@ -174,11 +174,11 @@ TEST_F(SampleFixture, PointAtScale1EqualsDynamicResolutionOff) {
     o.dynamicResolution = true;
     if (!mb) StartSample(o); else sample.ApplySettings(o);
     RenderFrames(sample, 3);
-    const ImageRGBA8 dyn = sample.CapturedBackBuffer();
+    const Image dyn = sample.CapturedBackBuffer();
     o.dynamicResolution = false;
     sample.ApplySettings(o);
     RenderFrames(sample, 3);
-    const ImageRGBA8 full = sample.CapturedBackBuffer();
+    const Image full = sample.CapturedBackBuffer();
     const Diff d = Compare(dyn, full);
     std::printf("[image] point@1.0 vs no dynamic resolution (motion blur %d): max diff %d, %llu px differ\n",
                 int(mb), d.maxAbs, (unsigned long long)d.differing);
@@ -193,12 +193,12 @@ TEST_F(SampleFixture, PointAtHalfEqualsNearestNeighbourUpscale) {
   o.scaleX = o.scaleY = 0.5f;
   StartSample(o);
   RenderFrames(sample, 3);
-  const ImageRGBA8& rt = sample.CapturedSceneColor();
-  const ImageRGBA8& bb = sample.CapturedBackBuffer();
+  const Image& rt = sample.CapturedSceneColor();
+  const Image& bb = sample.CapturedBackBuffer();
   const DynamicResolution& dr = sample.GetDynamicResolution();
   ASSERT_EQ(dr.GetViewportWidth(), 160u);
   ASSERT_EQ(dr.GetViewportHeight(), 90u);
-  ImageRGBA8 up;
+  Image up;
   up.width = bb.width;
   up.height = bb.height;
   up.pixels.resize(bb.pixels.size());
@@ -216,7 +216,7 @@ TEST_F(SampleFixture, PointAtHalfEqualsNearestNeighbourUpscale) {
 }
 
 // Magenta-ish pixels: the marker that --debug-marker-outside writes outside the viewport.
-uint64_t CountMarkerPixels(const ImageRGBA8& img) {
+uint64_t CountMarkerPixels(const Image& img) {
   uint64_t n = 0;
   for (size_t p = 0; p < img.pixels.size(); p += 4) {
     const int r = img.pixels[p], g = img.pixels[p + 1], b = img.pixels[p + 2];
@@ -257,7 +257,7 @@ TEST_F(SampleFixture, MotionBlurNeverReadsOutsideTheViewport) {
 
 namespace {
 // Box-downsamples an sRGB image by an integer factor in linear light.
-std::vector<float> DownsampleLinear(const ImageRGBA8& img, int f) {
+std::vector<float> DownsampleLinear(const Image& img, int f) {
   const uint32_t w = img.width / f, h = img.height / f;
   std::vector<float> out(size_t(w) * h * 3, 0.f);
   for (uint32_t y = 0; y < h; ++y)
@@ -271,7 +271,7 @@ std::vector<float> DownsampleLinear(const ImageRGBA8& img, int f) {
       }
   return out;
 }
-std::vector<float> ToLinear(const ImageRGBA8& img) {
+std::vector<float> ToLinear(const Image& img) {
   std::vector<float> out(size_t(img.width) * img.height * 3);
   for (size_t p = 0; p < size_t(img.width) * img.height; ++p)
     for (int c = 0; c < 3; ++c) out[p * 3 + c] = SrgbToLinear(img.pixels[p * 4 + c]);
@@ -332,9 +332,9 @@ TEST(SampleImage, TAAConvergesAndReducesEdgeError) {
     o.symmetricTAA = sym;
     s.ApplySettings(o);
     RenderFrames(s, 8);
-    const ImageRGBA8 a = s.CapturedBackBuffer();
+    const Image a = s.CapturedBackBuffer();
     RenderFrames(s, 2);
-    const ImageRGBA8 b = s.CapturedBackBuffer();
+    const Image b = s.CapturedBackBuffer();
     const Diff conv = Compare(a, b);
     const double taaErr = EdgeError(ToLinear(b), reference, w, h, &edges);
     std::printf("[image] TAA (%s jitter) @1.0: edge error %.4f vs point %.4f (%zu edge px); "
@@ -367,12 +367,12 @@ TEST_F(SampleFixture, GuiPixelsIndependentOfScale) {
   o.scaleX = o.scaleY = 0.3f;
   StartSample(o);
   RenderFrames(sample, 3);
-  const ImageRGBA8 low = sample.CapturedBackBuffer();
+  const Image low = sample.CapturedBackBuffer();
   const auto rect = sample.GuiStaticRect();
   o.scaleX = o.scaleY = 1.0f;
   sample.ApplySettings(o);
   RenderFrames(sample, 3);
-  const ImageRGBA8 high = sample.CapturedBackBuffer();
+  const Image high = sample.CapturedBackBuffer();
   ASSERT_GT(rect[2] - rect[0], 100.f);
   ASSERT_GT(rect[3] - rect[1], 100.f);
   uint64_t differing = 0, total = 0;
@@ -524,7 +524,7 @@ TEST_F(SampleFixture, ReloadShadersCompilesSourcesAndKeepsOldShadersOnError) {
   o.gui = true;  // the message goes to the GUI text; images are compared without the GUI
   StartSample(o);
   RenderFrames(sample, 3);
-  const ImageRGBA8 before = sample.CapturedBackBufferNoGui();
+  const Image before = sample.CapturedBackBufferNoGui();
 
   // Real sources: compiled, same SPIR-V as the build, so the same image.
   ASSERT_TRUE(sample.ReloadShaders()) << sample.LastMessage();
@@ -532,12 +532,12 @@ TEST_F(SampleFixture, ReloadShadersCompilesSourcesAndKeepsOldShadersOnError) {
       << sample.LastMessage();
   RenderFrames(sample, 1);
   Diff d = Compare(before, sample.CapturedBackBufferNoGui());
-  std::printf("[reload] from %s: %s; next frame: %llu px differ\n", Sample::ShaderSourceDir().c_str(),
+  std::printf("[reload] from %s: %s; next frame: %llu px differ\n", ShaderLibrary::DefaultSourceDir().c_str(),
               sample.LastMessage().c_str(), (unsigned long long)d.differing);
   EXPECT_EQ(d.differing, 0u);
 
   // A broken copy: the reload fails naming the file, the old shaders stay.
-  const std::filesystem::path src = Sample::ShaderSourceDir();
+  const std::filesystem::path src = ShaderLibrary::DefaultSourceDir();
   const std::filesystem::path broken = std::filesystem::absolute(OutDir()) / "broken_shaders";
   std::filesystem::remove_all(broken);
   std::filesystem::create_directories(broken);
@@ -594,11 +594,11 @@ TEST_F(SampleFixture, PausedTAAImageIsStable) {
     // First paused frame: its history (and velocity) still holds the moving frame.
     ASSERT_TRUE(sample.RenderFrame());
     RenderFrames(sample, 1);
-    const ImageRGBA8 a = sample.CapturedBackBuffer();
+    const Image a = sample.CapturedBackBuffer();
     RenderFrames(sample, 1);
-    const ImageRGBA8 b = sample.CapturedBackBuffer();
+    const Image b = sample.CapturedBackBuffer();
     RenderFrames(sample, 1);
-    const ImageRGBA8 c3 = sample.CapturedBackBuffer();
+    const Image c3 = sample.CapturedBackBuffer();
     const Diff ab = Compare(a, b), bc = Compare(b, c3);
     std::printf("[pause] %s mb %d sym %d: consecutive paused frames differ in %llu / %llu px (max %d / %d)\n",
                 FilterOption(c.filter), int(c.mb), int(c.sym), (unsigned long long)ab.differing,

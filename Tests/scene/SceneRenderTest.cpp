@@ -52,7 +52,7 @@ class SceneRender : public drrtest::RenderTest {
     ASSERT_TRUE(out);
     OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::UINT8);
     ASSERT_TRUE(out->open(file, spec));
-    out->write_image(OIIO::TypeDesc::UINT8, img.data.data());
+    out->write_image(OIIO::TypeDesc::UINT8, img.pixels.data());
     out->close();
   }
   static std::string ShaderDirForScene() { return ""; }  // the build's shader folder
@@ -177,7 +177,13 @@ TEST_F(SceneRender, MatrixConventionVelocityAndJitter) {
   EXPECT_FALSE(c[0] == 0 && c[1] == 89 && c[2] == 89);
   EXPECT_EQ(scene->Stats().shaderVariantsUsed, 2u);
   // F4: recompile SceneShaders.hlsl at run time and draw with the new code.
-  ASSERT_TRUE(scene->ReloadShaders(&err)) << err;
+  drr::ShaderLibrary lib;
+  lib.Open(drr::ShaderLibrary::DefaultSpvDir({}), drr::ShaderLibrary::DefaultSourceDir());
+  std::vector<uint32_t> spirv;
+  bool compiled = false;
+  ASSERT_TRUE(lib.Load("scene_ps_n0_s0_v0", true, &spirv, &err, &compiled)) << err;
+  EXPECT_TRUE(compiled) << "the manifest should name SceneShaders.hlsl";
+  ASSERT_TRUE(scene->ReloadShaders(lib, true, &err)) << err;
   context()->ClearRenderTargetView(t.color.rtv.Get(), clear);
   context()->ClearDepthStencilView(t.dsv.Get(), d3dl::CLEAR_DEPTH, 1.f, 0);
   scene->Render(context(), p);

@@ -27,4 +27,8 @@ struct ShaderCompileDesc {
 HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
                     std::string* errors);
 
+// Reads a compiled SPIR-V file: S_OK, or E_FAIL with the path and the reason
+// (cannot open, or a size that is not a whole number of 32-bit words).
+HRESULT ReadSpirvFile(const std::string& path, std::vector<uint32_t>* spirv, std::string* error);
+
 }  // namespace d3dl

@@ -1,0 +1,82 @@
+#include "Cameras.h"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace drr {
+
+void Cameras::Init(const Scene* scene) {
+  m_Scene = scene;
+  const glm::vec3 lo = scene->BoundsMin(), hi = scene->BoundsMax();
+  const float diag = glm::length(hi - lo);
+  m_Speed = std::isfinite(diag) && diag > 0 ? diag * 0.1f : 100.0f;
+}
+
+std::string Cameras::Name(int i) const {
+  return i < SceneCount() ? m_Scene->CameraName(i) : std::string("First Person");
+}
+
+bool Cameras::Select(int i) {
+  const int prev = m_Current;
+  i = std::clamp(i, 0, Count() - 1);
+  if (i == SceneCount() && prev < SceneCount() && SceneCount() > 0) {
+    // First Person starts where the previous camera was.
+    const glm::mat4 inv = glm::inverse(m_Scene->Camera(std::max(prev, 0)).view);
+    m_Position = glm::vec3(inv[3]);
+    const glm::vec3 fwd = -glm::normalize(glm::vec3(inv[2]));
+    m_Yaw = std::atan2(fwd.x, -fwd.z);
+    m_Pitch = std::asin(std::clamp(fwd.y, -1.0f, 1.0f));
+  }
+  m_Current = i;
+  return i != prev;
+}
+
+glm::vec3 Cameras::Forward() const {
+  return {std::sin(m_Yaw) * std::cos(m_Pitch), std::sin(m_Pitch), -std::cos(m_Yaw) * std::cos(m_Pitch)};
+}
+
+CameraPose Cameras::Pose() const {
+  if (!FirstPerson()) return m_Scene->Camera(m_Current);
+  CameraPose p;
+  p.position = m_Position;
+  p.view = glm::lookAtRH(m_Position, m_Position + Forward(), glm::vec3(0, 1, 0));
+  return p;
+}
+
+void Cameras::BeginDrag(double x, double y) {
+  m_Dragging = true;
+  m_LastCursor[0] = x;
+  m_LastCursor[1] = y;
+}
+
+void Cameras::UpdateFirstPerson(GLFWwindow* window, bool keyboardFree, double elapsed) {
+  if (!window || !FirstPerson()) return;
+  double x = 0, y = 0;
+  glfwGetCursorPos(window, &x, &y);
+  if (m_Dragging) {
+    if (glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) != GLFW_PRESS) {
+      m_Dragging = false;
+    } else {
+      m_Yaw += float(x - m_LastCursor[0]) * 0.005f;
+      m_Pitch = std::clamp(m_Pitch - float(y - m_LastCursor[1]) * 0.005f, -1.5f, 1.5f);
+    }
+  }
+  m_LastCursor[0] = x;
+  m_LastCursor[1] = y;
+  if (!keyboardFree) return;
+  const glm::vec3 fwd = Forward();
+  const glm::vec3 right = glm::normalize(glm::cross(fwd, glm::vec3(0, 1, 0)));
+  glm::vec3 move(0.f);
+  if (glfwGetKey(window, GLFW_KEY_W) == GLFW_PRESS) move += fwd;
+  if (glfwGetKey(window, GLFW_KEY_S) == GLFW_PRESS) move -= fwd;
+  if (glfwGetKey(window, GLFW_KEY_D) == GLFW_PRESS) move += right;
+  if (glfwGetKey(window, GLFW_KEY_A) == GLFW_PRESS) move -= right;
+  const float speed = m_Speed * ((glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS) ? 4.f : 1.f);
+  m_Position += move * speed * float(elapsed);
+}
+
+}  // namespace drr

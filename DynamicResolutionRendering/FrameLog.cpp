@@ -1,0 +1,149 @@
+#include "FrameLog.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "Json.h"
+#include "Utility.h"
+#include "scene/Scene.h"
+
+namespace drr {
+
+bool FrameLog::BeginFrame() {
+  m_Capturing = m_Requested;
+  m_Requested = false;
+  m_Pending.clear();
+  return m_Capturing;
+}
+
+void FrameLog::Queue(d3dl::Device* device, d3dl::DeviceContext* ctx, d3dl::Texture2D* texture, Capture kind) {
+  if (!texture) return;
+  ctx->OMSetRenderTargets(0, nullptr, nullptr);
+  d3dl::ComPtr<d3dl::Texture2D> staging = CopyToStaging(device, ctx, texture);
+  if (staging) m_Pending.push_back({std::move(staging), kind});
+}
+
+void FrameLog::Resolve(d3dl::Device* device, d3dl::DeviceContext* ctx) {
+  m_Capturing = false;
+  if (m_Pending.empty()) return;
+  ctx->Flush();
+  device->WaitIdle();
+  m_Captured[int(Capture::Velocity)] = {};
+  for (Pending& p : m_Pending) {
+    Image& out = m_Captured[int(p.kind)];
+    std::string error;
+    if (!MapStaging(ctx, p.staging.Get(), &out, &error)) continue;
+    out.SwizzleToRGBA();
+  }
+  m_Pending.clear();
+}
+
+bool FrameLog::SaveScreenshot(const std::string& path, bool noGui, std::string* error) const {
+  const Image& img = Captured(noGui ? Capture::BackBufferNoGui : Capture::BackBuffer);
+  if (img.Empty()) {
+    *error = "no frame was captured for the screenshot";
+    return false;
+  }
+  std::error_code ec;
+  const auto parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+  // The back buffer's alpha holds no coverage (the post passes write velocity
+  // weights there); a screenshot is what the window shows: opaque.
+  std::vector<uint8_t> opaque = img.pixels;
+  for (size_t i = 3; i < opaque.size(); i += 4) opaque[i] = 255;
+  return Utility::SaveImageRGBA8(path, img.width, img.height, opaque.data(), error);
+}
+
+namespace {
+// GPU averages over the frames that received a new result (the records
+// repeat the last result in between); the CPU average over rendered frames.
+double Average(const std::vector<FrameRecord>& frames, double FrameRecord::*m, bool gpu) {
+  double s = 0;
+  int n = 0;
+  for (const FrameRecord& r : frames)
+    if (r.rendered && (!gpu || r.gpuFrameNew) && std::isfinite(r.*m) && r.*m > 0) {
+      s += r.*m;
+      ++n;
+    }
+  return n ? s / n : 0.0;
+}
+
+void WriteTargets(JsonWriter& j, const ReportInfo& info) {
+  j.BeginObject("render_targets").Inline();
+  for (int i = 0; i < int(RT::Count); ++i) {
+    const RenderTarget& rt = (*info.targets)[RT(i)];
+    if (!rt.Valid()) continue;
+    j.BeginObject(RenderTargetSet::Name(RT(i)))
+        .Pair("size", rt.width, rt.height)
+        .Value("format", d3dl::FormatName(rt.format))
+        .Value("bytes", rt.Bytes())
+        .EndObject();
+  }
+  if (info.zoomBoxBytes > 0) j.BeginObject("zoom_box_copy").Value("bytes", info.zoomBoxBytes).EndObject();
+  j.EndObject();
+}
+
+void WriteFrame(JsonWriter& j, const FrameRecord& r) {
+  j.BeginObject().Inline();
+  j.Value("frame", r.frame).Value("rendered", r.rendered).Pair("scale", r.scaleX, r.scaleY);
+  j.Pair("viewport", r.viewportW, r.viewportH).Pair("back_buffer", r.backBufferW, r.backBufferH);
+  j.Value("fullscreen", r.fullscreen).Value("cpu_ms", r.cpuFrameMs);
+  j.Value("gpu_new", r.gpuFrameNew).Value("gpu_delay_frames", r.gpuFrameDelay);
+  j.BeginObject("gpu_ms").Value("frame", r.gpuFrame).Value("clear", r.gpuClear).Value("scene", r.gpuScene);
+  j.Value("postp", r.gpuPostP).Value("scale", r.gpuScale).EndObject();
+  j.EndObject();
+}
+}  // namespace
+
+bool FrameLog::WriteReport(const std::string& path, const ReportInfo& info, std::string* error) const {
+  std::error_code ec;
+  const auto parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
+  std::ofstream f(path);
+  if (!f) {
+    *error = "cannot write " + path + ": " + std::strerror(errno);
+    return false;
+  }
+  const Options& o = *info.options;
+  JsonWriter j(f);
+  j.BeginObject().Raw("options", OptionsToJson(o));
+  j.BeginObject("control").Inline().Value("mode", ControlModeOption(o.control)).Value("law", ControlLawOption(o.law));
+  j.Value("refresh_hz", info.refreshHz).Value("budget_ms", info.budgetMs);
+  j.Value("law_latency_frames", info.lawLatencyFrames).EndObject();
+  j.Value("adapter", info.adapter).Value("driver", info.driver).Value("scene", info.scenePath);
+  j.Pair("back_buffer", info.backBuffer[0], info.backBuffer[1]);
+  j.Pair("dynamic_rt", info.dynamicRT[0], info.dynamicRT[1]);
+  j.Value("render_target_bytes", info.targets->Bytes() + info.zoomBoxBytes);
+  WriteTargets(j, info);
+  j.BeginObject("passes_run").Inline();
+  for (const auto& [name, count] : *info.passesRun) j.Value(name, count);
+  j.EndObject();
+  j.Value("validation_messages", info.validationMessages);
+  j.Value("frames_rendered", info.framesRendered).Value("frames_minimised", info.framesMinimised);
+  j.BeginObject("averages_ms").Inline().Value("cpu_frame", Average(m_Frames, &FrameRecord::cpuFrameMs, false));
+  j.Value("gpu_frame", Average(m_Frames, &FrameRecord::gpuFrame, true));
+  j.Value("clear", Average(m_Frames, &FrameRecord::gpuClear, true));
+  j.Value("scene", Average(m_Frames, &FrameRecord::gpuScene, true));
+  j.Value("postp", Average(m_Frames, &FrameRecord::gpuPostP, true));
+  j.Value("scale", Average(m_Frames, &FrameRecord::gpuScale, true)).EndObject();
+  j.Pair("final_scale", info.finalScale[0], info.finalScale[1]);
+  if (info.scene) {
+    const SceneStats st = info.scene->Stats();
+    j.BeginObject("scene_stats").Inline().Value("draws_issued", st.drawsIssued).Value("draws_culled", st.drawsCulled);
+    j.Value("triangles", st.triangles).Value("texture_bytes", st.textureBytes).EndObject();
+  }
+  j.BeginArray("frames");
+  for (const FrameRecord& r : m_Frames) WriteFrame(j, r);
+  j.EndArray().EndObject();
+  f.flush();
+  if (!f) {
+    *error = "cannot write " + path + " (disk full or write error)";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace drr

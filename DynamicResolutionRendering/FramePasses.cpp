@@ -1,0 +1,332 @@
+#include "FramePasses.h"
+
+#include <cstring>
+
+namespace drr {
+
+namespace {
+constexpr float kZero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+constexpr float kMarkerColor[4] = {1.0f, 0.0f, 1.0f, 1.0f};      // magenta, never in the Arena
+constexpr float kMarkerVelocity[4] = {0.5f, -0.5f, 0.0f, 0.0f};  // a huge velocity
+
+void UnbindPixelSRVs(d3dl::DeviceContext* ctx) {
+  d3dl::ShaderResourceView* none[6] = {};
+  ctx->PSSetShaderResources(0, 6, none);
+}
+}  // namespace
+
+// The post-processing shaders, each by its name in Shaders/CMakeLists.txt.
+struct FramePasses::Shaders {
+  d3dl::ComPtr<d3dl::VertexShader> dynamicVS, fullVS;
+  d3dl::ComPtr<d3dl::PixelShader> clear, clearVelocity, motionBlur, fullClear, fullClearVelocity, fullMotionBlur;
+  d3dl::ComPtr<d3dl::PixelShader> resolve, bicubic, noise, noiseOffset;
+  d3dl::ComPtr<d3dl::PixelShader> taa, taaFast, taaNoiseOffset, taaNoiseOffsetFast, taaBasic;
+
+  struct VS {
+    const char* name;
+    d3dl::ComPtr<d3dl::VertexShader> Shaders::*member;
+  };
+  struct PS {
+    const char* name;
+    d3dl::ComPtr<d3dl::PixelShader> Shaders::*member;
+  };
+  static constexpr VS kVertex[] = {{"PostProcessDynamic_FullScreenVS", &Shaders::dynamicVS},
+                                   {"PostProcess_FullScreenVS", &Shaders::fullVS}};
+  static constexpr PS kPixel[] = {
+      {"PostProcessDynamic_ClearPS", &Shaders::clear},
+      {"PostProcessDynamic_ClearVelocityPS", &Shaders::clearVelocity},
+      {"PostProcessDynamic_MotionBlurPS", &Shaders::motionBlur},
+      {"PostProcess_ClearPS", &Shaders::fullClear},
+      {"PostProcess_ClearVelocityPS", &Shaders::fullClearVelocity},
+      {"PostProcess_MotionBlurPS", &Shaders::fullMotionBlur},
+      {"PostProcessDynamic_ResolvePS", &Shaders::resolve},
+      {"PostProcessDynamic_BicubicPS", &Shaders::bicubic},
+      {"PostProcessDynamic_NoisePS", &Shaders::noise},
+      {"PostProcessDynamic_NoiseOffsetPS", &Shaders::noiseOffset},
+      {"PostProcessDynamic_TAAPS", &Shaders::taa},
+      {"PostProcessDynamic_TAAFastPS", &Shaders::taaFast},
+      {"PostProcessDynamic_TAANoiseOffsetPS", &Shaders::taaNoiseOffset},
+      {"PostProcessDynamic_TAANoiseOffsetFastPS", &Shaders::taaNoiseOffsetFast},
+      {"PostProcessDynamic_TAABasicPS", &Shaders::taaBasic},
+  };
+};
+
+FramePasses::FramePasses() = default;
+FramePasses::~FramePasses() = default;
+
+bool FrameTimers::Init(d3dl::Device* device) {
+  for (AveragedGPUTimer* t : {&frame, &clear, &scene, &postP, &scale})
+    if (d3dl::FAILED(t->Init(device))) return false;
+  return true;
+}
+
+void FrameTimers::Release() {
+  for (AveragedGPUTimer* t : {&frame, &clear, &scene, &postP, &scale}) t->Release();
+}
+
+bool FrameTimers::Update(d3dl::DeviceContext* ctx) {
+  const bool newAverage = frame.Update(ctx);
+  for (AveragedGPUTimer* t : {&clear, &scene, &postP, &scale}) t->Update(ctx);
+  return newAverage;
+}
+
+bool FramePasses::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* error) {
+  m_Device = device;
+  size_t compiled = 0;
+  if (!LoadShaders(shaders, false, error, &compiled)) return false;
+  d3dl::BUFFER_DESC cb;
+  cb.ByteWidth = sizeof(DynamicConstants);
+  cb.Usage = d3dl::USAGE_DYNAMIC;
+  cb.BindFlags = d3dl::BIND_CONSTANT_BUFFER;
+  cb.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
+  d3dl::SAMPLER_DESC point;
+  point.Filter = d3dl::FILTER_MIN_LINEAR_MAG_MIP_POINT;
+  d3dl::SAMPLER_DESC linear;
+  linear.Filter = d3dl::FILTER_MIN_MAG_MIP_LINEAR;
+  d3dl::SAMPLER_DESC wrap;
+  wrap.Filter = d3dl::FILTER_MIN_MAG_MIP_POINT;
+  wrap.AddressU = wrap.AddressV = wrap.AddressW = d3dl::TEXTURE_ADDRESS_WRAP;
+  d3dl::DEPTH_STENCIL_DESC nd;
+  nd.DepthEnable = 0;
+  nd.DepthWriteMask = d3dl::DEPTH_WRITE_MASK_ZERO;
+  d3dl::RASTERIZER_DESC rd;
+  rd.CullMode = d3dl::CULL_NONE;
+  if (d3dl::FAILED(device->CreateBuffer(&cb, nullptr, m_CB.GetAddressOf())) ||
+      d3dl::FAILED(device->CreateSamplerState(&point, m_SamplerPoint.GetAddressOf())) ||
+      d3dl::FAILED(device->CreateSamplerState(&linear, m_SamplerLinear.GetAddressOf())) ||
+      d3dl::FAILED(device->CreateSamplerState(&wrap, m_SamplerPointWrap.GetAddressOf())) ||
+      d3dl::FAILED(device->CreateDepthStencilState(&nd, m_NoDepth.GetAddressOf())) ||
+      d3dl::FAILED(device->CreateRasterizerState(&rd, m_NoCull.GetAddressOf()))) {
+    *error = "cannot create the post-processing states";
+    return false;
+  }
+  if (d3dl::FAILED(m_CubicLookup.Create(device)) || d3dl::FAILED(m_Noise.Create(device))) {
+    *error = "cannot create the lookup/noise textures";
+    return false;
+  }
+  if (!m_Timers.Init(device)) {
+    *error = "cannot create the GPU timer queries";
+    return false;
+  }
+  return m_ZoomBox.Init(device, shaders, error);
+}
+
+bool FramePasses::LoadShaders(const ShaderLibrary& lib, bool fromSource, std::string* error, size_t* compiled) {
+  auto next = std::make_unique<Shaders>();
+  *compiled = 0;
+  for (const Shaders::VS& v : Shaders::kVertex) {
+    bool c = false;
+    if (!lib.CreateVertexShader(m_Device, v.name, fromSource, ((*next).*v.member).GetAddressOf(), nullptr, error, &c))
+      return false;
+    *compiled += c;
+  }
+  for (const Shaders::PS& p : Shaders::kPixel) {
+    bool c = false;
+    if (!lib.CreatePixelShader(m_Device, p.name, fromSource, ((*next).*p.member).GetAddressOf(), error, &c))
+      return false;
+    *compiled += c;
+  }
+  m_Shaders = std::move(next);  // all loaded: F4 keeps the old set on any error
+  return true;
+}
+
+void FramePasses::Release() {
+  m_ZoomBox.Release();
+  m_Timers.Release();
+  m_CubicLookup.Release();
+  m_Noise.Release();
+  m_Shaders.reset();
+  m_CB = nullptr;
+  m_SamplerPoint = m_SamplerLinear = m_SamplerPointWrap = nullptr;
+  m_NoDepth = nullptr;
+  m_NoCull = nullptr;
+}
+
+void FramePasses::SetConstants(d3dl::DeviceContext* ctx, const void* data, size_t size) {
+  d3dl::MAPPED_SUBRESOURCE m;
+  if (d3dl::SUCCEEDED(ctx->Map(m_CB.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &m))) {
+    std::memcpy(m.pData, data, size);
+    ctx->Unmap(m_CB.Get(), 0);
+  }
+}
+
+void FramePasses::DrawFullScreen(d3dl::DeviceContext* ctx, d3dl::VertexShader* vs, d3dl::PixelShader* ps) {
+  ctx->IASetInputLayout(nullptr);
+  ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+  ctx->RSSetState(m_NoCull.Get());
+  ctx->OMSetDepthStencilState(m_NoDepth.Get(), 0);
+  ctx->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
+  ctx->VSSetShader(vs);
+  ctx->VSSetConstantBuffers(0, 1, m_CB.GetAddressOf());
+  ctx->PSSetConstantBuffers(0, 1, m_CB.GetAddressOf());
+  ctx->PSSetShader(ps);
+  ctx->Draw(3, 0);
+}
+
+SceneTargets ChooseSceneTargets(RenderTargetSet& rts, const FrameSetup& s, const BackBuffer& bb) {
+  SceneTargets t;
+  if (s.dynamic) {
+    RenderTarget& colour = s.motionBlur ? rts[RT::ColorDynamic] : rts.Final(s.cur);
+    t.rtv[0] = colour.rtv.Get();
+    t.colour = colour.texture.Get();
+    if (s.motionBlur || s.taa) {
+      RenderTarget& velocity = rts.Velocity((s.taa && !s.motionBlur) ? s.cur : 0);
+      t.rtv[1] = velocity.rtv.Get();
+      t.velocity = velocity.texture.Get();
+    }
+    t.dsv = rts[RT::DepthDynamic].dsv.Get();
+  } else {
+    t.rtv[0] = s.motionBlur ? rts[RT::ColorFull].rtv.Get() : bb.rtv;
+    t.colour = s.motionBlur ? rts[RT::ColorFull].texture.Get() : bb.texture;
+    if (s.motionBlur) {
+      t.rtv[1] = rts[RT::VelocityFull].rtv.Get();
+      t.velocity = rts[RT::VelocityFull].texture.Get();
+    }
+    t.dsv = rts[RT::DepthFull].dsv.Get();
+  }
+  t.count = t.rtv[1] ? 2 : 1;
+  return t;
+}
+
+void FramePasses::Clear(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const SceneTargets& t) {
+  // Test aid: mark everything outside the viewport.
+  if (s.dynamic && s.markOutside) {
+    ctx->ClearRenderTargetView(t.rtv[0], kMarkerColor);
+    if (t.rtv[1]) ctx->ClearRenderTargetView(t.rtv[1], kMarkerVelocity);
+    ctx->ClearRenderTargetView(rts.Final(s.cur).rtv.Get(), kMarkerColor);
+  }
+  // None (debug) shows the whole RT: clear the final target to zero first.
+  if (s.dynamic && s.filter == Filter::None) {
+    ctx->ClearRenderTargetView(rts.Final(s.cur).rtv.Get(), kZero);
+    CountPass("ClearFinalNone");
+  }
+  // Depth always with the API (it may be hierarchical).
+  ctx->BeginEvent("Clear");
+  m_Timers.clear.Start(ctx);
+  ctx->ClearDepthStencilView(t.dsv, d3dl::CLEAR_DEPTH, 1.0f, 0);
+  if (s.psClear) {
+    ctx->OMSetRenderTargets(t.count, t.rtv, nullptr);
+    ctx->RSSetViewports(1, &s.sceneViewport);
+    const bool velocity = t.count == 2;
+    if (s.dynamic) {
+      SetConstants(ctx, &s.dc, sizeof s.dc);
+      DrawFullScreen(ctx, m_Shaders->dynamicVS.Get(),
+                     velocity ? m_Shaders->clearVelocity.Get() : m_Shaders->clear.Get());
+    } else {
+      SetConstants(ctx, &s.fc, sizeof s.fc);
+      DrawFullScreen(ctx, m_Shaders->fullVS.Get(),
+                     velocity ? m_Shaders->fullClearVelocity.Get() : m_Shaders->fullClear.Get());
+    }
+    CountPass("ClearPS");
+  } else {
+    d3dl::RECT r;
+    r.right = int32_t(s.sceneViewport.Width);
+    r.bottom = int32_t(s.sceneViewport.Height);
+    ctx->ClearView(t.rtv[0], s.dc.clearColor, &r, 1);
+    if (t.rtv[1]) ctx->ClearView(t.rtv[1], kZero, &r, 1);
+    CountPass("ClearAPI");
+  }
+  m_Timers.clear.Stop(ctx);
+  ctx->EndEvent();
+}
+
+void FramePasses::Scene(d3dl::DeviceContext* ctx, const FrameSetup& s, const SceneTargets& t, drr::Scene& scene,
+                        const SceneRenderParams& params) {
+  ctx->BeginEvent("Scene");
+  m_Timers.scene.Start(ctx);
+  ctx->OMSetRenderTargets(t.count, t.rtv, t.dsv);
+  ctx->RSSetViewports(1, &s.sceneViewport);
+  scene.Render(ctx, params);
+  m_Timers.scene.Stop(ctx);
+  ctx->EndEvent();
+  CountPass("Scene");
+}
+
+void FramePasses::MotionBlur(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
+                             const BackBuffer& bb) {
+  m_Timers.postP.Start(ctx);
+  if (s.motionBlur) {
+    ctx->BeginEvent("MotionBlur");
+    // Into the final target (dynamic) or the back buffer (full resolution).
+    d3dl::RenderTargetView* rtv = s.dynamic ? rts.Final(s.cur).rtv.Get() : bb.rtv;
+    ctx->OMSetRenderTargets(1, &rtv, nullptr);
+    ctx->RSSetViewports(1, &s.sceneViewport);
+    if (s.dynamic) SetConstants(ctx, &s.dc, sizeof s.dc);
+    else SetConstants(ctx, &s.fc, sizeof s.fc);
+    const RenderTarget& colour = rts[s.dynamic ? RT::ColorDynamic : RT::ColorFull];
+    const RenderTarget& velocity = rts[s.dynamic ? RT::VelocityDynamic0 : RT::VelocityFull];
+    d3dl::ShaderResourceView* srv[3] = {colour.srv.Get(), nullptr, velocity.srv.Get()};
+    ctx->PSSetShaderResources(0, 3, srv);
+    ctx->PSSetSamplers(1, 1, m_SamplerLinear.GetAddressOf());
+    if (s.dynamic) DrawFullScreen(ctx, m_Shaders->dynamicVS.Get(), m_Shaders->motionBlur.Get());
+    else DrawFullScreen(ctx, m_Shaders->fullVS.Get(), m_Shaders->fullMotionBlur.Get());
+    CountPass(s.dynamic ? "MotionBlurDynamic" : "MotionBlurFull");
+    UnbindPixelSRVs(ctx);
+    ctx->EndEvent();
+  }
+  m_Timers.postP.Stop(ctx);
+}
+
+// The resolve filter's shader; the fast TAA variants read the velocity that
+// motion blur left in the colour's alpha.
+d3dl::PixelShader* FramePasses::ResolveShader(const FrameSetup& s, const char** pass) const {
+  const Shaders& sh = *m_Shaders;
+  const bool fast = s.motionBlur;
+  switch (s.filter) {
+    case Filter::None: *pass = "ResolveNone"; return sh.resolve.Get();
+    case Filter::Bilinear: *pass = "ResolveBilinear"; return sh.resolve.Get();
+    case Filter::Bicubic: *pass = "ResolveBicubic"; return sh.bicubic.Get();
+    case Filter::Noise: *pass = "ResolveNoise"; return sh.noise.Get();
+    case Filter::NoiseOffset: *pass = "ResolveNoiseOffset"; return sh.noiseOffset.Get();
+    case Filter::TAA:
+      *pass = fast ? "ResolveTAAFast" : "ResolveTAA";
+      return fast ? sh.taaFast.Get() : sh.taa.Get();
+    case Filter::TAANoiseOffset:
+      *pass = fast ? "ResolveTAANoiseOffsetFast" : "ResolveTAANoiseOffset";
+      return fast ? sh.taaNoiseOffsetFast.Get() : sh.taaNoiseOffset.Get();
+    case Filter::TAABasic: *pass = "ResolveTAABasic"; return sh.taaBasic.Get();
+    default: *pass = "ResolvePoint"; return sh.resolve.Get();
+  }
+}
+
+void FramePasses::Scale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb) {
+  m_Timers.scale.Start(ctx);
+  if (s.dynamic) {
+    ctx->BeginEvent("Scale");
+    d3dl::RenderTargetView* rtv = bb.rtv;
+    ctx->OMSetRenderTargets(1, &rtv, nullptr);
+    ctx->RSSetViewports(1, &s.backBufferViewport);
+    DynamicConstants rc = s.dc;
+    if (s.filter == Filter::None) rc.ratioCurr[0] = rc.ratioCurr[1] = rc.ratioPrev[0] = rc.ratioPrev[1] = 1.0f;
+    SetConstants(ctx, &rc, sizeof rc);
+    const bool velocityTAA = s.taa && !s.motionBlur;
+    d3dl::ShaderResourceView* srv[6] = {rts.Final(s.cur).srv.Get(),
+                                        s.taa ? rts.Final(s.prev).srv.Get() : nullptr,
+                                        velocityTAA ? rts.Velocity(s.cur).srv.Get() : nullptr,
+                                        velocityTAA ? rts.Velocity(s.prev).srv.Get() : nullptr,
+                                        m_Noise.GetSRV(),
+                                        m_CubicLookup.GetSRV()};
+    ctx->PSSetShaderResources(0, 6, srv);
+    d3dl::SamplerState* samplers[3] = {
+        s.filter == Filter::Bilinear ? m_SamplerLinear.Get() : m_SamplerPoint.Get(), m_SamplerLinear.Get(),
+        m_SamplerPointWrap.Get()};
+    ctx->PSSetSamplers(0, 3, samplers);
+    const char* pass = nullptr;
+    d3dl::PixelShader* ps = ResolveShader(s, &pass);
+    DrawFullScreen(ctx, m_Shaders->dynamicVS.Get(), ps);
+    UnbindPixelSRVs(ctx);
+    CountPass(pass);
+    ctx->EndEvent();
+  }
+  m_Timers.scale.Stop(ctx);
+}
+
+void FramePasses::Zoom(d3dl::DeviceContext* ctx, const BackBuffer& bb, float centreX, float centreY) {
+  ctx->BeginEvent("ZoomBox");
+  ctx->OMSetRenderTargets(0, nullptr, nullptr);
+  m_ZoomBox.Render(ctx, bb.texture, bb.rtv, bb.width, bb.height, centreX, centreY);
+  ctx->EndEvent();
+  CountPass("ZoomBox");
+}
+
+}  // namespace drr

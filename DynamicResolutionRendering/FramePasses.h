@@ -1,0 +1,119 @@
+// The passes of the original's OnD3D11FrameRender, one function each, in
+// frame order: clear, scene, motion blur, scale (the resolve filters), zoom
+// box. They read the frame's decisions (FrameSetup) and the render-target
+// table; the coordinator (DynamicResolutionRendering.cpp) makes the decisions.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "GPUTimer.h"
+#include "Options.h"
+#include "RenderTargets.h"
+#include "ShaderLibrary.h"
+#include "TexGenUtils.h"
+#include "ZoomBox.h"
+#include "d3dl/D3DLike.h"
+#include "scene/Scene.h"
+
+namespace drr {
+
+// Constants of PostProcessDynamic.hlsl (cbPostProcessDynamic).
+struct DynamicConstants {
+  float ratioCurr[2], ratioPrev[2];
+  float jitterCurr[2], jitterPrev[2];
+  float dynSize[2], invDynSize[2];
+  float noiseOffset[2], backBufferSize[2];
+  float clearColor[4];
+};
+static_assert(sizeof(DynamicConstants) == 80);
+
+// Constants of PostProcess.hlsl (cbPostProcess), the full-resolution path.
+struct FullConstants {
+  float size[2], invSize[2];
+  float clearColor[4];
+  float pad[8];
+};
+static_assert(sizeof(FullConstants) == 64);
+
+// The original's five GPU timers.
+struct FrameTimers {
+  AveragedGPUTimer frame{10}, clear{10}, scene{10}, postP{10}, scale{10};
+  bool Init(d3dl::Device* device);
+  void Release();
+  bool Update(d3dl::DeviceContext* ctx);  // true when the frame timer has a new average
+};
+
+// What the coordinator decided for this frame.
+struct FrameSetup {
+  bool dynamic = true, taa = false, motionBlur = true, psClear = true, markOutside = false;
+  Filter filter = Filter::TAA;
+  int cur = 0, prev = 0;  // final/velocity targets written and read as history
+  d3dl::VIEWPORT sceneViewport{}, backBufferViewport{};
+  DynamicConstants dc{};
+  FullConstants fc{};
+};
+
+// The back buffer of this frame.
+struct BackBuffer {
+  d3dl::Texture2D* texture = nullptr;
+  d3dl::RenderTargetView* rtv = nullptr;
+  uint32_t width = 0, height = 0;
+};
+
+// Where the scene draws (colour, velocity when needed, depth).
+struct SceneTargets {
+  d3dl::RenderTargetView* rtv[2] = {nullptr, nullptr};
+  uint32_t count = 1;
+  d3dl::DepthStencilView* dsv = nullptr;
+  d3dl::Texture2D* colour = nullptr;
+  d3dl::Texture2D* velocity = nullptr;
+};
+SceneTargets ChooseSceneTargets(RenderTargetSet& targets, const FrameSetup& setup, const BackBuffer& bb);
+
+class FramePasses {
+ public:
+  FramePasses();
+  ~FramePasses();
+  bool Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* error);
+  // Loads every post-processing shader, replacing the old set only when all
+  // succeeded; *compiled counts those compiled from HLSL.
+  bool LoadShaders(const ShaderLibrary& shaders, bool fromSource, std::string* error, size_t* compiled);
+  void Release();
+
+  void Clear(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const SceneTargets& t);
+  void Scene(d3dl::DeviceContext* ctx, const FrameSetup& s, const SceneTargets& t, drr::Scene& scene,
+             const SceneRenderParams& params);
+  void MotionBlur(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb);
+  void Scale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb);
+  void Zoom(d3dl::DeviceContext* ctx, const BackBuffer& bb, float centreX, float centreY);
+
+  FrameTimers& Timers() { return m_Timers; }
+  ZoomBox& GetZoomBox() { return m_ZoomBox; }
+  uint64_t GetZoomBoxBytes() const { return m_ZoomBox.Bytes(); }
+  const std::map<std::string, uint64_t>& PassesRun() const { return m_PassesRun; }
+  void CountPass(const char* name) { ++m_PassesRun[name]; }
+
+ private:
+  struct Shaders;  // FramePasses.cpp: the post shaders, by name
+  void SetConstants(d3dl::DeviceContext* ctx, const void* data, size_t size);
+  void DrawFullScreen(d3dl::DeviceContext* ctx, d3dl::VertexShader* vs, d3dl::PixelShader* ps);
+  d3dl::PixelShader* ResolveShader(const FrameSetup& s, const char** pass) const;
+
+  d3dl::Device* m_Device = nullptr;
+  std::unique_ptr<Shaders> m_Shaders;
+  d3dl::ComPtr<d3dl::Buffer> m_CB;
+  d3dl::ComPtr<d3dl::SamplerState> m_SamplerPoint, m_SamplerLinear, m_SamplerPointWrap;
+  d3dl::ComPtr<d3dl::DepthStencilState> m_NoDepth;
+  d3dl::ComPtr<d3dl::RasterizerState> m_NoCull;
+  CubicFilterLookupTable m_CubicLookup;
+  NoiseTexture m_Noise;
+  ZoomBox m_ZoomBox;
+  FrameTimers m_Timers;
+  std::map<std::string, uint64_t> m_PassesRun;
+};
+
+}  // namespace drr

@@ -1,0 +1,115 @@
+#include "RenderTargets.h"
+
+#include <iterator>
+
+namespace drr {
+
+namespace {
+struct TargetInfo {
+  const char* name;
+  d3dl::DXGI_FORMAT format;
+  bool dynamic;  // sized as the dynamic RT, else as the back buffer
+};
+constexpr d3dl::DXGI_FORMAT kColor = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
+constexpr d3dl::DXGI_FORMAT kVelocity = d3dl::DXGI_FORMAT_R16G16_FLOAT;
+constexpr d3dl::DXGI_FORMAT kDepth = d3dl::DXGI_FORMAT_D32_FLOAT;
+constexpr TargetInfo kTargets[] = {
+    {"g_ColorDynamic", kColor, true},          {"g_DepthDynamic", kDepth, true},
+    {"g_VelocityDynamic[0]", kVelocity, true}, {"g_VelocityDynamic[1]", kVelocity, true},
+    {"g_FinalRTDynamic[0]", kColor, true},     {"g_FinalRTDynamic[1]", kColor, true},
+    {"g_ColorFull", kColor, false},            {"g_VelocityFull", kVelocity, false},
+    {"g_DepthFull", kDepth, false},
+};
+static_assert(std::size(kTargets) == size_t(RT::Count));
+}  // namespace
+
+d3dl::HRESULT RenderTarget::Create(d3dl::Device* device, uint32_t w, uint32_t h, d3dl::DXGI_FORMAT fmt,
+                                   const char* name) {
+  Release();
+  const bool depth = fmt == d3dl::DXGI_FORMAT_D32_FLOAT;
+  d3dl::TEXTURE2D_DESC d;
+  d.Width = w;
+  d.Height = h;
+  d.MipLevels = 1;
+  d.Format = fmt;
+  d.BindFlags = depth ? d3dl::BIND_DEPTH_STENCIL : (d3dl::BIND_RENDER_TARGET | d3dl::BIND_SHADER_RESOURCE);
+  d3dl::HRESULT hr = device->CreateTexture2D(&d, nullptr, texture.ReleaseAndGetAddressOf());
+  if (d3dl::FAILED(hr)) return hr;
+  texture->SetDebugName(name);
+  if (depth) {
+    hr = device->CreateDepthStencilView(texture.Get(), nullptr, dsv.ReleaseAndGetAddressOf());
+  } else {
+    hr = device->CreateRenderTargetView(texture.Get(), nullptr, rtv.ReleaseAndGetAddressOf());
+    if (d3dl::SUCCEEDED(hr)) hr = device->CreateShaderResourceView(texture.Get(), nullptr, srv.ReleaseAndGetAddressOf());
+  }
+  if (d3dl::FAILED(hr)) {
+    Release();
+    return hr;
+  }
+  width = w;
+  height = h;
+  format = fmt;
+  return d3dl::S_OK;
+}
+
+void RenderTarget::Release() {
+  dsv = nullptr;
+  srv = nullptr;
+  rtv = nullptr;
+  texture = nullptr;
+  width = height = 0;
+  format = d3dl::DXGI_FORMAT_UNKNOWN;
+}
+
+uint64_t RenderTarget::Bytes() const {
+  return Valid() ? uint64_t(width) * height * d3dl::FormatBytesPerElement(format) : 0;
+}
+
+const char* RenderTargetSet::Name(RT rt) { return kTargets[int(rt)].name; }
+d3dl::DXGI_FORMAT RenderTargetSet::Format(RT rt) { return kTargets[int(rt)].format; }
+
+bool RenderTargetSet::Needed(RT rt, const RenderTargetPlan& p) {
+  if (kTargets[int(rt)].dynamic != p.dynamic) return false;
+  switch (rt) {
+    case RT::DepthDynamic:
+    case RT::FinalDynamic0:
+    case RT::DepthFull: return true;
+    case RT::FinalDynamic1: return p.taa;
+    case RT::ColorDynamic:
+    case RT::ColorFull:
+    case RT::VelocityFull: return p.motionBlur;
+    case RT::VelocityDynamic0: return p.motionBlur || p.taa;
+    // The fast TAA path reads velocity from the motion-blur alpha: one velocity target is enough.
+    case RT::VelocityDynamic1: return p.taa && !p.motionBlur;
+    default: return false;
+  }
+}
+
+bool RenderTargetSet::Allocate(d3dl::Device* device, const RenderTargetPlan& plan, uint32_t dynW, uint32_t dynH) {
+  Release();
+  bool ok = true;
+  for (int i = 0; i < int(RT::Count); ++i) {
+    const RT rt = RT(i);
+    if (!Needed(rt, plan)) continue;
+    const bool dyn = kTargets[i].dynamic;
+    ok = ok && d3dl::SUCCEEDED(m_Targets[i].Create(device, dyn ? dynW : plan.backBufferW,
+                                                   dyn ? dynH : plan.backBufferH, Format(rt), Name(rt)));
+  }
+  m_Plan = plan;
+  m_Allocated = true;
+  return ok;
+}
+
+void RenderTargetSet::Release() {
+  for (RenderTarget& t : m_Targets) t.Release();
+  m_Plan = {};
+  m_Allocated = false;
+}
+
+uint64_t RenderTargetSet::Bytes() const {
+  uint64_t b = 0;
+  for (const RenderTarget& t : m_Targets) b += t.Bytes();
+  return b;
+}
+
+}  // namespace drr

@@ -1,0 +1,76 @@
+// The render targets of the sample, as one table: which exist in which mode
+// (dynamic or full resolution, motion blur, TAA), their names (the original's
+// g_* globals), formats and sizes. Allocation, release, the report and the
+// GUI read the same table.
+#pragma once
+
+#include <cstdint>
+
+#include "d3dl/D3DLike.h"
+
+namespace drr {
+
+// A texture with the views its bind flags allow: colour formats get an RTV
+// and an SRV, D32_FLOAT a DSV.
+struct RenderTarget {
+  d3dl::ComPtr<d3dl::Texture2D> texture;
+  d3dl::ComPtr<d3dl::RenderTargetView> rtv;
+  d3dl::ComPtr<d3dl::ShaderResourceView> srv;
+  d3dl::ComPtr<d3dl::DepthStencilView> dsv;
+  uint32_t width = 0, height = 0;
+  d3dl::DXGI_FORMAT format = d3dl::DXGI_FORMAT_UNKNOWN;
+
+  d3dl::HRESULT Create(d3dl::Device* device, uint32_t w, uint32_t h, d3dl::DXGI_FORMAT fmt, const char* name);
+  void Release();
+  bool Valid() const { return texture.Get() != nullptr; }
+  uint64_t Bytes() const;
+};
+
+// The original's render targets, in the order the report lists them.
+enum class RT : int {
+  ColorDynamic,
+  DepthDynamic,
+  VelocityDynamic0,
+  VelocityDynamic1,
+  FinalDynamic0,
+  FinalDynamic1,
+  ColorFull,
+  VelocityFull,
+  DepthFull,
+  Count
+};
+
+// What decides which targets exist and their sizes; a change re-allocates.
+struct RenderTargetPlan {
+  bool dynamic = false, superSampling = false, motionBlur = false, taa = false;
+  uint32_t backBufferW = 0, backBufferH = 0;
+  bool operator==(const RenderTargetPlan&) const = default;
+};
+
+class RenderTargetSet {
+ public:
+  // Creates the targets the plan needs: dynamic ones at dynW x dynH (the
+  // oversized RT of DynamicResolution), full ones at the back-buffer size.
+  bool Allocate(d3dl::Device* device, const RenderTargetPlan& plan, uint32_t dynW, uint32_t dynH);
+  void Release();
+  const RenderTargetPlan& Plan() const { return m_Plan; }
+  bool Allocated() const { return m_Allocated; }
+
+  RenderTarget& operator[](RT rt) { return m_Targets[int(rt)]; }
+  const RenderTarget& operator[](RT rt) const { return m_Targets[int(rt)]; }
+  RenderTarget& Final(int i) { return (*this)[i ? RT::FinalDynamic1 : RT::FinalDynamic0]; }
+  RenderTarget& Velocity(int i) { return (*this)[i ? RT::VelocityDynamic1 : RT::VelocityDynamic0]; }
+  uint64_t Bytes() const;
+
+  static const char* Name(RT rt);  // "g_FinalRTDynamic[0]"
+  static d3dl::DXGI_FORMAT Format(RT rt);
+  // Whether the plan needs rt (the original's InitDynamicResolution rules).
+  static bool Needed(RT rt, const RenderTargetPlan& plan);
+
+ private:
+  RenderTarget m_Targets[int(RT::Count)];
+  RenderTargetPlan m_Plan;
+  bool m_Allocated = false;
+};
+
+}  // namespace drr
