@@ -1,26 +1,320 @@
+// The sample's command line. One table (kSpecs) lists every option once: its
+// name, the kind of value it takes, its help text and the field of Options it
+// writes. ParseCommandLine and Usage() both read that table; the values of the
+// enum options come from the enums' own name tables (FilterOption here,
+// ControlModeOption and ControlLawOption in ResolutionController.cpp).
 #include "Options.h"
 
 #include "Json.h"
 
-#include <cerrno>
+#include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <cstdlib>
+#include <iterator>
+#include <optional>
 #include <sstream>
+#include <type_traits>
+#include <variant>
 
 namespace drr {
-
 namespace {
-constexpr const char* kFilterNames[] = {"None",          "Point",       "Bilinear",
-                                        "Bicubic",       "Noise",       "Noise Offset",
-                                        "Temporal AA",   "TAA Noise Offset", "TAA Basic"};
-constexpr const char* kFilterOptions[] = {"none",  "point",        "bilinear",
-                                          "bicubic", "noise",      "noise-offset",
-                                          "taa",   "taa-noise-offset", "taa-basic"};
+
+// One row per filter, in the enum's order: GUI name, command-line value.
+struct FilterNames {
+  const char* name;
+  const char* option;
+};
+constexpr FilterNames kFilters[] = {
+    {"None", "none"},   {"Point", "point"},  {"Bilinear", "bilinear"}, {"Bicubic", "bicubic"},
+    {"Noise", "noise"}, {"Noise Offset", "noise-offset"}, {"Temporal AA", "taa"},
+    {"TAA Noise Offset", "taa-noise-offset"}, {"TAA Basic", "taa-basic"}};
+static_assert(std::size(kFilters) == static_cast<std::size_t>(Filter::Count));
+
+const FilterNames& FilterRow(Filter f) {
+  static constexpr FilterNames kUnknown{"?", "?"};
+  const auto i = static_cast<std::size_t>(f);
+  return i < std::size(kFilters) ? kFilters[i] : kUnknown;
+}
+
+// ------------------------------------------------------------ the option table
+
+enum class Kind {
+  Help,
+  Flag,     // no value: stores flagValue
+  Integer,  // whole number in [lo, hi]
+  Number,   // number in [lo, hi]
+  Scale,    // number, range checked once --supersampling is known; writes scaleX and/or scaleY
+  Path,     // non-empty text
+  Choice,   // one of an enum's command-line values
+};
+
+// The values of an enum option, read from the enum's own name table.
+struct Choices {
+  int count = 0;
+  const char* (*option)(int) = nullptr;
+  const char* noun = nullptr;  // "unknown <noun> 'x'"
+};
+template <class Enum, const char* (*Option)(Enum)>
+constexpr Choices ChoicesOf(const char* noun) {
+  return {static_cast<int>(Enum::Count), [](int i) { return Option(static_cast<Enum>(i)); }, noun};
+}
+
+using Field = std::variant<std::monostate, bool Options::*, uint32_t Options::*, int Options::*,
+                           int64_t Options::*, double Options::*, std::string Options::*,
+                           Filter Options::*, ControlMode Options::*, ControlLaw Options::*>;
+
+struct Spec {
+  const char* name;
+  const char* metavar = nullptr;   // the value in the help ("--width W"); none for flags
+  Kind kind = Kind::Flag;
+  const char* help = nullptr;      // nullptr: listed on the line of the entry before. '\n'
+                                   // starts a continuation line; {choices} and {range} expand
+  Field field{};
+  double lo = 0.0, hi = 0.0;       // Integer, Number
+  Choices choices{};               // Choice
+  bool flagValue = true;           // Flag
+  int axes = 0;                    // Scale: 1 x, 2 y, 3 both
+  bool Options::*given = nullptr;  // also set to true when the option is given
+  const char* alias = nullptr;
+};
+
+constexpr Spec Flag(const char* name, bool Options::*field, bool value, const char* help) {
+  return {.name = name, .kind = Kind::Flag, .help = help, .field = field, .flagValue = value};
+}
+constexpr Spec Int(const char* name, const char* metavar, Field field, double lo, double hi,
+                   const char* help = nullptr) {
+  return {.name = name, .metavar = metavar, .kind = Kind::Integer, .help = help, .field = field, .lo = lo, .hi = hi};
+}
+constexpr Spec Number(const char* name, const char* metavar, double Options::*field, double lo, double hi,
+                      const char* help) {
+  return {.name = name, .metavar = metavar, .kind = Kind::Number, .help = help, .field = field, .lo = lo, .hi = hi};
+}
+constexpr Spec Path(const char* name, const char* metavar, std::string Options::*field, const char* help) {
+  return {.name = name, .metavar = metavar, .kind = Kind::Path, .help = help, .field = field};
+}
+constexpr Spec Choice(const char* name, const char* metavar, Field field, Choices choices, const char* help,
+                      bool Options::*given = nullptr) {
+  return {.name = name, .metavar = metavar, .kind = Kind::Choice, .help = help, .field = field,
+          .choices = choices, .given = given};
+}
+constexpr Spec Scale(const char* name, int axes, const char* help = nullptr) {
+  return {.name = name, .metavar = "S", .kind = Kind::Scale, .help = help, .axes = axes,
+          .given = &Options::scaleGiven};
+}
+
+// In the order of the help text.
+constexpr Spec kSpecs[] = {
+    {.name = "--help", .kind = Kind::Help, .help = "this text", .alias = "-h"},
+    Flag("--headless", &Options::headless, true, "no window (default when there is no display)"),
+    Int("--width", "W", &Options::width, 1, 16384, "back buffer size (default 1280x720, {range})"),
+    Int("--height", "H", &Options::height, 1, 16384),
+    Int("--frames", "N", &Options::frames, 0, 1e9,
+        "frames to render (default: 300 headless, windowed until closed)"),
+    Path("--scene", "PATH", &Options::scene, "scene description or model (default: the build's Arena)"),
+    Int("--camera", "N", &Options::camera, 0, 1000, "camera index (default: the scene's default, 1)"),
+    Choice("--filter", "NAME", &Options::filter, ChoicesOf<Filter, FilterOption>("filter"),
+           "{choices} (default taa)"),
+    Scale("--scale", 3,
+          "resolution scale of both axes, fraction (default 1.0);\n"
+          "range [0.01, 1], [0.01, 2] with --supersampling; implies\n"
+          "--control manual unless --control is given"),
+    Scale("--scale-x", 1, "one axis (turns the aspect-ratio lock off)"),
+    Scale("--scale-y", 2),
+    Flag("--no-dynamic-resolution", &Options::dynamicResolution, false,
+         "render at back-buffer size (full-resolution path)"),
+    Flag("--supersampling", &Options::superSampling, true, "allow super sampling (2x render targets)"),
+    Choice("--control", "MODE", &Options::control, ChoicesOf<ControlMode, ControlModeOption>("mode"),
+           "{choices} (default vsync)", &Options::controlGiven),
+    Choice("--law", "LAW", &Options::law, ChoicesOf<ControlLaw, ControlLawOption>("law"),
+           "resolution control law of the vsync modes: {choices}\n"
+           "(default article: the original's S' = S (1 + k (1 - t/T)) on the\n"
+           "10-frame GPU average; robust and ue-style get per-frame GPU times)"),
+    Number("--refresh", "HZ", &Options::refresh, 1, 1000,
+           "controller target rate (default: the monitor's, 60 headless; {range})"),
+    Flag("--no-vsync", &Options::vsync, false, "present without waiting for vertical sync"),
+    Flag("--no-motion-blur", &Options::motionBlur, false, "motion blur off (default on)"),
+    Flag("--symmetric-taa", &Options::symmetricTAA, true, "jitter -0.25/+0.25 px instead of 0/0.5 px"),
+    Flag("--no-ps-clear", &Options::psClear, false, "clear with the API instead of a pixel shader"),
+    Flag("--pause", &Options::pause, true, "start paused"),
+    Flag("--zoom", &Options::zoom, true, "show the zoom box"),
+    Flag("--show-cameras", &Options::showCameras, true, "draw the camera models"),
+    Flag("--no-gui", &Options::gui, false, "hide the GUI"),
+    Flag("--fullscreen", &Options::fullscreen, true, "start fullscreen (windowed mode)"),
+    Path("--screenshot", "PATH", &Options::screenshot, "PNG/EXR of the back buffer after the last frame"),
+    Flag("--screenshot-no-gui", &Options::screenshotNoGui, true, "the screenshot excludes the GUI"),
+    Path("--report", "PATH", &Options::report, "JSON report (options, adapter, GPU times, scales, RT bytes)"),
+    Flag("--validation", &Options::validation, true, "Vulkan core + sync validation; exit code 3 on any message"),
+    Flag("--stats", &Options::stats, true, "print the scene statistics"),
+    Int("--anisotropy", "N", &Options::anisotropy, 0, 16,
+        "scene sampler: 0 auto (x16 on GPUs, trilinear on CPU\n"
+        "rasterisers such as lavapipe), 1 trilinear, 2..16 (default 0)"),
+    Number("--time", "T", &Options::time, 0, 1e7, "fixed animation time in seconds (reproducible frames)"),
+    Number("--fixed-dt", "DT", &Options::fixedDt, 0, 10, "animation advances DT seconds per frame ({range})"),
+    Path("--shader-dir", "DIR", &Options::shaderDir, "compiled shaders (default: the build's, or DRR_SHADER_DIR)"),
+    Flag("--debug-marker-outside", &Options::debugMarkerOutside, true, "test aid: mark the RT outside the viewport"),
+    Flag("--window-test", &Options::windowTest, true,
+         "test aid: resize to 1x1, minimise, full screen while minimised,\n"
+         "restore, windowed, full screen and back"),
+};
+
+constexpr double kMinScale = 0.01;
+constexpr std::size_t kHelpColumn = 27;  // where the help texts start
+constexpr std::size_t kUsageWidth = 100; // a longer line is broken after a '|' of a choice list
+
+const Spec* FindSpec(std::string_view name) {
+  for (const Spec& s : kSpecs)
+    if (name == s.name || (s.alias && name == s.alias)) return &s;
+  return nullptr;
+}
+
+std::string Format(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+std::string JoinChoices(const Choices& c, const char* separator) {
+  std::string out;
+  for (int i = 0; i < c.count; ++i) out += (i ? separator : "") + std::string(c.option(i));
+  return out;
+}
+
+std::string Allowed(const Spec& s) { return " (allowed: " + JoinChoices(s.choices, ", ") + ")"; }
+
+void Replace(std::string* text, std::string_view key, const std::string& by) {
+  if (const std::size_t at = text->find(key); at != std::string::npos) text->replace(at, key.size(), by);
+}
+
+// The help of one table line: continuation lines indented to kHelpColumn.
+void AppendHelp(std::ostringstream& u, const Spec& s) {
+  std::string text = s.help;
+  Replace(&text, "{choices}", JoinChoices(s.choices, "|"));
+  Replace(&text, "{range}", Format(s.lo) + ".." + Format(s.hi));
+  std::string_view rest = text;
+  constexpr std::size_t kRoom = kUsageWidth - kHelpColumn;
+  for (bool first = true; first || !rest.empty(); first = false) {
+    std::size_t end = std::min(rest.find('\n'), rest.size());
+    std::size_t skip = end < rest.size() ? 1 : 0;  // the '\n'
+    if (const std::size_t bar = rest.rfind('|', kRoom - 1); end > kRoom && bar != std::string_view::npos) {
+      end = bar + 1;
+      skip = 0;
+    }
+    u << (first ? "" : std::string(kHelpColumn, ' ')) << rest.substr(0, end) << '\n';
+    rest.remove_prefix(std::min(rest.size(), end + skip));
+  }
+}
+
+std::string Label(const Spec& s) { return s.metavar ? std::string(s.name) + " " + s.metavar : s.name; }
+
+// A decimal number as people and scripts write it, nothing around it: no
+// leading or trailing space, no hexadecimal, no inf or nan (std::from_chars
+// reads neither spaces nor "0x", and does not depend on the locale).
+bool ParseDecimal(std::string_view text, double* out) {
+  if (text.size() > 1 && text[0] == '+' && text[1] != '-') text.remove_prefix(1);
+  double v = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(v)) return false;
+  *out = v;
+  return true;
+}
+
+// What --scale, --scale-x and --scale-y asked for; checked once --supersampling is known.
+struct ScaleArg {
+  std::string name, text;  // the option that set the axis last, and its value as given
+  double value = 1.0;
+  bool given = false;
+};
+struct ScaleArgs {
+  ScaleArg axis[2];  // x, y
+  bool perAxis = false;
+};
+
+void Store(Options* r, const Field& field, double number, const std::string& text) {
+  std::visit(
+      [&](auto member) {
+        if constexpr (!std::is_same_v<decltype(member), std::monostate>) {
+          using T = std::remove_reference_t<decltype(r->*member)>;
+          if constexpr (std::is_same_v<T, std::string>) r->*member = text;
+          else if constexpr (std::is_enum_v<T>) r->*member = static_cast<T>(static_cast<int>(number));
+          else r->*member = static_cast<T>(number);
+        }
+      },
+      field);
+}
+
+// Reads the value of a numeric option into *out; returns the error message, or "".
+std::string ReadNumber(const Spec& s, const std::string& name, const std::string& text, double* out) {
+  if (!ParseDecimal(text, out)) return "option " + name + ": '" + text + "' is not a number";
+  if (s.kind == Kind::Scale) return {};
+  const std::string range = "[" + Format(s.lo) + ", " + Format(s.hi) + "]";
+  if (*out < s.lo || *out > s.hi) return "option " + name + ": value " + text + " is out of range " + range;
+  if (s.kind == Kind::Integer && *out != std::floor(*out))
+    return "option " + name + ": '" + text + "' is not an integer; expected an integer in " + range;
+  return {};
+}
+
+// Applies one option (value: the text after '=' or the next argument, if any).
+std::string Apply(const Spec& s, const std::string& name, const std::optional<std::string>& value, Options* r,
+                  ScaleArgs* scales) {
+  if (s.given) r->*s.given = true;
+  if (s.kind == Kind::Flag) {
+    Store(r, s.field, s.flagValue, {});
+    return {};
+  }
+  if (s.kind == Kind::Path) {
+    if (!value || value->empty()) return "option " + name + " needs a path";
+    Store(r, s.field, 0.0, *value);
+    return {};
+  }
+  if (!value) return "option " + name + " needs a value" + (s.kind == Kind::Choice ? Allowed(s) : "");
+  if (s.kind == Kind::Choice) {
+    for (int i = 0; i < s.choices.count; ++i)
+      if (*value == s.choices.option(i)) {
+        Store(r, s.field, i, {});
+        return {};
+      }
+    return "option " + name + ": unknown " + s.choices.noun + " '" + *value + "'" + Allowed(s);
+  }
+  double number = 0.0;
+  if (std::string error = ReadNumber(s, name, *value, &number); !error.empty()) return error;
+  if (s.kind != Kind::Scale) {
+    Store(r, s.field, number, {});
+    return {};
+  }
+  for (int a = 0; a < 2; ++a)
+    if (s.axes & (1 << a)) scales->axis[a] = {name, *value, number, true};
+  scales->perAxis |= s.axes != 3;
+  return {};
+}
+
+// The scale range depends on --supersampling; a scale implies manual control.
+std::string FinishScales(const ScaleArgs& scales, Options* r) {
+  if (!r->scaleGiven) return {};
+  const float hi = r->MaxScale();
+  float* const out[2] = {&r->scaleX, &r->scaleY};
+  for (int a = 0; a < 2; ++a) {
+    const ScaleArg& arg = scales.axis[a];
+    if (!arg.given) continue;
+    const float v = static_cast<float>(arg.value);
+    if (!(v >= static_cast<float>(kMinScale) && v <= hi))
+      return "option " + arg.name + ": value " + arg.text + " is out of range [" + Format(kMinScale) + ", " +
+             Format(hi) + "]" + (r->superSampling ? "" : " (up to 2 with --supersampling)");
+    *out[a] = v;
+  }
+  if (scales.perAxis) r->aspectLock = (r->scaleX == r->scaleY);
+  if (!r->controlGiven) r->control = ControlMode::Manual;
+  return {};
+}
+
+ParseStatus Fail(std::string* message, std::string text) {
+  *message = std::move(text);
+  return ParseStatus::Error;
+}
 
 }  // namespace
 
-const char* FilterName(Filter f) { return kFilterNames[static_cast<int>(f)]; }
-const char* FilterOption(Filter f) { return kFilterOptions[static_cast<int>(f)]; }
+const char* FilterName(Filter f) { return FilterRow(f).name; }
+const char* FilterOption(Filter f) { return FilterRow(f).option; }
 bool IsTAA(Filter f) {
   return f == Filter::TAA || f == Filter::TAANoiseOffset || f == Filter::TAABasic;
 }
@@ -28,49 +322,16 @@ bool IsTAA(Filter f) {
 std::string Usage() {
   std::ostringstream u;
   u << "Usage: DynamicResolutionRendering [options]\n"
-       "Dynamic Resolution Rendering (Vulkan port of the Intel sample).\n\n"
-       "  --help                   this text\n"
-       "  --headless               no window (default when there is no display)\n"
-       "  --width W --height H     back buffer size (default 1280x720, 1..16384)\n"
-       "  --frames N               frames to render (default: 300 headless, windowed until closed)\n"
-       "  --scene PATH             scene description or model (default: the build's Arena)\n"
-       "  --camera N               camera index (default: the scene's default, 1)\n"
-       "  --filter NAME            none|point|bilinear|bicubic|noise|noise-offset|taa|\n"
-       "                           taa-noise-offset|taa-basic (default taa)\n"
-       "  --scale S                resolution scale of both axes, fraction (default 1.0);\n"
-       "                           range [0.01, 1], [0.01, 2] with --supersampling; implies\n"
-       "                           --control manual unless --control is given\n"
-       "  --scale-x S, --scale-y S one axis (turns the aspect-ratio lock off)\n"
-       "  --no-dynamic-resolution  render at back-buffer size (full-resolution path)\n"
-       "  --supersampling          allow super sampling (2x render targets)\n"
-       "  --control MODE           manual|half-vsync|vsync (default vsync)\n"
-       "  --law LAW                resolution control law of the vsync modes: article|robust|ue-style\n"
-       "                           (default article: the original's S' = S (1 + k (1 - t/T)) on the\n"
-       "                           10-frame GPU average; robust and ue-style get per-frame GPU times)\n"
-       "  --refresh HZ             controller target rate (default: the monitor's, 60 headless; 1..1000)\n"
-       "  --no-vsync               present without waiting for vertical sync\n"
-       "  --no-motion-blur         motion blur off (default on)\n"
-       "  --symmetric-taa          jitter -0.25/+0.25 px instead of 0/0.5 px\n"
-       "  --no-ps-clear            clear with the API instead of a pixel shader\n"
-       "  --pause                  start paused\n"
-       "  --zoom                   show the zoom box\n"
-       "  --show-cameras           draw the camera models\n"
-       "  --no-gui                 hide the GUI\n"
-       "  --fullscreen             start fullscreen (windowed mode)\n"
-       "  --screenshot PATH        PNG/EXR of the back buffer after the last frame\n"
-       "  --screenshot-no-gui      the screenshot excludes the GUI\n"
-       "  --report PATH            JSON report (options, adapter, GPU times, scales, RT bytes)\n"
-       "  --validation             Vulkan core + sync validation; exit code 3 on any message\n"
-       "  --stats                  print the scene statistics\n"
-       "  --anisotropy N           scene sampler: 0 auto (x16 on GPUs, trilinear on CPU\n"
-       "                           rasterisers such as lavapipe), 1 trilinear, 2..16 (default 0)\n"
-       "  --time T                 fixed animation time in seconds (reproducible frames)\n"
-       "  --fixed-dt DT            animation advances DT seconds per frame (0..10)\n"
-       "  --shader-dir DIR         compiled shaders (default: the build's, or DRR_SHADER_DIR)\n"
-       "  --debug-marker-outside   test aid: mark the RT outside the viewport\n"
-       "  --window-test            test aid: resize to 1x1, minimise, full screen while minimised,\n"
-       "                           restore, windowed, full screen and back\n"
-       "\n"
+       "Dynamic Resolution Rendering (Vulkan port of the Intel sample).\n\n";
+  for (auto s = std::begin(kSpecs); s != std::end(kSpecs); ++s) {
+    if (!s->help) continue;  // listed with the entry before
+    std::string label = Label(*s);
+    for (auto next = s + 1; next != std::end(kSpecs) && !next->help; ++next) label += ", " + Label(*next);
+    const std::size_t pad = label.size() + 3 <= kHelpColumn ? kHelpColumn - 2 - label.size() : 1;
+    u << "  " << label << std::string(pad, ' ');
+    AppendHelp(u, *s);
+  }
+  u << "\n"
        "  --bench [--quick] --out DIR   measure image error against run time instead of running\n"
        "                           the sample (see --bench --help)\n";
   return u.str();
@@ -82,199 +343,27 @@ ParseStatus ParseCommandLine(int argc, char** argv, Options* options, std::strin
   return ParseCommandLine(args, options, message);
 }
 
-ParseStatus ParseCommandLine(const std::vector<std::string>& args, Options* o,
-                             std::string* message) {
+ParseStatus ParseCommandLine(const std::vector<std::string>& args, Options* o, std::string* message) {
   Options r;
-  bool scaleXGiven = false, scaleYGiven = false, scaleBothGiven = false;
-  auto fail = [&](const std::string& m) {
-    *message = m;
-    return ParseStatus::Error;
-  };
-  for (size_t i = 0; i < args.size(); ++i) {
+  ScaleArgs scales;
+  for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
-    std::string value;
-    bool hasInlineValue = false;
-    std::string name = a;
-    if (auto eq = a.find('='); a.rfind("--", 0) == 0 && eq != std::string::npos) {
-      name = a.substr(0, eq);
-      value = a.substr(eq + 1);
-      hasInlineValue = true;
-    }
-    auto next = [&](std::string* v) -> bool {
-      if (hasInlineValue) {
-        *v = value;
-        return true;
-      }
-      if (i + 1 >= args.size()) return false;
-      *v = args[++i];
-      return true;
-    };
-    auto number = [&](double lo, double hi, double* out) -> std::string {
-      std::string v;
-      if (!next(&v)) return "option " + name + " needs a value";
-      errno = 0;
-      char* end = nullptr;
-      const double d = std::strtod(v.c_str(), &end);
-      if (v.empty() || end != v.c_str() + v.size() || errno == ERANGE || !std::isfinite(d))
-        return "option " + name + ": '" + v + "' is not a number";
-      if (d < lo || d > hi) {
-        std::ostringstream m;
-        m << "option " << name << ": value " << v << " is out of range [" << lo << ", " << hi
-          << "]";
-        return m.str();
-      }
-      *out = d;
-      return {};
-    };
-    auto integer = [&](double lo, double hi, int64_t* out) -> std::string {
-      double d = 0;
-      std::string e = number(lo, hi, &d);
-      if (!e.empty()) return e;
-      if (d != std::floor(d)) return "option " + name + ": '" + args[i] + "' is not an integer";
-      *out = static_cast<int64_t>(d);
-      return {};
-    };
-    std::string err;
-    if (name == "--help" || name == "-h") {
+    const std::size_t eq = a.rfind("--", 0) == 0 ? a.find('=') : std::string::npos;
+    const std::string name = a.substr(0, eq);
+    const Spec* spec = FindSpec(name);
+    if (!spec) return Fail(message, "unknown option '" + a + "'");
+    if (spec->kind == Kind::Help) {
       *message = Usage();
       return ParseStatus::Help;
-    } else if (name == "--headless") {
-      r.headless = true;
-    } else if (name == "--width" || name == "--height") {
-      int64_t v = 0;
-      err = integer(1, 16384, &v);
-      (name == "--width" ? r.width : r.height) = static_cast<uint32_t>(v);
-    } else if (name == "--frames") {
-      err = integer(0, 1e9, &r.frames);
-    } else if (name == "--scene") {
-      if (!next(&r.scene) || r.scene.empty()) err = "option --scene needs a path";
-    } else if (name == "--shader-dir") {
-      if (!next(&r.shaderDir) || r.shaderDir.empty()) err = "option --shader-dir needs a path";
-    } else if (name == "--camera") {
-      int64_t v = 0;
-      err = integer(0, 1000, &v);
-      r.camera = static_cast<int>(v);
-    } else if (name == "--filter") {
-      std::string v;
-      if (!next(&v)) {
-        err = "option --filter needs a value";
-      } else {
-        bool found = false;
-        for (int f = 0; f < static_cast<int>(Filter::Count); ++f)
-          if (v == kFilterOptions[f]) {
-            r.filter = static_cast<Filter>(f);
-            found = true;
-          }
-        if (!found)
-          err = "option --filter: unknown filter '" + v +
-                "' (allowed: none, point, bilinear, bicubic, noise, noise-offset, taa, "
-                "taa-noise-offset, taa-basic)";
-      }
-    } else if (name == "--scale" || name == "--scale-x" || name == "--scale-y") {
-      // Range checked below, once --supersampling is known.
-      double v = 0;
-      err = number(-1e30, 1e30, &v);
-      if (name != "--scale-y") r.scaleX = static_cast<float>(v);
-      if (name != "--scale-x") r.scaleY = static_cast<float>(v);
-      (name == "--scale" ? scaleBothGiven : name == "--scale-x" ? scaleXGiven : scaleYGiven) = true;
-      r.scaleGiven = true;
-    } else if (name == "--no-dynamic-resolution") {
-      r.dynamicResolution = false;
-    } else if (name == "--supersampling") {
-      r.superSampling = true;
-    } else if (name == "--control") {
-      std::string v;
-      if (!next(&v)) {
-        err = "option --control needs a value";
-      } else {
-        bool found = false;
-        for (int m = 0; m < static_cast<int>(ControlMode::Count); ++m)
-          if (v == ControlModeOption(static_cast<ControlMode>(m))) {
-            r.control = static_cast<ControlMode>(m);
-            found = true;
-          }
-        if (!found) err = "option --control: unknown mode '" + v + "' (allowed: manual, half-vsync, vsync)";
-        r.controlGiven = true;
-      }
-    } else if (name == "--law") {
-      std::string v;
-      if (!next(&v)) {
-        err = "option --law needs a value (allowed: article, robust, ue-style)";
-      } else {
-        bool found = false;
-        for (int l = 0; l < static_cast<int>(ControlLaw::Count); ++l)
-          if (v == ControlLawOption(static_cast<ControlLaw>(l))) {
-            r.law = static_cast<ControlLaw>(l);
-            found = true;
-          }
-        if (!found) err = "option --law: unknown law '" + v + "' (allowed: article, robust, ue-style)";
-      }
-    } else if (name == "--refresh") {
-      err = number(1, 1000, &r.refresh);
-    } else if (name == "--no-vsync") {
-      r.vsync = false;
-    } else if (name == "--no-motion-blur") {
-      r.motionBlur = false;
-    } else if (name == "--symmetric-taa") {
-      r.symmetricTAA = true;
-    } else if (name == "--no-ps-clear") {
-      r.psClear = false;
-    } else if (name == "--pause") {
-      r.pause = true;
-    } else if (name == "--zoom") {
-      r.zoom = true;
-    } else if (name == "--show-cameras") {
-      r.showCameras = true;
-    } else if (name == "--no-gui") {
-      r.gui = false;
-    } else if (name == "--fullscreen") {
-      r.fullscreen = true;
-    } else if (name == "--screenshot") {
-      if (!next(&r.screenshot) || r.screenshot.empty()) err = "option --screenshot needs a path";
-    } else if (name == "--screenshot-no-gui") {
-      r.screenshotNoGui = true;
-    } else if (name == "--report") {
-      if (!next(&r.report) || r.report.empty()) err = "option --report needs a path";
-    } else if (name == "--validation") {
-      r.validation = true;
-    } else if (name == "--stats") {
-      r.stats = true;
-    } else if (name == "--anisotropy") {
-      double v = 0;
-      err = number(0, 16, &v);
-      if (err.empty() && v != std::floor(v)) err = "option --anisotropy: expected an integer in [0, 16]";
-      r.anisotropy = int(v);
-    } else if (name == "--time") {
-      err = number(0, 1e7, &r.time);
-    } else if (name == "--fixed-dt") {
-      err = number(0, 10, &r.fixedDt);
-    } else if (name == "--window-test") {
-      r.windowTest = true;
-    } else if (name == "--debug-marker-outside") {
-      r.debugMarkerOutside = true;
-    } else {
-      err = "unknown option '" + a + "'";
     }
-    if (!err.empty()) return fail(err);
-  }
-  // Scale ranges depend on super sampling.
-  const double hi = r.MaxScale();
-  auto checkScale = [&](const char* n, float v) -> std::string {
-    if (!(v >= 0.01f && v <= hi)) {
-      std::ostringstream m;
-      m << "option " << n << ": value " << v << " is out of range [0.01, " << hi << "]"
-        << (r.superSampling ? "" : " (up to 2 with --supersampling)");
-      return m.str();
+    std::optional<std::string> value;
+    if (spec->kind != Kind::Flag) {
+      if (eq != std::string::npos) value = a.substr(eq + 1);
+      else if (i + 1 < args.size()) value = args[++i];
     }
-    return {};
-  };
-  if (r.scaleGiven) {
-    std::string e = checkScale(scaleBothGiven ? "--scale" : "--scale-x", r.scaleX);
-    if (e.empty()) e = checkScale(scaleBothGiven ? "--scale" : "--scale-y", r.scaleY);
-    if (!e.empty()) return fail(e);
-    if (scaleXGiven || scaleYGiven) r.aspectLock = (r.scaleX == r.scaleY);
-    if (!r.controlGiven) r.control = ControlMode::Manual;
+    if (std::string error = Apply(*spec, name, value, &r, &scales); !error.empty()) return Fail(message, error);
   }
+  if (std::string error = FinishScales(scales, &r); !error.empty()) return Fail(message, error);
   *o = r;
   return ParseStatus::Ok;
 }

@@ -79,8 +79,11 @@ struct Options {
 
 enum class ParseStatus { Ok, Help, Error };
 
-// args excludes the program name. On Error, message names the option, the
-// value and the allowed range; on Help, message is the usage text.
+// args excludes the program name. Values follow the option (--width 640) or
+// are attached with '=' (--width=640); numbers are plain decimal (no spaces
+// around them, no hexadecimal). On Error, message names the option, the value and
+// the allowed range or values; on Help, message is the usage text. Parsing and
+// Usage() are generated from one table of the options (Options.cpp).
 ParseStatus ParseCommandLine(const std::vector<std::string>& args, Options* options,
                              std::string* message);
 ParseStatus ParseCommandLine(int argc, char** argv, Options* options, std::string* message);

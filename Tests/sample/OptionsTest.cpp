@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <sstream>
 
 #include "Options.h"
 #include "TexGenUtils.h"
@@ -129,6 +130,108 @@ TEST(SampleOptions, OutOfRangeValuesNameValueAndRange) {
   EXPECT_EQ(Parse({"--fixed-dt", "-0.1"}, &o, &m), ParseStatus::Error);
   EXPECT_EQ(Parse({"--width"}, &o, &m), ParseStatus::Error);  // missing value
   EXPECT_NE(m.find("needs a value"), std::string::npos);
+}
+
+// Numbers are plain decimal for every kind of numeric option: a space before or
+// after the value, or hexadecimal, is "not a number" whichever way it is given.
+TEST(SampleOptions, NumbersArePlainDecimal) {
+  for (const char* option : {"--width", "--frames", "--refresh", "--time", "--anisotropy", "--scale", "--scale-x"}) {
+    for (const char* bad : {" 5", "5 ", "0x10", "0X1p0", " 0.5", "0.5 ", "1,5", "1e", ""}) {
+      for (bool inlineValue : {false, true}) {
+        Options o;
+        std::string m;
+        const std::vector<std::string> args =
+            inlineValue ? std::vector<std::string>{std::string(option) + "=" + bad}
+                        : std::vector<std::string>{option, bad};
+        EXPECT_EQ(Parse(args, &o, &m), ParseStatus::Error) << option << " '" << bad << "'";
+        EXPECT_EQ(m, std::string("option ") + option + ": '" + bad + "' is not a number") << m;
+      }
+    }
+  }
+  Options o;
+  std::string m;
+  ASSERT_EQ(Parse({"--width", "+640", "--refresh", "1e2", "--time", ".5", "--scale", "0.50"}, &o, &m), ParseStatus::Ok) << m;
+  EXPECT_EQ(o.width, 640u);
+  EXPECT_DOUBLE_EQ(o.refresh, 100.0);
+  EXPECT_DOUBLE_EQ(o.time, 0.5);
+  EXPECT_FLOAT_EQ(o.scaleX, 0.5f);
+}
+
+// A finite but huge scale is reported against the range the user can give,
+// not against an internal bound; the option named is the one that set the axis.
+TEST(SampleOptions, ScaleRangeIsTheUsersRange) {
+  Options o;
+  std::string m;
+  EXPECT_EQ(Parse({"--scale-x", "1e308"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --scale-x: value 1e308 is out of range [0.01, 1] (up to 2 with --supersampling)");
+  EXPECT_EQ(Parse({"--scale-y=-1e308", "--supersampling"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --scale-y: value -1e308 is out of range [0.01, 2]");
+  EXPECT_EQ(Parse({"--scale", "1e300", "--supersampling"}, &o, &m), ParseStatus::Error);
+  EXPECT_NE(m.find("[0.01, 2]"), std::string::npos) << m;
+  EXPECT_EQ(Parse({"--scale", "0.5", "--scale-x", "3"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m.rfind("option --scale-x: value 3 ", 0), 0u) << m;
+  EXPECT_EQ(Parse({"--scale-x", "1e309"}, &o, &m), ParseStatus::Error);  // not finite as a double
+  EXPECT_NE(m.find("is not a number"), std::string::npos) << m;
+  // Nothing is written on an error; the side effects of a good scale stay.
+  ASSERT_EQ(Parse({"--scale-y", "0.5"}, &o, &m), ParseStatus::Ok) << m;
+  EXPECT_FLOAT_EQ(o.scaleX, 1.0f);
+  EXPECT_FLOAT_EQ(o.scaleY, 0.5f);
+  EXPECT_FALSE(o.aspectLock);
+  EXPECT_EQ(o.control, ControlMode::Manual);
+  ASSERT_EQ(Parse({"--scale-x", "0.5", "--scale-y", "0.5"}, &o, &m), ParseStatus::Ok) << m;
+  EXPECT_TRUE(o.aspectLock);
+}
+
+TEST(SampleOptions, IntegerAndChoiceMessages) {
+  Options o;
+  std::string m;
+  EXPECT_EQ(Parse({"--width=12.5"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --width: '12.5' is not an integer; expected an integer in [1, 16384]");
+  EXPECT_EQ(Parse({"--anisotropy", "2.5"}, &o, &m), ParseStatus::Error);
+  EXPECT_NE(m.find("expected an integer in [0, 16]"), std::string::npos) << m;
+  EXPECT_EQ(Parse({"--anisotropy", "17"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --anisotropy: value 17 is out of range [0, 16]");
+  EXPECT_EQ(Parse({"--frames", "2e9"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --frames: value 2e9 is out of range [0, 1e+09]");
+  EXPECT_EQ(Parse({"--filter"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m.rfind("option --filter needs a value (allowed: none, point, ", 0), 0u) << m;
+  EXPECT_EQ(Parse({"--control", "fast"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --control: unknown mode 'fast' (allowed: manual, half-vsync, vsync)");
+  EXPECT_EQ(Parse({"--scene="}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --scene needs a path");
+  EXPECT_EQ(Parse({"--headless", "--bogus=1"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "unknown option '--bogus=1'");
+}
+
+// The help is generated from the table the parser reads: every option it shows
+// is accepted, every enum value is listed, and it keeps the --bench lines.
+TEST(SampleOptions, HelpAndParserShareOneTable) {
+  Options o;
+  std::string help, m;
+  ASSERT_EQ(Parse({"-h"}, &o, &help), ParseStatus::Help);
+  std::istringstream lines(help);
+  int shown = 0;
+  for (std::string line; std::getline(lines, line);) {
+    EXPECT_LE(line.size(), 100u) << line;
+    if (line.rfind("  --bench ", 0) == 0) break;  // the --bench command line has its own parser
+    if (line.rfind("  -", 0) != 0) continue;
+    std::istringstream label(line.substr(2, 25));
+    for (std::string word; label >> word;) {
+      if (word.back() == ',') word.pop_back();
+      if (word[0] != '-') continue;
+      ++shown;
+      Parse({word}, &o, &m);
+      EXPECT_EQ(m.find("unknown option"), std::string::npos) << word << ": " << m;
+    }
+  }
+  EXPECT_EQ(shown, 36);  // every option of the sample once (-h is --help's other name)
+  for (int f = 0; f < static_cast<int>(Filter::Count); ++f)
+    EXPECT_NE(help.find(FilterOption(static_cast<Filter>(f))), std::string::npos);
+  EXPECT_NE(help.find("manual|half-vsync|vsync (default vsync)"), std::string::npos) << help;
+  EXPECT_NE(help.find("\n  --bench [--quick] --out DIR"), std::string::npos);
+  EXPECT_NE(help.find("(see --bench --help)"), std::string::npos);
+  EXPECT_NE(help.find("--width W, --height H    back buffer size (default 1280x720, 1..16384)"), std::string::npos);
+  EXPECT_NE(help.find("(default: the monitor's, 60 headless; 1..1000)"), std::string::npos);
 }
 
 TEST(SampleOptions, HelpListsEveryOption) {
