@@ -21,16 +21,7 @@
 namespace drr {
 
 namespace {
-constexpr float kClearColor[4] = {0.0f, 0.1f, 0.1f, 1.0f};
 constexpr uint32_t kMaxRTSize = 8192;  // as the original
-
-void LogToStderr(d3dl::LogLevel level, const char* message, void*) {
-  const char* tag = level == d3dl::LogLevel::Validation ? "validation"
-                    : level == d3dl::LogLevel::Error    ? "error"
-                    : level == d3dl::LogLevel::Warning  ? "warning"
-                                                        : "info";
-  if (level != d3dl::LogLevel::Info) std::fprintf(stderr, "[d3dl %s] %s\n", tag, message);
-}
 
 void KeyThunk(void* user, int key, int action, int mods) { static_cast<Sample*>(user)->OnKey(key, action, mods); }
 void MouseThunk(void* user, int button, int action, double x, double y) {
@@ -62,8 +53,10 @@ int Sample::Init(const Options& options, std::string* error) {
   m_Options.headless = m_Window.Headless();
   m_Gui.show = options.gui;
 
-  if (!CreateDeviceAndSwapChain(error)) return 1;
-  if (!m_Passes.Init(m_Device.Get(), m_Shaders, error)) return 1;
+  if (!m_Device.Create(options.validation, m_Window, options.width, options.height, error)) return 1;
+  m_ZoomCentre[0] = m_Device.Width() * 0.5f;
+  m_ZoomCentre[1] = m_Device.Height() * 0.5f;
+  if (!m_Passes.Init(m_Device.Device(), m_Shaders, error)) return 1;
   if (!LoadScene(error)) return 1;
   if (options.camera >= m_Cameras.Count()) {
     *error = "option --camera: value " + std::to_string(options.camera) + " is out of range [0, " +
@@ -72,7 +65,7 @@ int Sample::Init(const Options& options, std::string* error) {
   }
   m_Cameras.Select(options.camera >= 0 ? options.camera : m_Scene->DefaultCamera());
   m_Options.camera = m_Cameras.Current();
-  if (!m_Gui.Init(m_Device.Get(), m_Shaders, error)) return 1;
+  if (!m_Gui.Init(m_Device.Device(), m_Shaders, error)) return 1;
   m_Window.InstallInput(&m_GuiInput, this, KeyThunk, MouseThunk);
 
   // Resolution control.
@@ -89,48 +82,6 @@ int Sample::Init(const Options& options, std::string* error) {
   return 0;
 }
 
-bool Sample::CreateDeviceAndSwapChain(std::string* error) {
-  d3dl::DEVICE_CREATE_DESC dd;
-  dd.Validation = m_Options.validation ? d3dl::ValidationMode::CoreAndSync : d3dl::ValidationMode::FromEnvironment;
-  dd.Log = LogToStderr;
-  dd.EnableWindowSurfaces = !m_Window.Headless();
-  dd.ApplicationName = "DynamicResolutionRendering";
-  if (d3dl::FAILED(d3dl::CreateDevice(&dd, m_Device.GetAddressOf(), m_Context.GetAddressOf()))) {
-    *error = "cannot create the Vulkan device (see the messages above)";
-    return false;
-  }
-  d3dl::ADAPTER_DESC ad;
-  m_Device->GetAdapterDesc(&ad);
-  m_AdapterName = ad.Description;
-  m_AdapterDriver = ad.Driver;
-
-  d3dl::SWAP_CHAIN_DESC sd;
-  sd.Format = m_BackBufferFormat;
-  sd.BufferCount = 2;
-  if (!m_Window.Headless()) {
-    if (!m_Window.Create(m_Options.width, m_Options.height, error)) return false;
-    m_Window.FramebufferSize(&sd.Width, &sd.Height);
-    sd.Width = std::max(sd.Width, 1u);
-    sd.Height = std::max(sd.Height, 1u);
-    if (d3dl::FAILED(m_Device->CreateSwapChainForWindow(m_Window.Handle(), &sd, m_SwapChain.GetAddressOf()))) {
-      *error = "cannot create the window swap chain";
-      return false;
-    }
-  } else {
-    sd.Width = m_Options.width;
-    sd.Height = m_Options.height;
-    if (d3dl::FAILED(m_Device->CreateHeadlessSwapChain(&sd, m_SwapChain.GetAddressOf()))) {
-      *error = "cannot create the headless swap chain";
-      return false;
-    }
-  }
-  if (!CreateBackBufferViews()) {
-    *error = "cannot create the back-buffer views";
-    return false;
-  }
-  return true;
-}
-
 bool Sample::LoadScene(std::string* error) {
   SceneLoadOptions so;
   so.shaders = &m_Shaders;
@@ -139,17 +90,13 @@ bool Sample::LoadScene(std::string* error) {
   // sizes (Docs/Lavapipe-Performance.md), so CPU rasterisers default to
   // trilinear; --anisotropy N chooses explicitly.
   so.maxAnisotropy = m_Options.anisotropy > 0 ? uint32_t(m_Options.anisotropy) : 16u;
-  if (m_Options.anisotropy == 0) {
-    d3dl::ADAPTER_DESC adapter;
-    m_Device->GetAdapterDesc(&adapter);
-    if (adapter.IsSoftware) {
-      so.maxAnisotropy = 1;
-      std::printf("%s is a CPU rasteriser: scene sampler trilinear instead of anisotropic x16 "
-                  "(--anisotropy 16 to force it)\n", adapter.Description);
-    }
+  if (m_Options.anisotropy == 0 && m_Device.Adapter().IsSoftware) {
+    so.maxAnisotropy = 1;
+    std::printf("%s is a CPU rasteriser: scene sampler trilinear instead of anisotropic x16 "
+                "(--anisotropy 16 to force it)\n", m_Device.Adapter().Description);
   }
   std::string sceneError;
-  m_Scene = Scene::Load(m_Device.Get(), m_ScenePath, so, &sceneError);
+  m_Scene = Scene::Load(m_Device.Device(), m_ScenePath, so, &sceneError);
   if (!m_Scene) {
     *error = "cannot load the scene " + m_ScenePath + ": " + sceneError;
     return false;
@@ -158,39 +105,19 @@ bool Sample::LoadScene(std::string* error) {
   return true;
 }
 
-bool Sample::CreateBackBufferViews() {
-  if (d3dl::FAILED(m_SwapChain->GetBuffer(0, m_BackBuffer.ReleaseAndGetAddressOf()))) return false;
-  if (d3dl::FAILED(m_Device->CreateRenderTargetView(m_BackBuffer.Get(), nullptr, m_BackBufferRTV.ReleaseAndGetAddressOf())))
-    return false;
-  d3dl::TEXTURE2D_DESC d;
-  m_BackBuffer->GetDesc(&d);
-  m_BackBufferWidth = d.Width;
-  m_BackBufferHeight = d.Height;
-  m_BackBufferFormat = d.Format;
-  if (m_ZoomCentre[0] < 0) {
-    m_ZoomCentre[0] = d.Width * 0.5f;
-    m_ZoomCentre[1] = d.Height * 0.5f;
-  }
-  return true;
-}
-
 bool Sample::ResizeSwapChain(uint32_t w, uint32_t h) {
-  m_Context->ClearState();
-  m_BackBufferRTV = nullptr;
-  m_BackBuffer = nullptr;
   m_Passes.GetZoomBox().ReleaseCopy();
-  if (d3dl::FAILED(m_SwapChain->ResizeBuffers(0, w, h, m_BackBufferFormat, 0))) return false;
-  if (!CreateBackBufferViews()) return false;
-  m_ZoomCentre[0] = std::min(m_ZoomCentre[0], float(m_BackBufferWidth));
-  m_ZoomCentre[1] = std::min(m_ZoomCentre[1], float(m_BackBufferHeight));
+  if (!m_Device.Resize(w, h)) return false;
+  m_ZoomCentre[0] = std::min(m_ZoomCentre[0], float(w));
+  m_ZoomCentre[1] = std::min(m_ZoomCentre[1], float(h));
   ReleaseDynamicResolution();
   return InitDynamicResolution();
 }
 
 bool Sample::ReloadShaders() {
   // Nothing may still use the shaders that get replaced.
-  m_Context->Flush();
-  m_Device->WaitIdle();
+  m_Device.Context()->Flush();
+  m_Device.Device()->WaitIdle();
   m_Shaders.Open(m_Shaders.SpvDir(), ShaderLibrary::DefaultSourceDir());  // the manifest and sources of now
   std::string err;
   size_t postCompiled = 0;
@@ -221,18 +148,18 @@ bool Sample::TAAActive() const {
 
 RenderTargetPlan Sample::Plan() const {
   return {m_Options.dynamicResolution, m_Options.superSampling, m_Options.motionBlur, TAAActive(),
-          m_BackBufferWidth, m_BackBufferHeight};
+          m_Device.Width(), m_Device.Height()};
 }
 
 bool Sample::InitDynamicResolution() {
   ReleaseDynamicResolution();
   const float maxScaling = m_Options.superSampling ? 2.0f : 1.0f;
-  m_DynamicResolution.InitializeResolutionParameters(m_BackBufferWidth, m_BackBufferHeight, kMaxRTSize, kMaxRTSize,
+  m_DynamicResolution.InitializeResolutionParameters(m_Device.Width(), m_Device.Height(), kMaxRTSize, kMaxRTSize,
                                                      maxScaling);
-  const bool ok = m_Targets.Allocate(m_Device.Get(), Plan(), m_DynamicResolution.GetDynamicBufferWidth(),
+  const bool ok = m_Targets.Allocate(m_Device.Device(), Plan(), m_DynamicResolution.GetDynamicBufferWidth(),
                                      m_DynamicResolution.GetDynamicBufferHeight());
-  g_CurrentRT = 0;
-  m_HistoryValid = false;
+  m_History.current = 0;
+  m_History.valid = false;
   m_ResetVelocityHistory = true;
   if (m_Controller) m_Controller->Reset();
   return ok;
@@ -310,7 +237,7 @@ void Sample::OnFrameMove(double elapsed) {
   // original fixed: only with a TAA mode and dynamic resolution on). The jitter
   // is tied to the target index, so a paused scene keeps both targets stable:
   // the un-jittered frame always lands in the same target (no flicker).
-  g_CurrentRT = TAAActive() ? 1 - g_CurrentRT : 0;
+  m_History.current = TAAActive() ? 1 - m_History.current : 0;
 }
 
 void Sample::ControlResolution(double innerFrameSeconds, double frameSeconds) {
@@ -371,78 +298,45 @@ FrameSetup Sample::MakeFrameSetup() {
   s.psClear = m_Options.psClear;
   s.markOutside = m_Options.debugMarkerOutside;
   s.filter = m_Options.filter;
-
-  // TAA jitter and RT ratios: keep last frame's as "previous".
-  m_JitterPrev = m_JitterCurr;
-  m_RatioPrev = m_RatioCurr;
-  const DynamicViewport dvp = m_DynamicResolution.GetViewport();
-  s.backBufferViewport = {0, 0, float(m_BackBufferWidth), float(m_BackBufferHeight), 0, 1};
-  s.sceneViewport = s.dynamic ? d3dl::VIEWPORT{dvp.TopLeftX, dvp.TopLeftY, dvp.Width, dvp.Height, dvp.MinDepth, dvp.MaxDepth}
+  const DynamicResolution& dr = m_DynamicResolution;
+  const DynamicViewport v = dr.GetViewport();
+  s.backBufferViewport = {0, 0, float(m_Device.Width()), float(m_Device.Height()), 0, 1};
+  s.sceneViewport = s.dynamic ? d3dl::VIEWPORT{v.TopLeftX, v.TopLeftY, v.Width, v.Height, v.MinDepth, v.MaxDepth}
                               : s.backBufferViewport;
-  m_RatioCurr = s.dynamic ? glm::vec2(m_DynamicResolution.GetRTScaleX(), m_DynamicResolution.GetRTScaleY()) : glm::vec2(1.f);
-  m_JitterCurr = glm::vec2(0.f);
-  if (s.taa) {
-    static const glm::vec2 kAsymmetric[2] = {{0.0f, 0.0f}, {0.5f, 0.5f}};
-    static const glm::vec2 kSymmetric[2] = {{-0.25f, -0.25f}, {0.25f, 0.25f}};
-    const glm::vec2 px = (m_Options.symmetricTAA ? kSymmetric : kAsymmetric)[g_CurrentRT];
-    m_JitterCurr = px / glm::vec2(s.sceneViewport.Width, s.sceneViewport.Height);
-  }
-  if (!m_HistoryValid) {
-    m_JitterPrev = m_JitterCurr;
-    m_RatioPrev = m_RatioCurr;
-  }
-  s.cur = g_CurrentRT;
-  s.prev = (s.taa && m_HistoryValid) ? 1 - s.cur : s.cur;
-
-  const float dynW = float(m_DynamicResolution.GetDynamicBufferWidth());
-  const float dynH = float(m_DynamicResolution.GetDynamicBufferHeight());
-  DynamicConstants& dc = s.dc;
-  dc = {{m_RatioCurr.x, m_RatioCurr.y}, {m_RatioPrev.x, m_RatioPrev.y}, {m_JitterCurr.x, m_JitterCurr.y},
-        {m_JitterPrev.x, m_JitterPrev.y}, {dynW, dynH}, {1.0f / dynW, 1.0f / dynH}, {}, {}, {}};
-  dc.noiseOffset[0] = float(std::rand() % 128);
-  dc.noiseOffset[1] = float(std::rand() % 128);
-  dc.backBufferSize[0] = float(m_BackBufferWidth);
-  dc.backBufferSize[1] = float(m_BackBufferHeight);
-  std::memcpy(dc.clearColor, kClearColor, sizeof kClearColor);
-  s.fc.size[0] = float(m_BackBufferWidth);
-  s.fc.size[1] = float(m_BackBufferHeight);
-  s.fc.invSize[0] = 1.0f / s.fc.size[0];
-  s.fc.invSize[1] = 1.0f / s.fc.size[1];
-  std::memcpy(s.fc.clearColor, kClearColor, sizeof kClearColor);
+  m_History.Advance(s, s.dynamic ? glm::vec2(dr.GetRTScaleX(), dr.GetRTScaleY()) : glm::vec2(1.f),
+                    m_Options.symmetricTAA);
+  FillConstants(s, m_History, glm::vec2(dr.GetDynamicBufferWidth(), dr.GetDynamicBufferHeight()),
+                glm::vec2(m_Device.Width(), m_Device.Height()));
   return s;
 }
 
 SceneRenderParams Sample::SceneParams() const {
   const CameraPose pose = m_Cameras.Pose();
-  const float aspect = float(std::max(m_BackBufferWidth, 1u)) / float(std::max(m_BackBufferHeight, 1u));
+  const float aspect = float(std::max(m_Device.Width(), 1u)) / float(std::max(m_Device.Height(), 1u));
   SceneRenderParams p;
   p.view = pose.view;
   p.proj = glm::perspectiveRH_ZO(pose.fovY, aspect, pose.nearZ, pose.farZ);
   // Jitter in pixels (x right, y down) -> NDC (+Y up).
-  p.jitterNdc = glm::vec2(2.0f * m_JitterCurr.x, -2.0f * m_JitterCurr.y);
+  p.jitterNdc = glm::vec2(2.0f * m_History.jitterCurr.x, -2.0f * m_History.jitterCurr.y);
   p.mipBiasSampler = TAAActive();
   p.resetHistory = m_ResetVelocityHistory;
   p.showCameras = m_Options.showCameras;
   return p;
 }
 
-BackBuffer Sample::CurrentBackBuffer() const {
-  return {m_BackBuffer.Get(), m_BackBufferRTV.Get(), m_BackBufferWidth, m_BackBufferHeight};
-}
-
 void Sample::OnFrameRender(double elapsed) {
-  d3dl::DeviceContext* ctx = m_Context.Get();
+  d3dl::DeviceContext* ctx = m_Device.Context();
   // Re-create the targets when an option that decides them changed (GUI).
   if (!(Plan() == m_Targets.Plan())) {
     InitDynamicResolution();
-    if (TAAActive()) g_CurrentRT = 1;
+    if (TAAActive()) m_History.current = 1;
   }
   FrameTimers& timers = m_Passes.Timers();
   if (timers.Update(ctx) || m_FrameCount % 10 == 0) UpdateStats();
   RunResolutionControl();
 
   const FrameSetup setup = MakeFrameSetup();
-  const BackBuffer bb = CurrentBackBuffer();
+  const BackBuffer bb = m_Device.Back();
   const SceneTargets scene = ChooseSceneTargets(m_Targets, setup, bb);
   SceneRenderParams params = SceneParams();
   params.writeVelocity = scene.count == 2;
@@ -452,24 +346,24 @@ void Sample::OnFrameRender(double elapsed) {
   m_Passes.Scene(ctx, setup, scene, *m_Scene, params);
   m_ResetVelocityHistory = false;
   if (m_Log.Capturing()) {
-    m_Log.Queue(m_Device.Get(), ctx, scene.colour, Capture::SceneColor);
-    m_Log.Queue(m_Device.Get(), ctx, scene.velocity, Capture::Velocity);
+    m_Log.Queue(m_Device.Device(), ctx, scene.colour, Capture::SceneColor);
+    m_Log.Queue(m_Device.Device(), ctx, scene.velocity, Capture::Velocity);
   }
   m_Passes.MotionBlur(ctx, setup, m_Targets, bb);
   m_Passes.Scale(ctx, setup, m_Targets, bb);
-  if (setup.dynamic && setup.taa) m_HistoryValid = true;
+  if (setup.taa) m_History.valid = true;
   timers.frame.Stop(ctx);
 
   // Zoom box, then the GUI at back-buffer resolution.
   if (m_Options.zoom) m_Passes.Zoom(ctx, bb, m_ZoomCentre[0], m_ZoomCentre[1]);
-  if (m_Log.Capturing()) m_Log.Queue(m_Device.Get(), ctx, bb.texture, Capture::BackBufferNoGui);
+  if (m_Log.Capturing()) m_Log.Queue(m_Device.Device(), ctx, bb.texture, Capture::BackBufferNoGui);
   RenderGui(elapsed);
-  if (m_Log.Capturing()) m_Log.Queue(m_Device.Get(), ctx, bb.texture, Capture::BackBuffer);
+  if (m_Log.Capturing()) m_Log.Queue(m_Device.Device(), ctx, bb.texture, Capture::BackBuffer);
   ctx->OMSetRenderTargets(0, nullptr, nullptr);
 }
 
 void Sample::RenderGui(double elapsed) {
-  m_GuiInput.NewFrame(m_Window.Handle(), float(m_BackBufferWidth), float(m_BackBufferHeight), float(elapsed));
+  m_GuiInput.NewFrame(m_Window.Handle(), float(m_Device.Width()), float(m_Device.Height()), float(elapsed));
   GuiView v;
   v.options = &m_Options;
   v.stats = &m_Stats;
@@ -478,19 +372,19 @@ void Sample::RenderGui(double elapsed) {
   v.cameraName = [this](int i) { return m_Cameras.Name(i); };
   v.scaleX = m_DynamicResolution.GetScaleX();
   v.scaleY = m_DynamicResolution.GetScaleY();
-  v.backBufferW = m_BackBufferWidth;
-  v.backBufferH = m_BackBufferHeight;
+  v.backBufferW = m_Device.Width();
+  v.backBufferH = m_Device.Height();
   v.rtW = m_DynamicResolution.GetDynamicBufferWidth();
   v.rtH = m_DynamicResolution.GetDynamicBufferHeight();
   v.viewportW = m_DynamicResolution.GetViewportWidth();
   v.viewportH = m_DynamicResolution.GetViewportHeight();
-  v.adapter = m_AdapterName;
+  v.adapter = m_Device.Adapter().Description;
   v.lastMessage = m_LastMessage;
   v.apply = [this](const Options& o) { ApplySettings(o); };
   m_Gui.Build(v);
   if (m_Gui.show) m_Passes.CountPass("GUI");
-  const d3dl::VIEWPORT viewport{0, 0, float(m_BackBufferWidth), float(m_BackBufferHeight), 0, 1};
-  m_Gui.Render(m_Context.Get(), m_BackBufferRTV.Get(), viewport);
+  const d3dl::VIEWPORT viewport{0, 0, float(m_Device.Width()), float(m_Device.Height()), 0, 1};
+  m_Gui.Render(m_Device.Context(), m_Device.Back().rtv, viewport);
 }
 
 // ---------------------------------------------------------------------------
@@ -500,12 +394,13 @@ bool Sample::RenderFrame() {
   switch (m_Window.BeginFrame(m_FrameCount, m_Options.windowTest, m_Options.width, m_Options.height, &fbW, &fbH)) {
     case AppWindow::Frame::Closed: return false;
     case AppWindow::Frame::Minimised:
-      RecordMinimisedFrame();  // render nothing, wait a little
+      m_Log.AddMinimised(m_FrameCount++, m_Window.Fullscreen());  // render nothing, wait a little
+      ++m_MinimisedFrames;
       m_Window.WaitWhileMinimised();
       return true;
     case AppWindow::Frame::Ready: break;
   }
-  if (m_Window.Handle() && (fbW != m_BackBufferWidth || fbH != m_BackBufferHeight) && !ResizeSwapChain(fbW, fbH)) {
+  if (m_Window.Handle() && (fbW != m_Device.Width() || fbH != m_Device.Height()) && !ResizeSwapChain(fbW, fbH)) {
     std::fprintf(stderr, "resize to %ux%u failed\n", fbW, fbH);
     return false;
   }
@@ -517,54 +412,18 @@ bool Sample::RenderFrame() {
   m_Log.BeginFrame();
   OnFrameMove(elapsed);
   OnFrameRender(elapsed);
-  const d3dl::HRESULT hr = m_SwapChain->Present(m_Window.Handle() && m_Options.vsync ? 1 : 0, 0);
+  const d3dl::HRESULT hr = m_Device.SwapChain()->Present(m_Window.Handle() && m_Options.vsync ? 1 : 0, 0);
   if (d3dl::FAILED(hr)) {
     std::fprintf(stderr, "Present failed: %s\n", d3dl::HResultName(hr));
     return false;
   }
-  m_Log.Resolve(m_Device.Get(), m_Context.Get());
-  RecordFrame(elapsed);
+  m_Log.Resolve(m_Device.Device(), m_Device.Context());
+  m_Log.AddRendered(m_FrameCount++, m_DynamicResolution, m_Options.dynamicResolution, m_Device.Back(),
+                    m_Window.Fullscreen(), elapsed, m_Passes.Timers());
   return true;
 }
 
-void Sample::RecordMinimisedFrame() {
-  FrameRecord r;
-  r.frame = m_FrameCount++;
-  r.rendered = false;
-  r.fullscreen = m_Window.Fullscreen();
-  m_Log.Add(r);
-  ++m_MinimisedFrames;
-}
-
-void Sample::RecordFrame(double elapsed) {
-  const bool dynamic = m_Options.dynamicResolution;
-  const FrameTimers& t = m_Passes.Timers();
-  FrameRecord r;
-  r.frame = m_FrameCount++;
-  r.scaleX = m_DynamicResolution.GetScaleX();
-  r.scaleY = m_DynamicResolution.GetScaleY();
-  r.viewportW = dynamic ? m_DynamicResolution.GetViewportWidth() : m_BackBufferWidth;
-  r.viewportH = dynamic ? m_DynamicResolution.GetViewportHeight() : m_BackBufferHeight;
-  r.backBufferW = m_BackBufferWidth;
-  r.backBufferH = m_BackBufferHeight;
-  r.fullscreen = m_Window.Fullscreen();
-  r.cpuFrameMs = elapsed * 1000.0;
-  r.gpuFrame = t.frame.LastMs();
-  r.gpuFrameNew = t.frame.NewResults() > 0;
-  r.gpuFrameDelay = t.frame.LastDelayFrames();
-  r.gpuClear = t.clear.LastMs();
-  r.gpuScene = t.scene.LastMs();
-  r.gpuPostP = t.postP.LastMs();
-  r.gpuScale = t.scale.LastMs();
-  m_Log.Add(r);
-}
-
-uint64_t Sample::ValidationMessages() const {
-  if (!m_Device) return 0;
-  d3dl::DEVICE_STATS st;
-  m_Device->GetStats(&st);
-  return st.ValidationMessages;
-}
+uint64_t Sample::ValidationMessages() const { return m_Device.ValidationMessages(); }
 
 bool Sample::WriteReport(const std::string& path, std::string* error) const {
   ReportInfo info;
@@ -572,11 +431,11 @@ bool Sample::WriteReport(const std::string& path, std::string* error) const {
   info.refreshHz = m_RefreshHz;
   info.budgetMs = m_Stats.vsyncMs > 0 ? m_Stats.vsyncMs : 1000.0 / m_RefreshHz;
   info.lawLatencyFrames = m_LawLatency;
-  info.adapter = m_AdapterName;
-  info.driver = m_AdapterDriver;
+  info.adapter = m_Device.Adapter().Description;
+  info.driver = m_Device.Adapter().Driver;
   info.scenePath = m_ScenePath;
-  info.backBuffer[0] = m_BackBufferWidth;
-  info.backBuffer[1] = m_BackBufferHeight;
+  info.backBuffer[0] = m_Device.Width();
+  info.backBuffer[1] = m_Device.Height();
   info.dynamicRT[0] = m_DynamicResolution.GetDynamicBufferWidth();
   info.dynamicRT[1] = m_DynamicResolution.GetDynamicBufferHeight();
   info.targets = &m_Targets;
@@ -598,30 +457,23 @@ int Sample::Run() {
     if (wantShot && frames >= 0 && m_FrameCount == frames - 1) RequestCapture();
     if (!RenderFrame()) break;
   }
-  m_Device->WaitIdle();
+  m_Device.Device()->WaitIdle();
   int rc = 0;
   std::string err;
+  auto written = [&](bool ok, const char* what, const std::string& path) {
+    if (ok) std::printf("%s written: %s\n", what, path.c_str());
+    else std::fprintf(stderr, "%s: %s\n", what, err.c_str());
+    rc = ok ? rc : 1;
+  };
   if (wantShot) {
     // The last frame was skipped (minimised) or the window closed early: capture one more.
     if (CapturedBackBuffer().Empty() && !(m_Window.Handle() && glfwWindowShouldClose(m_Window.Handle()))) {
       RequestCapture();
       RenderFrame();
     }
-    if (!SaveScreenshot(m_Options.screenshot, m_Options.screenshotNoGui, &err)) {
-      std::fprintf(stderr, "screenshot: %s\n", err.c_str());
-      rc = 1;
-    } else {
-      std::printf("screenshot written: %s\n", m_Options.screenshot.c_str());
-    }
+    written(SaveScreenshot(m_Options.screenshot, m_Options.screenshotNoGui, &err), "screenshot", m_Options.screenshot);
   }
-  if (!m_Options.report.empty()) {
-    if (!WriteReport(m_Options.report, &err)) {
-      std::fprintf(stderr, "report: %s\n", err.c_str());
-      rc = 1;
-    } else {
-      std::printf("report written: %s\n", m_Options.report.c_str());
-    }
-  }
+  if (!m_Options.report.empty()) written(WriteReport(m_Options.report, &err), "report", m_Options.report);
   if (m_Options.stats && m_Scene) std::printf("%s\n", m_Scene->Stats().ToString().c_str());
   const uint64_t messages = ValidationMessages();
   if (messages > 0) std::fprintf(stderr, "validation messages: %llu\n", (unsigned long long)messages);
@@ -630,43 +482,15 @@ int Sample::Run() {
 }
 
 void Sample::Shutdown() {
-  if (m_Device) m_Device->WaitIdle();
-  if (m_Context) m_Context->ClearState();
+  if (m_Device.Device()) m_Device.Device()->WaitIdle();
+  if (m_Device.Context()) m_Device.Context()->ClearState();
   m_Log.DropPending();
   m_Scene.reset();
   m_Gui.Release();
   m_Passes.Release();
   ReleaseDynamicResolution();
-  m_BackBufferRTV = nullptr;
-  m_BackBuffer = nullptr;
-  m_SwapChain = nullptr;
-  m_Context = nullptr;
-  m_Device = nullptr;
+  m_Device.Release();
   m_Window.Destroy();
-}
-
-int SampleMain(int argc, char** argv) {
-  Options options;
-  std::string message;
-  switch (ParseCommandLine(argc, argv, &options, &message)) {
-    case ParseStatus::Help:
-      std::printf("%s", message.c_str());
-      return 0;
-    case ParseStatus::Error:
-      std::fprintf(stderr, "error: %s\n\n%s", message.c_str(), Usage().c_str());
-      return 2;
-    case ParseStatus::Ok:
-      break;
-  }
-  Sample sample;
-  std::string error;
-  if (int rc = sample.Init(options, &error); rc != 0) {
-    std::fprintf(stderr, "error: %s\n", error.c_str());
-    return rc;
-  }
-  const int rc = sample.Run();
-  sample.Shutdown();
-  return rc;
 }
 
 }  // namespace drr

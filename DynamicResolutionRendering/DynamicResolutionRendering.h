@@ -19,6 +19,7 @@
 
 #include "AppWindow.h"
 #include "Cameras.h"
+#include "DeviceResources.h"
 #include "DynamicResolution.h"
 #include "FrameLog.h"
 #include "FramePasses.h"
@@ -75,11 +76,11 @@ class Sample {
   bool IsHeadless() const { return m_Window.Headless(); }
   int64_t FrameCount() const { return m_FrameCount; }
   int64_t MinimisedFrames() const { return m_MinimisedFrames; }
-  uint32_t BackBufferWidth() const { return m_BackBufferWidth; }
-  uint32_t BackBufferHeight() const { return m_BackBufferHeight; }
+  uint32_t BackBufferWidth() const { return m_Device.Width(); }
+  uint32_t BackBufferHeight() const { return m_Device.Height(); }
   std::array<float, 4> GuiStaticRect() const { return m_Gui.staticRect; }
   const SampleStats& Stats() const { return m_Stats; }
-  d3dl::Device* GetDevice() const { return m_Device.Get(); }
+  d3dl::Device* GetDevice() const { return m_Device.Device(); }
   bool SaveScreenshot(const std::string& path, bool noGui, std::string* error) const {
     return m_Log.SaveScreenshot(path, noGui, error);
   }
@@ -106,19 +107,14 @@ class Sample {
   void UpdateStats();
   void ControlResolution(double innerFrameSeconds, double frameSeconds);
 
-  bool CreateDeviceAndSwapChain(std::string* error);
   bool LoadScene(std::string* error);
-  bool CreateBackBufferViews();
   bool ResizeSwapChain(uint32_t w, uint32_t h);
   bool TAAActive() const;
   RenderTargetPlan Plan() const;
   void RunResolutionControl();
   FrameSetup MakeFrameSetup();
   SceneRenderParams SceneParams() const;
-  BackBuffer CurrentBackBuffer() const;
   void RenderGui(double elapsed);
-  void RecordFrame(double elapsed);
-  void RecordMinimisedFrame();
 
   Options m_Options;
   std::string m_ScenePath;
@@ -126,23 +122,12 @@ class Sample {
   GuiInput m_GuiInput;
   ShaderLibrary m_Shaders;
 
-  d3dl::ComPtr<d3dl::Device> m_Device;
-  d3dl::ComPtr<d3dl::DeviceContext> m_Context;
-  d3dl::ComPtr<d3dl::SwapChain> m_SwapChain;
-  d3dl::ComPtr<d3dl::Texture2D> m_BackBuffer;
-  d3dl::ComPtr<d3dl::RenderTargetView> m_BackBufferRTV;
-  uint32_t m_BackBufferWidth = 0, m_BackBufferHeight = 0;
-  d3dl::DXGI_FORMAT m_BackBufferFormat = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
-  std::string m_AdapterName, m_AdapterDriver;
+  DeviceResources m_Device;
 
   DynamicResolution m_DynamicResolution;
   RenderTargetSet m_Targets;
-  int g_CurrentRT = 0;          // final/velocity target written this frame (TAA ping-pong)
-  bool m_HistoryValid = false;  // the other final target holds a frame of the current allocation
+  TemporalHistory m_History;  // the TAA ping-pong of the final/velocity targets
   bool m_ResetVelocityHistory = true;
-  // TAA jitter (fractions of the viewport) and RT ratios, current and previous.
-  glm::vec2 m_JitterCurr{0.f}, m_JitterPrev{0.f};
-  glm::vec2 m_RatioCurr{1.f}, m_RatioPrev{1.f};
 
   FramePasses m_Passes;
   GuiPanel m_Gui;
@@ -166,8 +151,5 @@ class Sample {
   std::string m_LastMessage;
   std::function<double(double, double)> m_CostModel;
 };
-
-// The program: parses the command line, runs the sample, returns the exit code.
-int SampleMain(int argc, char** argv);
 
 }  // namespace drr

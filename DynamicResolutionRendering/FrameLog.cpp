@@ -12,6 +12,36 @@
 
 namespace drr {
 
+void FrameLog::AddRendered(int64_t frame, const DynamicResolution& dr, bool dynamic, const BackBuffer& bb,
+                           bool fullscreen, double elapsedSeconds, const FrameTimers& t) {
+  FrameRecord r;
+  r.frame = frame;
+  r.scaleX = dr.GetScaleX();
+  r.scaleY = dr.GetScaleY();
+  r.viewportW = dynamic ? dr.GetViewportWidth() : bb.width;
+  r.viewportH = dynamic ? dr.GetViewportHeight() : bb.height;
+  r.backBufferW = bb.width;
+  r.backBufferH = bb.height;
+  r.fullscreen = fullscreen;
+  r.cpuFrameMs = elapsedSeconds * 1000.0;
+  r.gpuFrame = t.frame.LastMs();
+  r.gpuFrameNew = t.frame.NewResults() > 0;
+  r.gpuFrameDelay = t.frame.LastDelayFrames();
+  r.gpuClear = t.clear.LastMs();
+  r.gpuScene = t.scene.LastMs();
+  r.gpuPostP = t.postP.LastMs();
+  r.gpuScale = t.scale.LastMs();
+  m_Frames.push_back(r);
+}
+
+void FrameLog::AddMinimised(int64_t frame, bool fullscreen) {
+  FrameRecord r;
+  r.frame = frame;
+  r.rendered = false;
+  r.fullscreen = fullscreen;
+  m_Frames.push_back(r);
+}
+
 bool FrameLog::BeginFrame() {
   m_Capturing = m_Requested;
   m_Requested = false;

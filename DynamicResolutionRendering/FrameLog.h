@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "DynamicResolution.h"
+#include "FramePasses.h"
 #include "Options.h"
 #include "Readback.h"
 #include "RenderTargets.h"
@@ -54,6 +56,10 @@ struct ReportInfo {
 class FrameLog {
  public:
   void Add(const FrameRecord& r) { m_Frames.push_back(r); }
+  // A rendered frame: scales, viewport, sizes and the latest GPU results.
+  void AddRendered(int64_t frame, const DynamicResolution& dr, bool dynamic, const BackBuffer& bb, bool fullscreen,
+                   double elapsedSeconds, const FrameTimers& timers);
+  void AddMinimised(int64_t frame, bool fullscreen);
   const std::vector<FrameRecord>& Frames() const { return m_Frames; }
 
   // Captures: requested for the next frame, queued as copies during it,

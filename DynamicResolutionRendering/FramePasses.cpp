@@ -1,5 +1,6 @@
 #include "FramePasses.h"
 
+#include <cstdlib>
 #include <cstring>
 
 namespace drr {
@@ -19,8 +20,7 @@ void UnbindPixelSRVs(d3dl::DeviceContext* ctx) {
 struct FramePasses::Shaders {
   d3dl::ComPtr<d3dl::VertexShader> dynamicVS, fullVS;
   d3dl::ComPtr<d3dl::PixelShader> clear, clearVelocity, motionBlur, fullClear, fullClearVelocity, fullMotionBlur;
-  d3dl::ComPtr<d3dl::PixelShader> resolve, bicubic, noise, noiseOffset;
-  d3dl::ComPtr<d3dl::PixelShader> taa, taaFast, taaNoiseOffset, taaNoiseOffsetFast, taaBasic;
+  std::map<std::string, d3dl::ComPtr<d3dl::PixelShader>> resolve;  // the filters' (ResolveFilters.cpp)
 
   struct VS {
     const char* name;
@@ -39,15 +39,6 @@ struct FramePasses::Shaders {
       {"PostProcess_ClearPS", &Shaders::fullClear},
       {"PostProcess_ClearVelocityPS", &Shaders::fullClearVelocity},
       {"PostProcess_MotionBlurPS", &Shaders::fullMotionBlur},
-      {"PostProcessDynamic_ResolvePS", &Shaders::resolve},
-      {"PostProcessDynamic_BicubicPS", &Shaders::bicubic},
-      {"PostProcessDynamic_NoisePS", &Shaders::noise},
-      {"PostProcessDynamic_NoiseOffsetPS", &Shaders::noiseOffset},
-      {"PostProcessDynamic_TAAPS", &Shaders::taa},
-      {"PostProcessDynamic_TAAFastPS", &Shaders::taaFast},
-      {"PostProcessDynamic_TAANoiseOffsetPS", &Shaders::taaNoiseOffset},
-      {"PostProcessDynamic_TAANoiseOffsetFastPS", &Shaders::taaNoiseOffsetFast},
-      {"PostProcessDynamic_TAABasicPS", &Shaders::taaBasic},
   };
 };
 
@@ -126,6 +117,16 @@ bool FramePasses::LoadShaders(const ShaderLibrary& lib, bool fromSource, std::st
       return false;
     *compiled += c;
   }
+  for (int f = 0; f < int(Filter::Count); ++f) {
+    const FilterInfo& info = GetFilterInfo(Filter(f));
+    for (const char* name : {info.shader, info.fastShader}) {
+      if (!name || next->resolve.count(name)) continue;
+      bool c = false;
+      if (!lib.CreatePixelShader(m_Device, name, fromSource, next->resolve[name].GetAddressOf(), error, &c))
+        return false;
+      *compiled += c;
+    }
+  }
   m_Shaders = std::move(next);  // all loaded: F4 keeps the old set on any error
   return true;
 }
@@ -161,6 +162,37 @@ void FramePasses::DrawFullScreen(d3dl::DeviceContext* ctx, d3dl::VertexShader* v
   ctx->PSSetConstantBuffers(0, 1, m_CB.GetAddressOf());
   ctx->PSSetShader(ps);
   ctx->Draw(3, 0);
+}
+
+void TemporalHistory::Advance(FrameSetup& s, glm::vec2 ratio, bool symmetric) {
+  jitterPrev = jitterCurr;
+  ratioPrev = ratioCurr;
+  ratioCurr = ratio;
+  jitterCurr = glm::vec2(0.f);
+  if (s.taa) {
+    static const glm::vec2 kAsymmetric[2] = {{0.0f, 0.0f}, {0.5f, 0.5f}};
+    static const glm::vec2 kSymmetric[2] = {{-0.25f, -0.25f}, {0.25f, 0.25f}};
+    const glm::vec2 px = (symmetric ? kSymmetric : kAsymmetric)[current];
+    jitterCurr = px / glm::vec2(s.sceneViewport.Width, s.sceneViewport.Height);
+  }
+  if (!valid) {
+    jitterPrev = jitterCurr;
+    ratioPrev = ratioCurr;
+  }
+  s.cur = current;
+  s.prev = (s.taa && valid) ? 1 - current : current;
+}
+
+void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dyn, glm::vec2 bb) {
+  constexpr float kClearColor[4] = {0.0f, 0.1f, 0.1f, 1.0f};
+  DynamicConstants& dc = s.dc;
+  dc = {{h.ratioCurr.x, h.ratioCurr.y}, {h.ratioPrev.x, h.ratioPrev.y}, {h.jitterCurr.x, h.jitterCurr.y},
+        {h.jitterPrev.x, h.jitterPrev.y}, {dyn.x, dyn.y}, {1.0f / dyn.x, 1.0f / dyn.y}, {}, {bb.x, bb.y}, {}};
+  dc.noiseOffset[0] = float(std::rand() % 128);
+  dc.noiseOffset[1] = float(std::rand() % 128);
+  std::memcpy(dc.clearColor, kClearColor, sizeof kClearColor);
+  s.fc = {{bb.x, bb.y}, {1.0f / bb.x, 1.0f / bb.y}, {}, {}};
+  std::memcpy(s.fc.clearColor, kClearColor, sizeof kClearColor);
 }
 
 SceneTargets ChooseSceneTargets(RenderTargetSet& rts, const FrameSetup& s, const BackBuffer& bb) {
@@ -270,23 +302,10 @@ void FramePasses::MotionBlur(d3dl::DeviceContext* ctx, const FrameSetup& s, Rend
 // The resolve filter's shader; the fast TAA variants read the velocity that
 // motion blur left in the colour's alpha.
 d3dl::PixelShader* FramePasses::ResolveShader(const FrameSetup& s, const char** pass) const {
-  const Shaders& sh = *m_Shaders;
-  const bool fast = s.motionBlur;
-  switch (s.filter) {
-    case Filter::None: *pass = "ResolveNone"; return sh.resolve.Get();
-    case Filter::Bilinear: *pass = "ResolveBilinear"; return sh.resolve.Get();
-    case Filter::Bicubic: *pass = "ResolveBicubic"; return sh.bicubic.Get();
-    case Filter::Noise: *pass = "ResolveNoise"; return sh.noise.Get();
-    case Filter::NoiseOffset: *pass = "ResolveNoiseOffset"; return sh.noiseOffset.Get();
-    case Filter::TAA:
-      *pass = fast ? "ResolveTAAFast" : "ResolveTAA";
-      return fast ? sh.taaFast.Get() : sh.taa.Get();
-    case Filter::TAANoiseOffset:
-      *pass = fast ? "ResolveTAANoiseOffsetFast" : "ResolveTAANoiseOffset";
-      return fast ? sh.taaNoiseOffsetFast.Get() : sh.taaNoiseOffset.Get();
-    case Filter::TAABasic: *pass = "ResolveTAABasic"; return sh.taaBasic.Get();
-    default: *pass = "ResolvePoint"; return sh.resolve.Get();
-  }
+  const FilterInfo& info = GetFilterInfo(s.filter);
+  const bool fast = s.motionBlur && info.fastShader;
+  *pass = fast ? info.fastPass : info.pass;
+  return m_Shaders->resolve.at(fast ? info.fastShader : info.shader).Get();
 }
 
 void FramePasses::Scale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb) {
@@ -308,7 +327,7 @@ void FramePasses::Scale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTar
                                         m_CubicLookup.GetSRV()};
     ctx->PSSetShaderResources(0, 6, srv);
     d3dl::SamplerState* samplers[3] = {
-        s.filter == Filter::Bilinear ? m_SamplerLinear.Get() : m_SamplerPoint.Get(), m_SamplerLinear.Get(),
+        GetFilterInfo(s.filter).linearSampler ? m_SamplerLinear.Get() : m_SamplerPoint.Get(), m_SamplerLinear.Get(),
         m_SamplerPointWrap.Get()};
     ctx->PSSetSamplers(0, 3, samplers);
     const char* pass = nullptr;

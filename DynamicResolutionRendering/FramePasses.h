@@ -10,6 +10,7 @@
 
 #include <glm/glm.hpp>
 
+#include "DeviceResources.h"
 #include "GPUTimer.h"
 #include "Options.h"
 #include "RenderTargets.h"
@@ -57,13 +58,6 @@ struct FrameSetup {
   FullConstants fc{};
 };
 
-// The back buffer of this frame.
-struct BackBuffer {
-  d3dl::Texture2D* texture = nullptr;
-  d3dl::RenderTargetView* rtv = nullptr;
-  uint32_t width = 0, height = 0;
-};
-
 // Where the scene draws (colour, velocity when needed, depth).
 struct SceneTargets {
   d3dl::RenderTargetView* rtv[2] = {nullptr, nullptr};
@@ -72,6 +66,20 @@ struct SceneTargets {
   d3dl::Texture2D* colour = nullptr;
   d3dl::Texture2D* velocity = nullptr;
 };
+// The TAA ping-pong: which final/velocity target this frame writes, whether
+// the other one holds a frame of the current allocation, and the jitter
+// (fractions of the viewport) and RT ratios of this frame and the last.
+struct TemporalHistory {
+  int current = 0;
+  bool valid = false;
+  glm::vec2 jitterCurr{0.f}, jitterPrev{0.f}, ratioCurr{1.f}, ratioPrev{1.f};
+  // This frame's jitter (the original's pair: 0/0.5 px, or -0.25/+0.25 px
+  // symmetric) and ratios; s.cur and s.prev; the viewport is already in s.
+  void Advance(FrameSetup& s, glm::vec2 ratio, bool symmetric);
+};
+// The constants of both post-processing paths for this frame.
+void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dynamicRT, glm::vec2 backBuffer);
+
 SceneTargets ChooseSceneTargets(RenderTargetSet& targets, const FrameSetup& setup, const BackBuffer& bb);
 
 class FramePasses {

@@ -1,7 +1,7 @@
 // The sample's command line. One table (kSpecs) lists every option once: its
 // name, the kind of value it takes, its help text and the field of Options it
 // writes. ParseCommandLine and Usage() both read that table; the values of the
-// enum options come from the enums' own name tables (FilterOption here,
+// enum options come from the enums' own name tables (FilterOption in ResolveFilters.cpp,
 // ControlModeOption and ControlLawOption in ResolutionController.cpp).
 #include "Options.h"
 
@@ -18,23 +18,6 @@
 
 namespace drr {
 namespace {
-
-// One row per filter, in the enum's order: GUI name, command-line value.
-struct FilterNames {
-  const char* name;
-  const char* option;
-};
-constexpr FilterNames kFilters[] = {
-    {"None", "none"},   {"Point", "point"},  {"Bilinear", "bilinear"}, {"Bicubic", "bicubic"},
-    {"Noise", "noise"}, {"Noise Offset", "noise-offset"}, {"Temporal AA", "taa"},
-    {"TAA Noise Offset", "taa-noise-offset"}, {"TAA Basic", "taa-basic"}};
-static_assert(std::size(kFilters) == static_cast<std::size_t>(Filter::Count));
-
-const FilterNames& FilterRow(Filter f) {
-  static constexpr FilterNames kUnknown{"?", "?"};
-  const auto i = static_cast<std::size_t>(f);
-  return i < std::size(kFilters) ? kFilters[i] : kUnknown;
-}
 
 // ------------------------------------------------------------ the option table
 
@@ -312,12 +295,6 @@ ParseStatus Fail(std::string* message, std::string text) {
 }
 
 }  // namespace
-
-const char* FilterName(Filter f) { return FilterRow(f).name; }
-const char* FilterOption(Filter f) { return FilterRow(f).option; }
-bool IsTAA(Filter f) {
-  return f == Filter::TAA || f == Filter::TAANoiseOffset || f == Filter::TAABasic;
-}
 
 std::string Usage() {
   std::ostringstream u;

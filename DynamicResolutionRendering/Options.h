@@ -8,24 +8,10 @@
 #include <string_view>
 #include <vector>
 
+#include "ResolveFilters.h"
+
 namespace drr {
 
-// Resolve (scaling) filters, in the order of the original's combo box.
-enum class Filter : int {
-  None = 0,        // debug: the raw dynamic RT
-  Point,
-  Bilinear,
-  Bicubic,
-  Noise,
-  NoiseOffset,
-  TAA,
-  TAANoiseOffset,
-  TAABasic,
-  Count
-};
-const char* FilterName(Filter f);     // GUI name ("Temporal AA")
-const char* FilterOption(Filter f);   // command-line value ("taa")
-bool IsTAA(Filter f);
 
 // ControlMode (--control) and ControlLaw (--law) and their names are the
 // controller core's (ResolutionController.h).

@@ -1,0 +1,34 @@
+#include "ResolveFilters.h"
+
+#include <iterator>
+
+namespace drr {
+
+namespace {
+constexpr const char* kPoint = "PostProcessDynamic_ResolvePS";
+// name, option, shader, fast shader, pass, fast pass, linear sampler, temporal
+constexpr FilterInfo kFilters[] = {
+    {"None", "none", kPoint, nullptr, "ResolveNone", "ResolveNone", false, false},
+    {"Point", "point", kPoint, nullptr, "ResolvePoint", "ResolvePoint", false, false},
+    {"Bilinear", "bilinear", kPoint, nullptr, "ResolveBilinear", "ResolveBilinear", true, false},
+    {"Bicubic", "bicubic", "PostProcessDynamic_BicubicPS", nullptr, "ResolveBicubic", "ResolveBicubic", false, false},
+    {"Noise", "noise", "PostProcessDynamic_NoisePS", nullptr, "ResolveNoise", "ResolveNoise", false, false},
+    {"Noise Offset", "noise-offset", "PostProcessDynamic_NoiseOffsetPS", nullptr, "ResolveNoiseOffset",
+     "ResolveNoiseOffset", false, false},
+    {"Temporal AA", "taa", "PostProcessDynamic_TAAPS", "PostProcessDynamic_TAAFastPS", "ResolveTAA",
+     "ResolveTAAFast", false, true},
+    {"TAA Noise Offset", "taa-noise-offset", "PostProcessDynamic_TAANoiseOffsetPS",
+     "PostProcessDynamic_TAANoiseOffsetFastPS", "ResolveTAANoiseOffset", "ResolveTAANoiseOffsetFast", false, true},
+    {"TAA Basic", "taa-basic", "PostProcessDynamic_TAABasicPS", nullptr, "ResolveTAABasic", "ResolveTAABasic", false,
+     true},
+};
+static_assert(std::size(kFilters) == size_t(Filter::Count));
+constexpr FilterInfo kUnknown{"?", "?", kPoint, nullptr, "ResolvePoint", "ResolvePoint", false, false};
+}  // namespace
+
+const FilterInfo& GetFilterInfo(Filter f) {
+  const auto i = static_cast<size_t>(f);
+  return i < std::size(kFilters) ? kFilters[i] : kUnknown;
+}
+
+}  // namespace drr

@@ -1,0 +1,42 @@
+// The resolve (scaling) filters of the original, as one table: the GUI and
+// command-line names, the pixel shader that scales the dynamic viewport to the
+// back buffer (and its fast variant when motion blur has left the velocity in
+// the colour's alpha), the sampler it reads with, and whether it is temporal.
+// To add a filter: a value here, a row in ResolveFilters.cpp, its entry point
+// in Shaders/PostProcessDynamic.hlsl and a drr_shader() line in
+// Shaders/CMakeLists.txt (Docs/Architecture.md).
+#pragma once
+
+namespace drr {
+
+// In the order of the original's combo box.
+enum class Filter : int {
+  None = 0,  // debug: the raw dynamic RT
+  Point,
+  Bilinear,
+  Bicubic,
+  Noise,
+  NoiseOffset,
+  TAA,
+  TAANoiseOffset,
+  TAABasic,
+  Count
+};
+
+struct FilterInfo {
+  const char* name;        // GUI ("Temporal AA")
+  const char* option;      // command line ("taa")
+  const char* shader;      // in Shaders/CMakeLists.txt
+  const char* fastShader;  // with motion blur on (null: the same shader)
+  const char* pass;        // in the report's passes_run
+  const char* fastPass;
+  bool linearSampler;      // s0 bilinear instead of the original's point sampler
+  bool temporal;           // reads the previous frame (two final targets, jitter)
+};
+
+const FilterInfo& GetFilterInfo(Filter f);
+inline const char* FilterName(Filter f) { return GetFilterInfo(f).name; }
+inline const char* FilterOption(Filter f) { return GetFilterInfo(f).option; }
+inline bool IsTAA(Filter f) { return GetFilterInfo(f).temporal; }
+
+}  // namespace drr
