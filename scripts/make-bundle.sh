@@ -28,10 +28,10 @@ cmake --build "$build" --parallel "$(nproc)" \
 
 rm -rf "$out"
 mkdir -p "$out/bin" "$out/lib" "$out/media"
-cp "$build/DynamicResolutionRendering/DynamicResolutionRendering" "$build/Tests/bench/drr_rhi_bench" "$out/bin/"
+cp "$build/DynamicResolutionRendering/DynamicResolutionRendering" "$build/Tests/recording/drr_rhi_bench" "$out/bin/"
 strip "$out"/bin/*
 cp -r "$build/shaders" "$out/shaders"
-mkdir -p "$out/bench-shaders" && cp "$build"/Tests/bench/shaders/*.spv "$out/bench-shaders/"
+mkdir -p "$out/bench-shaders" && cp "$build"/Tests/recording/shaders/*.spv "$out/bench-shaders/"
 cp -r "$build/Media/Arena" "$out/media/Arena"
 tar -C "$build/Media" -cJf "$out/media/ArenaLarge.tar.xz" ArenaLarge
 

@@ -7,7 +7,7 @@
 // blur), GPU time per pass (median and quartiles over N frames) and wall time.
 // It writes results.csv, results.json, summary.md and PNG plots into --out.
 //
-// Besides the sweep it records (issue #6):
+// Besides the sweep it records:
 //  - "blit-floor" rows per view and scale: a linear vkCmdBlitImage
 //    (DeviceContext::BlitRegion) of the viewport region of the captured scene
 //    colour to a back-buffer-sized target, timed with its own timestamp

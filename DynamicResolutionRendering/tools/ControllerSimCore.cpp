@@ -1,5 +1,5 @@
-// Simulator core: see ControllerSim.h.
-#include "ControllerSim.h"
+// Simulator core: see ControllerSimCore.h.
+#include "ControllerSimCore.h"
 
 #include "DynamicResolution.h"
 

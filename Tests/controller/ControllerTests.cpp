@@ -1,8 +1,8 @@
 // Control laws: the article law's exact arithmetic, bounded outputs for any
 // input, stiff gains, and the robust law's headline properties, driving the
-// simulator's plant model (tools/ControllerSim.h) so tests and the simulator
+// simulator's plant model (tools/ControllerSimCore.h) so tests and the simulator
 // share one model.
-#include "ControllerSim.h"
+#include "ControllerSimCore.h"
 #include "ResolutionController.h"
 
 #include <gtest/gtest.h>

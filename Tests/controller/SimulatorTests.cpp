@@ -1,5 +1,5 @@
 // The simulator's core as a library: the headline claims of Docs/Controller.md.
-#include "ControllerSim.h"
+#include "ControllerSimCore.h"
 
 #include <gtest/gtest.h>
 

@@ -422,7 +422,7 @@ TEST_F(SampleFixture, VSyncControllerSettlesNearPixelBoundScale) {
 }
 
 // ---------------------------------------------------------------------------
-// 5. Control laws in the sample (issue #3): robust against article, same run.
+// 5. Control laws in the sample: robust against article, same run.
 namespace {
 struct LawRun {
   int overBudget = 0;       // new inner-frame GPU results over the budget

@@ -1,7 +1,7 @@
 // drr_controller_sim: closed-loop comparison of the resolution control laws.
 // Run with --help for the options. The model and metrics live in
 // ControllerSimCore.cpp (shared with the tests).
-#include "ControllerSim.h"
+#include "ControllerSimCore.h"
 
 #include <charconv>
 #include <cmath>
