@@ -1,5 +1,6 @@
 #include "FrameLog.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -7,10 +8,29 @@
 #include <fstream>
 
 #include "Json.h"
-#include "Utility.h"
+#include "imageio/ImageFile.h"
+#include "imageio/Srgb.h"
 #include "scene/Scene.h"
 
 namespace drr {
+
+namespace {
+// Writes 8-bit RGBA, or linear float RGBA for .exr/.hdr (the back buffer is sRGB-encoded).
+bool SaveImageRGBA8(const std::string& path, uint32_t w, uint32_t h, const uint8_t* rgba,
+                    std::string* error) {
+  std::string ext = path.substr(path.find_last_of('.') + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  if (ext != "exr" && ext != "hdr") return WriteImageFile(path, w, h, 4, rgba, error);
+  // The back buffer holds sRGB-encoded values; EXR/HDR store linear light.
+  std::vector<float> f(size_t(w) * h * 4);
+  for (size_t i = 0; i < f.size(); ++i) {
+    const float c = rgba[i] / 255.0f;
+    f[i] = (i % 4 == 3) ? c : SrgbToLinear(c);
+  }
+  return WriteImageFileFloat(path, w, h, 4, f.data(), error);
+}
+
+}  // namespace
 
 void FrameLog::AddRendered(int64_t frame, const DynamicResolution& dr, bool dynamic, const BackBuffer& bb,
                            bool fullscreen, double elapsedSeconds, const FrameTimers& t) {
@@ -84,7 +104,7 @@ bool FrameLog::SaveScreenshot(const std::string& path, bool noGui, std::string* 
   // weights there); a screenshot is what the window shows: opaque.
   std::vector<uint8_t> opaque = img.pixels;
   for (size_t i = 3; i < opaque.size(); i += 4) opaque[i] = 255;
-  return Utility::SaveImageRGBA8(path, img.width, img.height, opaque.data(), error);
+  return SaveImageRGBA8(path, img.width, img.height, opaque.data(), error);
 }
 
 namespace {
