@@ -1,7 +1,6 @@
 // The cameras the user can pick: the scene's (cinematic, static) and a
 // first-person camera that starts where the previous camera was and moves
-// with WASD and the left mouse button (a port addition; the original has
-// only the scene's cameras).
+// with WASD and the left mouse button.
 #pragma once
 
 #include <string>

@@ -48,7 +48,7 @@ struct BenchResults {
 };
 
 // The article's scale-pass cost ratios to point filtering at 0.71x (Japanese
-// translation; see shared/reference/article-figures.md). 0 = not given.
+// translation of the article's figures). 0 = not given.
 double ArticleScaleRatio(const std::string& filter);
 
 bool WriteBenchOutputs(const BenchResults& results, const std::string& outDir,

@@ -1,5 +1,5 @@
 // DynamicResolution: the original's results on valid inputs (expected values
-// computed by hand from the formulas in shared/reference/original-sample.md),
+// computed by hand from the formulas of the original's DynamicResolution.cpp),
 // and the fixed defects (D1..D8 in DynamicResolution.h) on extreme inputs.
 #include "DynamicResolution.h"
 
