@@ -5,6 +5,7 @@
 #include <GLFW/glfw3.h>
 
 #include "Context.h"
+#include "SwapChain.h"
 
 namespace d3dl::impl {
 
@@ -23,7 +24,7 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
     window_ = window;
     desc_ = d;
     if (desc_.BufferCount == 0) desc_.BufferCount = 2;
-    if (!dev_->hasSwapchain()) {
+    if (!dev_->features().swapchain) {
       dev_->Log(LogLevel::Error, "CreateSwapChainForWindow: the adapter has no VK_KHR_swapchain");
       return DXGI_ERROR_UNSUPPORTED;
     }
@@ -52,22 +53,20 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
     }
     ContextImpl* ctx = dev_->context();
     if (!acquired_) {
-      dev_->SubmitFrame();
+      ctx->SubmitFrame();
       RebuildIfNeeded();
       Acquire();
       return DXGI_STATUS_OCCLUDED;
     }
-    ctx->EndRendering();
-    ctx->UseTexture(&proxy_->core, 0, 1, 0, 1, usage::Present);
     VkSemaphore done = renderDone_[imageIndex_];
-    dev_->SubmitFrame({}, {done});
+    ctx->SubmitFrame(&proxy_->core, done);
     VkPresentInfoKHR pi{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
     pi.waitSemaphoreCount = 1;
     pi.pWaitSemaphores = &done;
     pi.swapchainCount = 1;
     pi.pSwapchains = &swapchain_;
     pi.pImageIndices = &imageIndex_;
-    VkResult r = vkQueuePresentKHR(dev_->queue(), &pi);
+    VkResult r = vkQueuePresentKHR(dev_->queue().vk(), &pi);
     acquired_ = false;
     if (r == VK_ERROR_OUT_OF_DATE_KHR || r == VK_SUBOPTIMAL_KHR) needRebuild_ = true;
     else if (r != VK_SUCCESS) dev_->Log(LogLevel::Error, "vkQueuePresentKHR failed (VkResult %d)", r);
@@ -85,11 +84,9 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
   }
 
   HRESULT ResizeBuffers(UINT count, UINT w, UINT h, DXGI_FORMAT format, UINT) override {
-    if (proxy_ && proxy_->RefCount() > 1 + proxy_->core.registeredViews.size() * 0) {
-      if (proxy_->RefCount() > 1) {
-        dev_->Log(LogLevel::Error, "ResizeBuffers: release every reference to the back buffer (and its views) first");
-        return E_INVALIDARG;
-      }
+    if (proxy_ && proxy_->RefCount() > 1) {
+      dev_->Log(LogLevel::Error, "ResizeBuffers: release every reference to the back buffer (and its views) first");
+      return E_INVALIDARG;
     }
     if (count) desc_.BufferCount = count;
     desc_.Width = w;
@@ -98,8 +95,7 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
       desc_.Format = format;
       if (!ChooseFormat()) return E_INVALIDARG;
     }
-    dev_->context()->EndRendering();
-    dev_->SubmitFrame();  // the acquire wait (if any) is consumed
+    dev_->context()->SubmitFrame();  // the acquire wait (if any) is consumed
     vkDeviceWaitIdle(dev_->vk());
     acquired_ = false;
     HRESULT hr = Build();
@@ -267,7 +263,7 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
     TextureCore& c = proxy_->core;
     c.current = static_cast<uint32_t>(c.images.size() - 1);  // stand-in
     if (occluded_ || !swapchain_ || acquired_) return;
-    VkSemaphore sem = dev_->Frame().acquireSemaphore;
+    VkSemaphore sem = dev_->queue().AcquireSemaphore();
     uint32_t idx = 0;
     VkResult r = vkAcquireNextImageKHR(dev_->vk(), swapchain_, UINT64_MAX, sem, VK_NULL_HANDLE, &idx);
     if (r == VK_ERROR_OUT_OF_DATE_KHR) {
@@ -279,7 +275,7 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
       return;
     }
     if (r == VK_SUBOPTIMAL_KHR) needRebuild_ = true;
-    dev_->AddPendingWait(sem);
+    dev_->queue().AddPendingWait(sem);
     imageIndex_ = idx;
     acquired_ = true;
     c.current = idx;
