@@ -67,14 +67,36 @@ bool ExtendsByOneMip(const VkImageMemoryBarrier2& prev, const VkImageMemoryBarri
 }
 }  // namespace
 
-void BarrierBatch::AddImage(VkImage image, VkImageAspectFlags aspect, uint32_t mip,
-                            uint32_t layer, const BarrierInfo& info) {
+VkImageMemoryBarrier2 ImageBarrier(VkImage image, const VkImageSubresourceRange& range, const BarrierInfo& info) {
   VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
   FillBarrier(b, info);
   b.oldLayout = info.oldLayout;
   b.newLayout = info.newLayout;
   b.image = image;
-  b.subresourceRange = {aspect, mip, 1, layer, 1};
+  b.subresourceRange = range;
+  return b;
+}
+
+void RecordImageBarriers(VkCommandBuffer cmd, const VkImageMemoryBarrier2* barriers, uint32_t count) {
+  VkDependencyInfo di{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  di.imageMemoryBarrierCount = count;
+  di.pImageMemoryBarriers = barriers;
+  vkCmdPipelineBarrier2(cmd, &di);
+}
+
+TransferInit TransferInitBarriers(VkPipelineStageFlags2 transferStage, VkAccessFlags2 laterAccess,
+                                  VkImageLayout finalLayout) {
+  TransferInit t;
+  t.before = {VK_PIPELINE_STAGE_2_NONE, transferStage, 0, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+              VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
+  t.after = {transferStage, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, laterAccess,
+             VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, finalLayout};
+  return t;
+}
+
+void BarrierBatch::AddImage(VkImage image, VkImageAspectFlags aspect, uint32_t mip,
+                            uint32_t layer, const BarrierInfo& info) {
+  const VkImageMemoryBarrier2 b = ImageBarrier(image, {aspect, mip, 1, layer, 1}, info);
   if (!images_.empty() && ExtendsByOneMip(images_.back(), b)) {
     ++images_.back().subresourceRange.levelCount;
     return;

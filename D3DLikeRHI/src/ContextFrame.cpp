@@ -26,15 +26,7 @@ void ContextImpl::CreateCommandFrames() {
   const VkDevice d = dev_->vk();
   frames_.resize(dev_->queue().FrameCount());
   for (auto& f : frames_) {
-    VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pci.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    pci.queueFamilyIndex = dev_->queueFamily();
-    vkCreateCommandPool(d, &pci, nullptr, &f.pool);
-    VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    ai.commandPool = f.pool;
-    ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    ai.commandBufferCount = 1;
-    vkAllocateCommandBuffers(d, &ai, &f.cmd);
+    dev_->CreateCommandBuffer(&f.pool, &f.cmd);
     VkQueryPoolCreateInfo qci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     qci.queryType = VK_QUERY_TYPE_TIMESTAMP;
     qci.queryCount = kTimestampsPerFrame;

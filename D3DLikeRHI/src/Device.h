@@ -79,6 +79,8 @@ class DeviceImpl final : public Device {
   bool CreateBufferRaw(VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible,
                        VkBuffer* buf, VkDeviceMemory* mem, uint8_t** mapped);
   void SetName(VkObjectType type, uint64_t handle, const std::string& name);
+  // A transient command pool of the graphics queue with one primary buffer.
+  void CreateCommandBuffer(VkCommandPool* pool, VkCommandBuffer* cmd);
 
   // Deferred destruction: after the fence of the frame being recorded.
   void Defer(VkObjectType type, uint64_t handle);

@@ -312,36 +312,17 @@ bool DeviceImpl::CreateDummies() {
 
 // Zeroes the dummies and makes the images shader-readable (first upload batch).
 void DeviceImpl::ClearDummies(const VkImage images[2]) {
+  const TransferInit t = TransferInitBarriers(VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_MEMORY_READ_BIT,
+                                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
   VkCommandBuffer cb = UploadCmd();
   vkCmdFillBuffer(cb, dummies_.uniform, 0, VK_WHOLE_SIZE, 0);
-  VkImageMemoryBarrier2 b[2]{};
-  for (int i = 0; i < 2; ++i) {
-    b[i].sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2;
-    b[i].srcStageMask = VK_PIPELINE_STAGE_2_NONE;
-    b[i].dstStageMask = VK_PIPELINE_STAGE_2_CLEAR_BIT;
-    b[i].dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    b[i].oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    b[i].newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-    b[i].srcQueueFamilyIndex = b[i].dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b[i].image = images[i];
-    b[i].subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  }
-  VkDependencyInfo di{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  di.imageMemoryBarrierCount = 2;
-  di.pImageMemoryBarriers = b;
-  vkCmdPipelineBarrier2(cb, &di);
+  VkImageMemoryBarrier2 b[2] = {ImageBarrier(images[0], range, t.before), ImageBarrier(images[1], range, t.before)};
+  RecordImageBarriers(cb, b, 2);
   VkClearColorValue zero{};
-  VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
   for (int i = 0; i < 2; ++i) vkCmdClearColorImage(cb, images[i], VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
-  for (int i = 0; i < 2; ++i) {
-    b[i].srcStageMask = VK_PIPELINE_STAGE_2_CLEAR_BIT;
-    b[i].srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    b[i].dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
-    b[i].dstAccessMask = VK_ACCESS_2_MEMORY_READ_BIT;
-    b[i].oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-    b[i].newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-  }
-  vkCmdPipelineBarrier2(cb, &di);
+  for (int i = 0; i < 2; ++i) b[i] = ImageBarrier(images[i], range, t.after);
+  RecordImageBarriers(cb, b, 2);
 }
 
 }  // namespace d3dl::impl

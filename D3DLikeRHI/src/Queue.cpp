@@ -19,21 +19,13 @@ VkCommandBufferSubmitInfo CommandBufferInfo(VkCommandBuffer cmd) {
 }
 }  // namespace
 
-void FrameQueue::Init(DeviceImpl* dev, VkQueue queue, uint32_t family, uint32_t frames) {
+void FrameQueue::Init(DeviceImpl* dev, VkQueue queue, uint32_t frames) {
   dev_ = dev;
   queue_ = queue;
   frames_.resize(frames);
   const VkDevice d = dev->vk();
   for (auto& f : frames_) {
-    VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pci.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    pci.queueFamilyIndex = family;
-    vkCreateCommandPool(d, &pci, nullptr, &f.uploadPool);
-    VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    ai.commandPool = f.uploadPool;
-    ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    ai.commandBufferCount = 1;
-    vkAllocateCommandBuffers(d, &ai, &f.uploadCmd);
+    dev->CreateCommandBuffer(&f.uploadPool, &f.uploadCmd);
     VkFenceCreateInfo fci{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     vkCreateFence(d, &fci, nullptr, &f.fence);
     VkSemaphoreCreateInfo sci{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};

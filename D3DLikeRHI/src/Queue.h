@@ -20,7 +20,7 @@ struct Garbage {
 class FrameQueue {
  public:
   // Creates the per-frame objects and begins the first frame.
-  void Init(DeviceImpl* dev, VkQueue queue, uint32_t family, uint32_t frames);
+  void Init(DeviceImpl* dev, VkQueue queue, uint32_t frames);
   void Destroy();
   bool Ready() const { return !frames_.empty(); }
 

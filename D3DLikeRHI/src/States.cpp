@@ -127,6 +127,17 @@ void FillSampler(DeviceImpl& dev, const SAMPLER_DESC& d, VkSamplerCreateInfo* ci
   ci->maxLod = d.MaxLOD >= FLOAT32_MAX ? VK_LOD_CLAMP_NONE : std::max(ci->minLod, d.MaxLOD);
 }
 
+// The fixed-function state objects: a validated description decoded once.
+template <class Impl, class Desc, class Iface, class Decode>
+HRESULT MakeState(DeviceImpl* dev, HRESULT valid, const Desc* desc, Iface** out, Decode decode) {
+  if (FAILED(valid)) return valid;
+  auto* s = new Impl(dev);
+  s->desc = *desc;
+  decode(*desc, s);
+  *out = s;
+  return S_OK;
+}
+
 }  // namespace
 
 SamplerImpl::~SamplerImpl() { dev_->Defer(VK_OBJECT_TYPE_SAMPLER, reinterpret_cast<uint64_t>(sampler)); }
@@ -175,13 +186,8 @@ void FillBlendState(const BLEND_DESC& d, VkPipelineColorBlendAttachmentState* ou
 
 HRESULT DeviceImpl::CreateBlendState(const BLEND_DESC* desc, BlendState** out) {
   if (out) *out = nullptr;
-  const HRESULT valid = ValidateBlendDesc(*this, desc, out);
-  if (FAILED(valid)) return valid;
-  auto* s = new BlendImpl(this);
-  s->desc = *desc;
-  FillBlendState(*desc, s->att);
-  *out = s;
-  return S_OK;
+  return MakeState<BlendImpl>(this, ValidateBlendDesc(*this, desc, out), desc, out,
+                              [](const BLEND_DESC& d, BlendImpl* s) { FillBlendState(d, s->att); });
 }
 
 void FillDepthState(const DEPTH_STENCIL_DESC& d, VkPipelineDepthStencilStateCreateInfo* ci) {
@@ -206,13 +212,8 @@ void FillDepthState(const DEPTH_STENCIL_DESC& d, VkPipelineDepthStencilStateCrea
 
 HRESULT DeviceImpl::CreateDepthStencilState(const DEPTH_STENCIL_DESC* desc, DepthStencilState** out) {
   if (out) *out = nullptr;
-  const HRESULT valid = ValidateDepthStencilDesc(*this, desc, out);
-  if (FAILED(valid)) return valid;
-  auto* s = new DepthStencilImpl(this);
-  s->desc = *desc;
-  FillDepthState(*desc, &s->ci);
-  *out = s;
-  return S_OK;
+  return MakeState<DepthStencilImpl>(this, ValidateDepthStencilDesc(*this, desc, out), desc, out,
+                                     [](const DEPTH_STENCIL_DESC& d, DepthStencilImpl* s) { FillDepthState(d, &s->ci); });
 }
 
 void FillRasterState(const RASTERIZER_DESC& d, bool depthClamp, VkPipelineRasterizationStateCreateInfo* ci) {
@@ -234,13 +235,10 @@ void FillRasterState(const RASTERIZER_DESC& d, bool depthClamp, VkPipelineRaster
 
 HRESULT DeviceImpl::CreateRasterizerState(const RASTERIZER_DESC* desc, RasterizerState** out) {
   if (out) *out = nullptr;
-  const HRESULT valid = ValidateRasterizerDesc(*this, desc, out);
-  if (FAILED(valid)) return valid;
-  auto* s = new RasterizerImpl(this);
-  s->desc = *desc;
-  FillRasterState(*desc, features_.depthClamp, &s->ci);
-  *out = s;
-  return S_OK;
+  const bool depthClamp = features_.depthClamp;
+  return MakeState<RasterizerImpl>(
+      this, ValidateRasterizerDesc(*this, desc, out), desc, out,
+      [depthClamp](const RASTERIZER_DESC& d, RasterizerImpl* s) { FillRasterState(d, depthClamp, &s->ci); });
 }
 
 }  // namespace d3dl::impl

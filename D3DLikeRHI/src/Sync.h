@@ -67,6 +67,20 @@ struct BarrierInfo {
 // no barrier is needed.
 bool Transition(SyncState& s, const Usage& u, BarrierInfo* out);
 
+// One image barrier (queue family ignored), and a dependency of image
+// barriers recorded at once (uploads and dummies outside the batches).
+VkImageMemoryBarrier2 ImageBarrier(VkImage image, const VkImageSubresourceRange& range, const BarrierInfo& info);
+void RecordImageBarriers(VkCommandBuffer cmd, const VkImageMemoryBarrier2* barriers, uint32_t count);
+
+// An image initialised by a transfer command (copy or clear) of the upload
+// batch: UNDEFINED -> TRANSFER_DST before it, TRANSFER_DST -> `finalLayout`
+// after it, visible to every later command's `laterAccess`.
+struct TransferInit {
+  BarrierInfo before, after;
+};
+TransferInit TransferInitBarriers(VkPipelineStageFlags2 transferStage, VkAccessFlags2 laterAccess,
+                                  VkImageLayout finalLayout);
+
 // Mips and array layers of a texture that one use touches.
 struct SubresourceRange {
   uint32_t baseMip = 0, mips = 1, baseLayer = 0, layers = 1;

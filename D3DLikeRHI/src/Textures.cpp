@@ -145,20 +145,11 @@ void UploadToStaging(TextureCore& core, const SUBRESOURCE_DATA* init) {
 // The whole image from UNDEFINED to TRANSFER_DST before the uploads, and
 // to `finalLayout` (visible to all commands) after them.
 void RecordUploadBarrier(VkCommandBuffer cb, const TextureCore& core, bool after, VkImageLayout finalLayout) {
-  VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-  b.srcStageMask = after ? VK_PIPELINE_STAGE_2_COPY_BIT : VK_PIPELINE_STAGE_2_NONE;
-  b.srcAccessMask = after ? VK_ACCESS_2_TRANSFER_WRITE_BIT : 0;
-  b.dstStageMask = after ? VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT : VK_PIPELINE_STAGE_2_COPY_BIT;
-  b.dstAccessMask = after ? VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT : VK_ACCESS_2_TRANSFER_WRITE_BIT;
-  b.oldLayout = after ? VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL : VK_IMAGE_LAYOUT_UNDEFINED;
-  b.newLayout = after ? finalLayout : VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  b.image = core.images[0].image;
-  b.subresourceRange = {core.aspect, 0, core.desc.MipLevels, 0, core.desc.ArraySize};
-  VkDependencyInfo di{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  di.imageMemoryBarrierCount = 1;
-  di.pImageMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cb, &di);
+  const TransferInit t = TransferInitBarriers(VK_PIPELINE_STAGE_2_COPY_BIT,
+                                              VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT, finalLayout);
+  const VkImageMemoryBarrier2 b = ImageBarrier(
+      core.images[0].image, {core.aspect, 0, core.desc.MipLevels, 0, core.desc.ArraySize}, after ? t.after : t.before);
+  RecordImageBarriers(cb, &b, 1);
 }
 
 // Initial data: staged in the ring, copied by the upload command buffer.

@@ -80,6 +80,21 @@ DXGI_FORMAT RequestedFormat(const Iface* desc) {
   return desc ? desc->Format : DXGI_FORMAT_UNKNOWN;
 }
 
+// Render-target and depth-stencil views: one mip, one layer.
+template <class Impl, class Desc, class Iface>
+HRESULT CreateMipSliceView(DeviceImpl* dev, const ViewKindInfo& kind, Resource* r, const Desc* desc, Iface** out) {
+  if (out) *out = nullptr;
+  ViewFormat format;
+  const UINT mip = desc ? desc->MipSlice : 0;
+  HRESULT hr = ValidateViewResource(*dev, kind, r, out, RequestedFormat(desc), &format);
+  if constexpr (std::is_same_v<Desc, DEPTH_STENCIL_VIEW_DESC>) {
+    if (SUCCEEDED(hr)) hr = ValidateDsvFormat(*dev, desc);
+  }
+  if (SUCCEEDED(hr)) hr = ValidateMipSlice(*dev, kind.fn, *AsTexture(r), mip);
+  if (FAILED(hr)) return hr;
+  return MakeView<Impl>(dev, kind.fn, r, format, mip, 1, true, out);
+}
+
 }  // namespace
 
 HRESULT DeviceImpl::CreateShaderResourceView(Resource* r, const SHADER_RESOURCE_VIEW_DESC* desc,
@@ -95,25 +110,12 @@ HRESULT DeviceImpl::CreateShaderResourceView(Resource* r, const SHADER_RESOURCE_
 
 HRESULT DeviceImpl::CreateRenderTargetView(Resource* r, const RENDER_TARGET_VIEW_DESC* desc,
                                            RenderTargetView** out) {
-  if (out) *out = nullptr;
-  ViewFormat format;
-  const UINT mip = desc ? desc->MipSlice : 0;
-  HRESULT hr = ValidateViewResource(*this, kRtvKind, r, out, RequestedFormat(desc), &format);
-  if (SUCCEEDED(hr)) hr = ValidateMipSlice(*this, kRtvKind.fn, *AsTexture(r), mip);
-  if (FAILED(hr)) return hr;
-  return MakeView<RTVImpl>(this, kRtvKind.fn, r, format, mip, 1, true, out);
+  return CreateMipSliceView<RTVImpl>(this, kRtvKind, r, desc, out);
 }
 
 HRESULT DeviceImpl::CreateDepthStencilView(Resource* r, const DEPTH_STENCIL_VIEW_DESC* desc,
                                            DepthStencilView** out) {
-  if (out) *out = nullptr;
-  ViewFormat format;
-  const UINT mip = desc ? desc->MipSlice : 0;
-  HRESULT hr = ValidateViewResource(*this, kDsvKind, r, out, RequestedFormat(desc), &format);
-  if (SUCCEEDED(hr)) hr = ValidateDsvFormat(*this, desc);
-  if (SUCCEEDED(hr)) hr = ValidateMipSlice(*this, kDsvKind.fn, *AsTexture(r), mip);
-  if (FAILED(hr)) return hr;
-  return MakeView<DSVImpl>(this, kDsvKind.fn, r, format, mip, 1, true, out);
+  return CreateMipSliceView<DSVImpl>(this, kDsvKind, r, desc, out);
 }
 
 }  // namespace d3dl::impl

@@ -98,6 +98,18 @@ void DeviceImpl::SetName(VkObjectType type, uint64_t handle, const std::string& 
   debugUtils_.setObjectName(device_, &ni);
 }
 
+void DeviceImpl::CreateCommandBuffer(VkCommandPool* pool, VkCommandBuffer* cmd) {
+  VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pci.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+  pci.queueFamilyIndex = queueFamily_;
+  vkCreateCommandPool(device_, &pci, nullptr, pool);
+  VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  ai.commandPool = *pool;
+  ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  ai.commandBufferCount = 1;
+  vkAllocateCommandBuffers(device_, &ai, cmd);
+}
+
 // ---------------------------------------------------------------------------
 void DeviceImpl::Defer(VkObjectType type, uint64_t handle) {
   if (!handle) return;
@@ -153,7 +165,7 @@ HRESULT DeviceImpl::Init(const DEVICE_CREATE_DESC& desc) {
   VkQueue queue;
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue);
   pipelines_.Init(this);
-  queue_.Init(this, queue, queueFamily_, fif);
+  queue_.Init(this, queue, fif);
   if (!CreateDummies()) return E_OUTOFMEMORY;
   context_ = std::make_unique<ContextImpl>(this);
   Log(LogLevel::Info, "D3DLikeRHI on %s (%s)", adapter_.Description, adapter_.Driver);
