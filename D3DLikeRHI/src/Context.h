@@ -230,6 +230,17 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   std::vector<BufferImpl*> discardedCBs_;
 };
 
+// An attachment of a rendering scope that keeps its contents (D3D11 targets
+// are never discarded).
+inline VkRenderingAttachmentInfo LoadStoreAttachment(VkImageView view, VkImageLayout layout) {
+  VkRenderingAttachmentInfo att{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  att.imageView = view;
+  att.imageLayout = layout;
+  att.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  att.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  return att;
+}
+
 // Draw-time commit. Hot path: nothing but constant data changed since the last
 // successful commit, inside the same rendering scope. Every setter that could
 // change the outcome of CommitSlow's checks, barriers or bindings sets another

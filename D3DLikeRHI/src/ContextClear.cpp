@@ -15,15 +15,6 @@ VkClearColorValue ToClearColor(const ViewCore& v, const float c[4]) {
   }
   return r;
 }
-
-VkRenderingAttachmentInfo LoadStoreAttachment(VkImageView view, VkImageLayout layout) {
-  VkRenderingAttachmentInfo att{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  att.imageView = view;
-  att.imageLayout = layout;
-  att.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-  att.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  return att;
-}
 }  // namespace
 
 void ContextImpl::ClearRectsInScope(uint32_t attachment, VkImageAspectFlags aspect, const VkClearValue& v,

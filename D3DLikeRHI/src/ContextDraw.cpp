@@ -84,19 +84,12 @@ bool ContextImpl::BeginRendering() {
   const uint64_t serial = dev_->CurrentSerial();
   for (uint32_t i = 0; i < om.numRenderTargets; ++i) {
     const RTVImpl* r = om.renderTargets[i].Get();
-    color[i].sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
-    color[i].imageView = r ? r->v.Current() : VK_NULL_HANDLE;
-    color[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-    color[i].loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    color[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    color[i] = LoadStoreAttachment(r ? r->v.Current() : VK_NULL_HANDLE, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
     if (r) r->v.tex->use.Write(serial);
   }
   VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   if (const DSVImpl* d = om.depthStencilView.Get()) {
-    depth.imageView = d->v.Current();
-    depth.imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
-    depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-    depth.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    depth = LoadStoreAttachment(d->v.Current(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
     d->v.tex->use.Write(serial);
   }
   VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};

@@ -28,7 +28,7 @@ bool ContextImpl::WaitForResource(uint64_t lastUse, UINT flags, HRESULT* hr) {
 // Hot path of Map: a fresh ring slice per WRITE_DISCARD, written by the
 // application in place (no shadow copy per draw; see BufferImpl::SyncShadow).
 HRESULT ContextImpl::MapDiscardConstants(BufferImpl* b, MAPPED_SUBRESOURCE* mapped) {
-  if (!b->NewRingSlice(dev_->uboAlign())) {
+  if (!b->NewRingSlice(b->dev()->uboAlign())) {  // b->dev(): one device pointer to load
     *mapped = {};
     return E_OUTOFMEMORY;
   }
