@@ -44,71 +44,111 @@ bool Transition(SyncState& s, const Usage& u, BarrierInfo* out) {
   return need;
 }
 
-void ContextImpl::UseTexture(TextureCore* t, uint32_t baseMip, uint32_t mips, uint32_t baseLayer,
-                             uint32_t layers, const Usage& u) {
+namespace {
+// The stage/access half shared by image and buffer barriers.
+template <class B>
+void FillBarrier(B& b, const BarrierInfo& info) {
+  b.srcStageMask = info.srcStage;
+  b.srcAccessMask = info.srcAccess;
+  b.dstStageMask = info.dstStage;
+  b.dstAccessMask = info.dstAccess;
+  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+}
+
+// `next` continues `prev` one mip further down, with the same accesses.
+bool ExtendsByOneMip(const VkImageMemoryBarrier2& prev, const VkImageMemoryBarrier2& next) {
+  const auto& p = prev.subresourceRange;
+  return prev.image == next.image && prev.srcStageMask == next.srcStageMask &&
+         prev.srcAccessMask == next.srcAccessMask && prev.dstStageMask == next.dstStageMask &&
+         prev.dstAccessMask == next.dstAccessMask && prev.oldLayout == next.oldLayout &&
+         prev.newLayout == next.newLayout &&
+         p.baseArrayLayer == next.subresourceRange.baseArrayLayer && p.layerCount == 1 &&
+         p.baseMipLevel + p.levelCount == next.subresourceRange.baseMipLevel;
+}
+}  // namespace
+
+VkImageMemoryBarrier2 ImageBarrier(VkImage image, const VkImageSubresourceRange& range, const BarrierInfo& info) {
+  VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+  FillBarrier(b, info);
+  b.oldLayout = info.oldLayout;
+  b.newLayout = info.newLayout;
+  b.image = image;
+  b.subresourceRange = range;
+  return b;
+}
+
+void RecordImageBarriers(VkCommandBuffer cmd, const VkImageMemoryBarrier2* barriers, uint32_t count) {
+  VkDependencyInfo di{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  di.imageMemoryBarrierCount = count;
+  di.pImageMemoryBarriers = barriers;
+  vkCmdPipelineBarrier2(cmd, &di);
+}
+
+TransferInit TransferInitBarriers(VkPipelineStageFlags2 transferStage, VkAccessFlags2 laterAccess,
+                                  VkImageLayout finalLayout) {
+  TransferInit t;
+  t.before = {VK_PIPELINE_STAGE_2_NONE, transferStage, 0, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+              VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL};
+  t.after = {transferStage, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, laterAccess,
+             VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, finalLayout};
+  return t;
+}
+
+void BarrierBatch::AddImage(VkImage image, VkImageAspectFlags aspect, uint32_t mip,
+                            uint32_t layer, const BarrierInfo& info) {
+  const VkImageMemoryBarrier2 b = ImageBarrier(image, {aspect, mip, 1, layer, 1}, info);
+  if (!images_.empty() && ExtendsByOneMip(images_.back(), b)) {
+    ++images_.back().subresourceRange.levelCount;
+    return;
+  }
+  images_.push_back(b);
+}
+
+void BarrierBatch::AddBuffer(VkBuffer buffer, const BarrierInfo& info) {
+  VkBufferMemoryBarrier2 b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
+  FillBarrier(b, info);
+  b.buffer = buffer;
+  b.offset = 0;
+  b.size = VK_WHOLE_SIZE;
+  buffers_.push_back(b);
+}
+
+void BarrierBatch::Record(VkCommandBuffer cmd) {
+  VkDependencyInfo di{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  di.imageMemoryBarrierCount = static_cast<uint32_t>(images_.size());
+  di.pImageMemoryBarriers = images_.data();
+  di.bufferMemoryBarrierCount = static_cast<uint32_t>(buffers_.size());
+  di.pBufferMemoryBarriers = buffers_.data();
+  vkCmdPipelineBarrier2(cmd, &di);
+  images_.clear();
+  buffers_.clear();
+}
+
+// ---------------------------------------------------------------------------
+void ContextImpl::UseTexture(TextureCore* t, const SubresourceRange& r, const Usage& u) {
   TextureImage& img = t->Cur();
   const uint32_t mipCount = t->desc.MipLevels;
-  for (uint32_t l = baseLayer; l < baseLayer + layers; ++l) {
-    for (uint32_t m = baseMip; m < baseMip + mips; ++m) {
-      SyncState& s = img.sync[l * mipCount + m];
-      BarrierInfo bi;
-      if (!Transition(s, u, &bi)) continue;
-      VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-      b.srcStageMask = bi.srcStage;
-      b.srcAccessMask = bi.srcAccess;
-      b.dstStageMask = bi.dstStage;
-      b.dstAccessMask = bi.dstAccess;
-      b.oldLayout = bi.oldLayout;
-      b.newLayout = bi.newLayout;
-      b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-      b.image = img.image;
-      b.subresourceRange = {t->aspect, m, 1, l, 1};
-      // Merge with the previous barrier of the same image when only the mip differs.
-      if (!imageBarriers_.empty()) {
-        auto& p = imageBarriers_.back();
-        if (p.image == b.image && p.srcStageMask == b.srcStageMask &&
-            p.srcAccessMask == b.srcAccessMask && p.dstStageMask == b.dstStageMask &&
-            p.dstAccessMask == b.dstAccessMask && p.oldLayout == b.oldLayout &&
-            p.newLayout == b.newLayout && p.subresourceRange.baseArrayLayer == l &&
-            p.subresourceRange.layerCount == 1 &&
-            p.subresourceRange.baseMipLevel + p.subresourceRange.levelCount == m) {
-          ++p.subresourceRange.levelCount;
-          continue;
-        }
-      }
-      imageBarriers_.push_back(b);
+  for (uint32_t l = r.baseLayer; l < r.baseLayer + r.layers; ++l) {
+    for (uint32_t m = r.baseMip; m < r.baseMip + r.mips; ++m) {
+      BarrierInfo info;
+      if (Transition(img.sync[l * mipCount + m], u, &info))
+        barriers_.AddImage(img.image, t->aspect, m, l, info);
     }
   }
   if (u.layout != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) dirty_ |= kSrvLayouts;
 }
 
 void ContextImpl::UseBuffer(VkBuffer buf, SyncState& s, const Usage& u) {
-  BarrierInfo bi;
-  if (!Transition(s, u, &bi)) return;
-  VkBufferMemoryBarrier2 b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
-  b.srcStageMask = bi.srcStage;
-  b.srcAccessMask = bi.srcAccess;
-  b.dstStageMask = bi.dstStage;
-  b.dstAccessMask = bi.dstAccess;
-  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  b.buffer = buf;
-  b.offset = 0;
-  b.size = VK_WHOLE_SIZE;
-  bufferBarriers_.push_back(b);
+  BarrierInfo info;
+  if (!Transition(s, u, &info)) return;
+  barriers_.AddBuffer(buf, info);
   if (u.write) dirty_ |= kVertexBuffers | kIndexBuffer;
 }
 
 void ContextImpl::FlushBarriers() {
-  if (imageBarriers_.empty() && bufferBarriers_.empty()) return;
+  if (barriers_.Empty()) return;
   EndRendering();
-  VkDependencyInfo di{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  di.imageMemoryBarrierCount = static_cast<uint32_t>(imageBarriers_.size());
-  di.pImageMemoryBarriers = imageBarriers_.data();
-  di.bufferMemoryBarrierCount = static_cast<uint32_t>(bufferBarriers_.size());
-  di.pBufferMemoryBarriers = bufferBarriers_.data();
-  vkCmdPipelineBarrier2(dev_->Cmd(), &di);
-  imageBarriers_.clear();
-  bufferBarriers_.clear();
+  barriers_.Record(cmd_);
 }
 
 }  // namespace d3dl::impl

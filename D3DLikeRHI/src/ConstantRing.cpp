@@ -1,7 +1,7 @@
 // Per-frame linear allocator for constants, WRITE_DISCARD data, dynamic
 // vertex/index data and upload staging: host-visible, persistently mapped
 // chunks that grow on demand and are reused when the frame's fence signals.
-#include "Internal.h"
+#include "Device.h"
 
 namespace d3dl::impl {
 namespace {

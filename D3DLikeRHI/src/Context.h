@@ -1,10 +1,14 @@
-// The immediate context: D3D11-style state recording over one Vulkan command
-// buffer per frame. Split over ContextState.cpp (setters), ContextDraw.cpp
-// (commit, rendering scopes, clears), ContextCopy.cpp (map/update/copy) and
-// ContextQuery.cpp (queries, debug labels).
+// The immediate context: D3D11-style state recording into one Vulkan command
+// buffer per frame, which it submits through the device queue. Split over
+// ContextState.cpp (setters), ContextDraw.cpp (commit, rendering scopes),
+// ContextClear.cpp, ContextMap.cpp (map/update), ContextCopy.cpp,
+// ContextBlit.cpp, ContextQuery.cpp, ContextFrame.cpp (command buffers,
+// submission) and Barriers.cpp.
 #pragma once
 
-#include "Internal.h"
+#include "ContextState.h"
+#include "Device.h"
+#include "d3dl/BlitExtension.h"
 
 namespace d3dl::impl {
 
@@ -24,7 +28,35 @@ class QueryImpl final : public Child<Query> {
   bool begun = false;
 };
 
-class ContextImpl final : public DeviceContext {
+// What a context records with in one frame slot of the queue: its command
+// buffer, the pools its descriptor sets come from and its timestamps.
+struct CommandFrame {
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  uint64_t serial = 0;  // frame recorded in this slot
+  std::vector<VkDescriptorPool> descPools;
+  size_t descPoolCurrent = 0;
+  VkQueryPool queryPool = VK_NULL_HANDLE;
+  uint32_t queriesUsed = 0;
+  std::vector<QueryImpl*> queries;  // referenced until resolved
+};
+
+// The descriptor set of the last commit, and what the constants-only path
+// needs to rebind it with new dynamic offsets.
+struct BoundDescriptors {
+  static constexpr uint32_t kMaxCbs = kStageCount * kMaxConstantBufferSlots;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  VkBuffer cbBuffers[kMaxCbs] = {};  // written into `set`
+  uint32_t cbRanges[kMaxCbs] = {};
+  uint32_t dynOffsets[kMaxCbs] = {};
+  // The program's CBs in binding order (null: dummy) and its layout (null:
+  // no descriptor set), as BindDescriptors last bound them.
+  BufferImpl* hotCbs[kMaxCbs] = {};
+  uint32_t nHotCbs = 0;
+  VkPipelineLayout hotLayout = VK_NULL_HANDLE;
+};
+
+class ContextImpl final : public DeviceContext, public BlitExtension {
  public:
   explicit ContextImpl(DeviceImpl* dev);
   ~ContextImpl();
@@ -77,125 +109,137 @@ class ContextImpl final : public DeviceContext {
   void EndEvent() override;
   void ClearState() override;
   void Flush() override;
+
+  // BlitExtension (ContextBlit.cpp)
   void BlitRegion(Texture2D* dst, const RECT& dstRect, Texture2D* src, const RECT& srcRect,
-                  FILTER filter) override;  // ContextBlit.cpp
+                  FILTER filter) override;
 
   // ---- backend internals
-  void OnFrameBegin();  // a fresh command buffer: everything is re-bound lazily
-  void EndRendering();
-  // Records the barrier `u` needs on a texture range (queued until FlushBarriers).
-  void UseTexture(TextureCore* t, uint32_t baseMip, uint32_t mips, uint32_t baseLayer,
-                  uint32_t layers, const Usage& u);
-  void UseBuffer(VkBuffer buf, SyncState& s, const Usage& u);
-  void FlushBarriers();
-  bool HasPendingBarriers() const { return !imageBarriers_.empty() || !bufferBarriers_.empty(); }
-  void MarkDirtyAll();
-  void InvalidateTexture(TextureCore* t);  // a texture's layout changed behind our back
-  bool IsRendering() const { return rendering_; }
-  // Constant buffers Map(WRITE_DISCARD)ed this frame keep their latest data
-  // only in the ring: copied back to their shadows before the frame ends.
-  void SaveDiscardedConstants();
+  // Ends the frame's commands (the rendering scope, pending barriers; `present`
+  // is left in PRESENT_SRC), submits them through the device queue with
+  // `signal`, and begins the next frame.
+  void SubmitFrame(TextureCore* present = nullptr, VkSemaphore signal = VK_NULL_HANDLE);
   void ForgetDiscardedConstants(BufferImpl* b);  // `b` is being destroyed
 
  private:
-  enum Dirty : uint32_t {
-    kPipeline = 1u << 0,
-    kVertexBuffers = 1u << 1,
-    kIndexBuffer = 1u << 2,
-    kViewport = 1u << 3,
-    kScissor = 1u << 4,
-    kBlendConst = 1u << 5,
-    kStencilRef = 1u << 6,
-    kDescriptors = 1u << 7,  // SRV/sampler/CB identity
-    kConstants = 1u << 8,    // only constant data changed
-    kSrvLayouts = 1u << 9,   // some texture changed layout: re-check SRVs
-    kProgram = 1u << 10,
-    kTopology = 1u << 11,
-    kCbSlots = 1u << 12,     // a CB slot was (re)bound: hotCbs_ is out of date
-    kAll = 0xffffffffu,
-  };
+  // ContextFrame.cpp
+  void CreateCommandFrames();
+  void DestroyCommandFrames();
+  void BeginCommandFrame();  // a fresh command buffer: everything is re-bound lazily
+  void EndCommandFrame(TextureCore* present);
+  void RecycleCommandFrame(CommandFrame& f);
+  VkDescriptorSet AllocateSet(VkDescriptorSetLayout layout);
+  bool AllocateTimestamp(QueryImpl* q, uint32_t* index);
 
+  // Barriers.cpp: records the barriers a use needs (queued until FlushBarriers).
+  void UseTexture(TextureCore* t, const SubresourceRange& range, const Usage& u);
+  void UseBuffer(VkBuffer buf, SyncState& s, const Usage& u);
+  void FlushBarriers();
+  bool HasPendingBarriers() const { return !barriers_.Empty(); }
+
+  // ContextState.cpp
+  void SetShader(ShaderStage stage, ShaderBase* shader);
+  void SetCBs(ShaderStage stage, UINT start, UINT num, Buffer* const* buffers);
+  void SetSRVs(ShaderStage stage, UINT start, UINT num, ShaderResourceView* const* views);
+  void SetSamplers(ShaderStage stage, UINT start, UINT num, SamplerState* const* samplers);
+  void UnbindAliasedSRVs();
+  void CreateDefaultStates();
+
+  // ContextDraw.cpp
   inline bool Commit(bool indexed);
   bool CommitSlow(bool indexed);
+  bool CheckDrawState(bool indexed);
+  void UseDrawResources(bool indexed);
+  bool BindPipeline(VkCommandBuffer cmd);
+  void SetDynamicState(VkCommandBuffer cmd);
+  void BindVertexBuffers(VkCommandBuffer cmd);
+  bool BindIndexBuffer(VkCommandBuffer cmd);
   bool BindDescriptors(VkCommandBuffer cmd);
   inline bool BindConstantsHot(VkCommandBuffer cmd);
-  void ListDiscarded(BufferImpl* b);
   bool WriteNewSet();
-  HRESULT MapDiscardConstants(BufferImpl* b, MAPPED_SUBRESOURCE* mapped);
+  PerStage<ShaderBase*> BoundShaders() const;
+  RasterizerImpl* Rasterizer() const { return state_.rs.state ? state_.rs.state.Get() : defaults_.raster.Get(); }
   bool BeginRendering();
-  void ErrorOnce(uint32_t bit, const char* msg);
-  void SetCBs(uint32_t stage, UINT start, UINT num, Buffer* const* buffers);
-  void SetSRVs(uint32_t stage, UINT start, UINT num, ShaderResourceView* const* views);
-  void SetSamplers(uint32_t stage, UINT start, UINT num, SamplerState* const* samplers);
+  void EndRendering();
+  bool TargetSize(uint32_t* w, uint32_t* h) const;
+  void ErrorOnce(OnceError e);
+  void MarkDirtyAll();
+
+  // ContextClear.cpp
   void ClearRectsInScope(uint32_t attachment, VkImageAspectFlags aspect, const VkClearValue& v,
                          const RECT* rects, UINT numRects, uint32_t w, uint32_t h);
-  bool TargetSize(uint32_t* w, uint32_t* h) const;
+  void ClearUnboundView(RTVImpl* v, const VkClearValue& cv, const RECT* rects, UINT numRects);
+  int BoundRenderTargetSlot(const RTVImpl* v) const;
+
+  // ContextMap.cpp
+  HRESULT MapDiscardConstants(BufferImpl* b, MAPPED_SUBRESOURCE* mapped);
+  void ListDiscarded(BufferImpl* b);
+  void SaveDiscardedConstants();
+  HRESULT MapBuffer(BufferImpl* b, MAP type, UINT flags, MAPPED_SUBRESOURCE* mapped);
+  HRESULT MapTexture(TextureCore* t, UINT sub, MAP type, UINT flags, MAPPED_SUBRESOURCE* mapped);
+  HRESULT MapConstantShadow(BufferImpl* b, MAPPED_SUBRESOURCE* mapped);
+  HRESULT MapRingBuffer(BufferImpl* b, MAP type, MAPPED_SUBRESOURCE* mapped);
+  HRESULT MapStagingBuffer(BufferImpl* b, MAP type, UINT flags, MAPPED_SUBRESOURCE* mapped);
+  HRESULT MapStagingTexture(TextureCore* t, UINT sub, MAP type, UINT flags,
+                            MAPPED_SUBRESOURCE* mapped);
+  HRESULT MapRingTexture(TextureCore* t, UINT sub, MAPPED_SUBRESOURCE* mapped);
+  void UnmapRingTexture(TextureCore* t, UINT sub);
   bool WaitForResource(uint64_t lastUse, UINT flags, HRESULT* hr);
+  void UpdateBuffer(BufferImpl* b, UINT lo, UINT hi, const void* data);
+  void UpdateTexture(TextureCore* t, UINT sub, const BOX& box, const void* data, UINT rowPitch);
+  void CopyFromRing(TextureCore* t, const SubIndex& si, const RingAlloc& a, const BOX& box);
+
+  // ContextCopy.cpp
+  void CopyBufferRegion(BufferImpl* dst, UINT dstX, BufferImpl* src, const BOX* box);
   void CopyTextureRegion(TextureCore* dst, UINT dstSub, UINT x, UINT y, TextureCore* src,
                          UINT srcSub, const BOX* box);
-  void CopyBufferRegion(BufferImpl* dst, UINT dstX, BufferImpl* src, const BOX* box);
-  void UpdateTexture(TextureCore* t, UINT sub, const BOX* box, const void* data, UINT rowPitch);
+  void CopyImageToImage(TextureCore* dst, SubIndex ds, UINT x, UINT y, TextureCore* src,
+                        SubIndex ss, const BOX& b);
+  void CopyImageToStaging(TextureCore* dst, UINT dstSub, UINT x, UINT y, TextureCore* src,
+                          SubIndex ss, const BOX& b);
+  void CopyStagingToImage(TextureCore* dst, SubIndex ds, UINT x, UINT y, TextureCore* src,
+                          UINT srcSub, const BOX& b);
 
   DeviceImpl* dev_;
+  VkCommandBuffer cmd_ = VK_NULL_HANDLE;  // this frame's command buffer
 
-  // Bound state (references held, as D3D11 does).
-  struct VB {
-    BufferImpl* buffer = nullptr;
-    UINT stride = 0;
-    UINT offset = 0;
-  };
-  InputLayoutImpl* il_ = nullptr;
-  VB vbs_[IA_VERTEX_INPUT_RESOURCE_SLOT_COUNT];
-  BufferImpl* ib_ = nullptr;
-  VkIndexType ibType_ = VK_INDEX_TYPE_UINT16;
-  UINT ibOffset_ = 0;
-  PRIMITIVE_TOPOLOGY topology_ = PRIMITIVE_TOPOLOGY_UNDEFINED;
-  VertexShaderImpl* vs_ = nullptr;
-  PixelShaderImpl* ps_ = nullptr;
-  BufferImpl* cbs_[2][kMaxConstantBufferSlots] = {};
-  SRVImpl* srvs_[2][kMaxTextureSlots] = {};
-  SamplerImpl* samplers_[2][kMaxSamplerSlots] = {};
-  VIEWPORT viewport_{};
-  UINT numViewports_ = 0;
-  RECT scissor_{};
-  UINT numScissors_ = 0;
-  RasterizerImpl* raster_ = nullptr;
-  BlendImpl* blend_ = nullptr;
-  float blendFactor_[4] = {1, 1, 1, 1};
-  DepthStencilImpl* depth_ = nullptr;
-  UINT stencilRef_ = 0;
-  RTVImpl* rtvs_[SIMULTANEOUS_RENDER_TARGET_COUNT] = {};
-  UINT numRT_ = 0;
-  DSVImpl* dsv_ = nullptr;
-
-  // Default states (D3D11 defaults), used when nullptr is bound.
-  RasterizerImpl* defRaster_ = nullptr;
-  BlendImpl* defBlend_ = nullptr;
-  DepthStencilImpl* defDepth_ = nullptr;
-
-  // Committed state of the current command buffer.
+  // Committed state of the current command buffer (the hot path first).
   uint32_t dirty_ = kAll;
-  uint32_t errorsLogged_ = 0;
   bool rendering_ = false;
+  BoundDescriptors desc_;
+  BarrierBatch barriers_;
   uint32_t renderW_ = 0, renderH_ = 0;
   ProgramLayout* program_ = nullptr;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
   PipelineKey key_{};
-  VkDescriptorSet set_ = VK_NULL_HANDLE;
-  VkBuffer setCbBuffers_[2 * kMaxConstantBufferSlots] = {};
-  uint32_t setCbRanges_[2 * kMaxConstantBufferSlots] = {};
-  uint32_t dynOffsets_[2 * kMaxConstantBufferSlots] = {};
-  // What BindDescriptors last bound, for BindConstantsHot: the program's CBs
-  // in binding order (null: dummy) and its layout (null: no descriptor set).
-  BufferImpl* hotCbs_[2 * kMaxConstantBufferSlots] = {};
-  uint32_t nHotCbs_ = 0;
-  VkPipelineLayout hotLayout_ = VK_NULL_HANDLE;
   int labelDepth_ = 0;
+  uint32_t errorsLogged_ = 0;  // bits of OnceError
 
-  std::vector<VkImageMemoryBarrier2> imageBarriers_;
-  std::vector<VkBufferMemoryBarrier2> bufferBarriers_;
-  std::vector<BufferImpl*> discardedCBs_;  // see SaveDiscardedConstants (no references held)
+  ContextState state_;
+  // Default states (D3D11 defaults), used when nullptr is bound.
+  struct {
+    ComPtr<RasterizerImpl> raster;
+    ComPtr<BlendImpl> blend;
+    ComPtr<DepthStencilImpl> depth;
+  } defaults_;
+
+  std::vector<CommandFrame> frames_;  // one per frame slot of the queue
+  // Constant buffers Map(WRITE_DISCARD)ed this frame keep their latest data
+  // only in the ring: copied back to their shadows before the frame ends
+  // (no references held; see ForgetDiscardedConstants).
+  std::vector<BufferImpl*> discardedCBs_;
 };
+
+// An attachment of a rendering scope that keeps its contents (D3D11 targets
+// are never discarded).
+inline VkRenderingAttachmentInfo LoadStoreAttachment(VkImageView view, VkImageLayout layout) {
+  VkRenderingAttachmentInfo att{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  att.imageView = view;
+  att.imageLayout = layout;
+  att.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  att.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  return att;
+}
 
 // Draw-time commit. Hot path: nothing but constant data changed since the last
 // successful commit, inside the same rendering scope. Every setter that could
@@ -204,7 +248,7 @@ class ContextImpl final : public DeviceContext {
 inline bool ContextImpl::Commit(bool indexed) {
   const uint32_t ignored = indexed ? uint32_t(kConstants) : uint32_t(kConstants | kIndexBuffer);
   if ((dirty_ & ~ignored) != 0 || !rendering_ || HasPendingBarriers()) return CommitSlow(indexed);
-  if ((dirty_ & kConstants) && !BindConstantsHot(dev_->Cmd())) return false;
+  if ((dirty_ & kConstants) && !BindConstantsHot(cmd_)) return false;
   dirty_ &= indexed ? 0u : uint32_t(kIndexBuffer);
   return true;
 }
@@ -212,24 +256,17 @@ inline bool ContextImpl::Commit(bool indexed) {
 // Same descriptor set and CB bindings as the last BindDescriptors: only the
 // dynamic offsets change (unless a CB's ring slice moved to another chunk).
 inline bool ContextImpl::BindConstantsHot(VkCommandBuffer cmd) {
-  if (!hotLayout_) return true;
-  for (uint32_t i = 0; i < nHotCbs_; ++i) {
-    BufferImpl* b = hotCbs_[i];
+  if (!desc_.hotLayout) return true;
+  for (uint32_t i = 0; i < desc_.nHotCbs; ++i) {
+    BufferImpl* b = desc_.hotCbs[i];
     if (!b) continue;  // the dummy buffer: offset 0
     b->EnsureUploaded();
-    if (b->ring.buffer != setCbBuffers_[i]) return BindDescriptors(cmd);
-    dynOffsets_[i] = static_cast<uint32_t>(b->ring.offset);
+    if (b->ring().buffer != desc_.cbBuffers[i]) return BindDescriptors(cmd);
+    desc_.dynOffsets[i] = static_cast<uint32_t>(b->ring().offset);
   }
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, hotLayout_, 0, 1, &set_, nHotCbs_, dynOffsets_);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, desc_.hotLayout, 0, 1, &desc_.set,
+                          desc_.nHotCbs, desc_.dynOffsets);
   return true;
-}
-
-template <class T>
-inline void SetRef(T*& slot, T* value) {
-  if (slot == value) return;
-  if (value) value->AddRef();
-  if (slot) slot->Release();
-  slot = value;
 }
 
 }  // namespace d3dl::impl

@@ -1,5 +1,8 @@
 // DXGI_FORMAT <-> VkFormat table, HRESULT names and small enum conversions.
-#include "Internal.h"
+#include <cctype>
+
+#include "Formats.h"
+#include "Objects.h"
 
 namespace d3dl {
 namespace {

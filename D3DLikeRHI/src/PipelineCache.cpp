@@ -1,56 +1,68 @@
 // Program layouts (descriptor-set layout + pipeline layout derived from the
-// reflected bindings of a VS+PS pair) and graphics pipelines keyed by a
+// reflected bindings of the bound shaders) and graphics pipelines keyed by a
 // packed state key. Both are created on first use and cached.
 #include "Context.h"
 
 namespace d3dl::impl {
 
-size_t PipelineKeyHash::operator()(const PipelineKey& k) const {
-  const auto* p = reinterpret_cast<const uint64_t*>(&k);
+template <class K>
+size_t WordHash::operator()(const K& k) const {
+  static_assert(sizeof(K) % 8 == 0, "hashed as 64-bit words");
+  uint64_t words[sizeof(K) / 8];
+  std::memcpy(words, &k, sizeof(K));
   uint64_t h = 1469598103934665603ull;
-  for (size_t i = 0; i < sizeof(PipelineKey) / 8; ++i) {
-    h ^= p[i];
+  for (uint64_t w : words) {
+    h ^= w;
     h *= 1099511628211ull;
     h ^= h >> 29;
   }
   return static_cast<size_t>(h);
 }
-static_assert(sizeof(PipelineKey) % 8 == 0, "PipelineKey is hashed as 64-bit words");
+template size_t WordHash::operator()(const ShaderIds&) const;
+template size_t WordHash::operator()(const PipelineKey&) const;
 
-static uint64_t ProgramKey(uint64_t vs, uint64_t ps) { return (vs << 32) ^ ps; }
+namespace {
+ShaderIds IdsOf(const PerStage<ShaderBase*>& shaders) {
+  ShaderIds ids{};
+  for (ShaderStage s : kStages) ids.ids[StageIndex(s)] = shaders[s] ? shaders[s]->cacheId : 0;
+  return ids;
+}
 
-ProgramLayout* PipelineCache::GetProgram(VertexShaderImpl* vs, PixelShaderImpl* ps) {
-  const uint64_t key = ProgramKey(vs->uid(), ps ? ps->uid() : 0);
+// The bindings of one stage's shader, sorted into the program's slot lists.
+void AddStageBindings(const ShaderReflection& r, ShaderStage stage, ProgramLayout* prog,
+                      std::vector<VkDescriptorSetLayoutBinding>* bindings) {
+  const uint32_t base = kStageBindingStride * StageIndex(stage);
+  for (const auto& b : r.bindings) {
+    VkDescriptorSetLayoutBinding lb{};
+    lb.binding = b.binding;
+    lb.descriptorType = b.type;
+    lb.descriptorCount = 1;
+    lb.stageFlags = ToVkStage(stage);
+    bindings->push_back(lb);
+    ProgramLayout::Slot s{static_cast<uint16_t>(b.binding), stage, 0, b.image1D};
+    if (b.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC) {
+      s.slot = static_cast<uint8_t>(b.binding - base - kConstantBufferBase);
+      prog->cbs.push_back(s);
+    } else if (b.type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE) {
+      s.slot = static_cast<uint8_t>(b.binding - base - kTextureBase);
+      prog->srvs.push_back(s);
+    } else {
+      s.slot = static_cast<uint8_t>(b.binding - base - kSamplerBase);
+      prog->samplers.push_back(s);
+    }
+  }
+}
+}  // namespace
+
+ProgramLayout* PipelineCache::GetProgram(const PerStage<ShaderBase*>& shaders) {
+  const ShaderIds key = IdsOf(shaders);
   auto it = programs_.find(key);
   if (it != programs_.end()) return it->second.get();
 
   auto prog = std::make_unique<ProgramLayout>();
   std::vector<VkDescriptorSetLayoutBinding> bindings;
-  auto add = [&](const ShaderReflection& r, uint32_t stage) {
-    const uint32_t base = kStageBindingStride * stage;
-    for (const auto& b : r.bindings) {
-      VkDescriptorSetLayoutBinding lb{};
-      lb.binding = b.binding;
-      lb.descriptorType = b.type;
-      lb.descriptorCount = 1;
-      lb.stageFlags = stage == 0 ? VK_SHADER_STAGE_VERTEX_BIT : VK_SHADER_STAGE_FRAGMENT_BIT;
-      bindings.push_back(lb);
-      ProgramLayout::Slot s{static_cast<uint16_t>(b.binding), static_cast<uint8_t>(stage), 0,
-                            static_cast<uint8_t>(b.image1D)};
-      if (b.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC) {
-        s.slot = static_cast<uint8_t>(b.binding - base - kConstantBufferBase);
-        prog->cbs.push_back(s);
-      } else if (b.type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE) {
-        s.slot = static_cast<uint8_t>(b.binding - base - kTextureBase);
-        prog->srvs.push_back(s);
-      } else {
-        s.slot = static_cast<uint8_t>(b.binding - base - kSamplerBase);
-        prog->samplers.push_back(s);
-      }
-    }
-  };
-  add(vs->refl, 0);
-  if (ps) add(ps->refl, 1);
+  for (ShaderStage s : kStages)
+    if (shaders[s]) AddStageBindings(shaders[s]->refl, s, prog.get(), &bindings);
   VkDescriptorSetLayoutCreateInfo sci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   sci.bindingCount = static_cast<uint32_t>(bindings.size());
   sci.pBindings = bindings.data();
@@ -64,105 +76,110 @@ ProgramLayout* PipelineCache::GetProgram(VertexShaderImpl* vs, PixelShaderImpl* 
   }
   ProgramLayout* p = prog.get();
   programs_[key] = std::move(prog);
-  programIds_.push_back({vs->uid(), ps ? ps->uid() : 0});
   return p;
 }
 
-VkPipeline PipelineCache::GetPipeline(const PipelineKey& key, const PipelineInputs& in,
-                                      ProgramLayout* prog) {
-  auto it = pipelines_.find(key);
-  if (it != pipelines_.end()) return it->second;
-
-  VkPipelineShaderStageCreateInfo stages[2]{};
-  uint32_t nStages = 0;
-  stages[nStages] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-  stages[nStages].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[nStages].module = in.vs->module;
-  stages[nStages++].pName = in.vs->refl.entry.c_str();
-  if (in.ps) {
-    stages[nStages] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    stages[nStages].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-    stages[nStages].module = in.ps->module;
-    stages[nStages++].pName = in.ps->refl.entry.c_str();
-  }
-
-  std::vector<VkVertexInputAttributeDescription> attrs;
-  std::vector<VkVertexInputBindingDescription> binds;
+namespace {
+// Vertex attributes and bindings: every input of the vertex shader from its
+// element in the input layout; false (logged) when one has none.
+bool VertexInputs(DeviceImpl* dev, const PipelineInputs& in, std::vector<VkVertexInputAttributeDescription>* attrs,
+                  std::vector<VkVertexInputBindingDescription>* binds) {
   uint32_t slotsUsed = 0;
-  for (const auto& input : in.vs->refl.inputs) {
+  for (const auto& input : in.shaders[ShaderStage::Vertex]->refl.inputs) {
     const InputLayoutImpl::Element* el = nullptr;
     if (in.il)
       for (const auto& e : in.il->elements)
         if (e.semantic == input.semantic && e.index == input.index) el = &e;
     if (!el) {
-      dev_->Log(LogLevel::Error, "draw: the vertex shader input %s%u has no element in the bound input layout; draw skipped",
-                input.semantic.c_str(), input.index);
-      return VK_NULL_HANDLE;
+      dev->Log(LogLevel::Error, "draw: the vertex shader input %s%u has no element in the bound input layout; draw skipped",
+               input.semantic.c_str(), input.index);
+      return false;
     }
-    attrs.push_back({input.location, el->slot, el->format, el->offset});
+    attrs->push_back({input.location, el->slot, el->format, el->offset});
     if (!(slotsUsed & (1u << el->slot))) {
       slotsUsed |= 1u << el->slot;
-      binds.push_back({el->slot, 0,
-                       el->perInstance ? VK_VERTEX_INPUT_RATE_INSTANCE : VK_VERTEX_INPUT_RATE_VERTEX});
+      binds->push_back({el->slot, 0, el->perInstance ? VK_VERTEX_INPUT_RATE_INSTANCE : VK_VERTEX_INPUT_RATE_VERTEX});
     }
   }
+  return true;
+}
+
+// The fixed-function state of a pipeline, filled from a key and its objects.
+struct FixedFunction {
+  VkPipelineInputAssemblyStateCreateInfo ia{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  VkPipelineViewportStateCreateInfo vp{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  VkPipelineRasterizationStateCreateInfo rs;
+  VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  VkPipelineDepthStencilStateCreateInfo ds;
+  VkPipelineColorBlendAttachmentState att[SIMULTANEOUS_RENDER_TARGET_COUNT];
+  VkPipelineColorBlendStateCreateInfo cb{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  VkDynamicState dyn[6] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR, VK_DYNAMIC_STATE_BLEND_CONSTANTS,
+                           VK_DYNAMIC_STATE_STENCIL_REFERENCE, VK_DYNAMIC_STATE_VERTEX_INPUT_BINDING_STRIDE,
+                           VK_DYNAMIC_STATE_PRIMITIVE_TOPOLOGY};
+  VkPipelineDynamicStateCreateInfo dy{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+  VkPipelineRenderingCreateInfo ri{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+
+  FixedFunction(const PipelineKey& key, const PipelineInputs& in, bool hasVertexBuffers) : rs(in.raster->ci), ds(in.depth->ci) {
+    ia.topology = key.topologyClass == 0   ? VK_PRIMITIVE_TOPOLOGY_POINT_LIST
+                  : key.topologyClass == 1 ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST
+                                           : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    vp.viewportCount = 1;
+    vp.scissorCount = 1;
+    ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    ms.alphaToCoverageEnable = in.blend->desc.AlphaToCoverageEnable ? VK_TRUE : VK_FALSE;
+    if (key.ds == VK_FORMAT_UNDEFINED) ds.depthTestEnable = ds.depthWriteEnable = ds.stencilTestEnable = VK_FALSE;
+    for (uint32_t i = 0; i < key.numRT; ++i) {
+      att[i] = in.blend->att[i];
+      if (key.rt[i] == VK_FORMAT_UNDEFINED) att[i].colorWriteMask = 0;
+    }
+    cb.attachmentCount = key.numRT;
+    cb.pAttachments = att;
+    dy.dynamicStateCount = 6;
+    if (!hasVertexBuffers) {  // no vertex buffers: no stride state to set
+      dyn[4] = dyn[5];
+      --dy.dynamicStateCount;
+    }
+    dy.pDynamicStates = dyn;
+    ri.colorAttachmentCount = key.numRT;
+    ri.pColorAttachmentFormats = key.rt;
+    ri.depthAttachmentFormat = key.ds;
+  }
+};
+}  // namespace
+
+VkPipeline PipelineCache::GetPipeline(const PipelineKey& key, const PipelineInputs& in, ProgramLayout* prog) {
+  auto it = pipelines_.find(key);
+  if (it != pipelines_.end()) return it->second;
+  VkPipelineShaderStageCreateInfo stages[kStageCount]{};
+  uint32_t nStages = 0;
+  for (ShaderStage s : kStages) {
+    if (!in.shaders[s]) continue;
+    stages[nStages] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    stages[nStages].stage = ToVkStage(s);
+    stages[nStages].module = in.shaders[s]->module;
+    stages[nStages++].pName = in.shaders[s]->refl.entry.c_str();
+  }
+  std::vector<VkVertexInputAttributeDescription> attrs;
+  std::vector<VkVertexInputBindingDescription> binds;
+  if (!VertexInputs(dev_, in, &attrs, &binds)) return VK_NULL_HANDLE;
   VkPipelineVertexInputStateCreateInfo vi{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   vi.vertexBindingDescriptionCount = static_cast<uint32_t>(binds.size());
   vi.pVertexBindingDescriptions = binds.data();
   vi.vertexAttributeDescriptionCount = static_cast<uint32_t>(attrs.size());
   vi.pVertexAttributeDescriptions = attrs.data();
-
-  VkPipelineInputAssemblyStateCreateInfo ia{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  ia.topology = key.topologyClass == 0   ? VK_PRIMITIVE_TOPOLOGY_POINT_LIST
-                : key.topologyClass == 1 ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST
-                                         : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-  VkPipelineViewportStateCreateInfo vp{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  vp.viewportCount = 1;
-  vp.scissorCount = 1;
-  VkPipelineRasterizationStateCreateInfo rs = in.raster->ci;
-  VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-  ms.alphaToCoverageEnable = in.blend->desc.AlphaToCoverageEnable ? VK_TRUE : VK_FALSE;
-  VkPipelineDepthStencilStateCreateInfo ds = in.depth->ci;
-  if (key.ds == VK_FORMAT_UNDEFINED) {
-    ds.depthTestEnable = ds.depthWriteEnable = ds.stencilTestEnable = VK_FALSE;
-  }
-  VkPipelineColorBlendAttachmentState att[SIMULTANEOUS_RENDER_TARGET_COUNT];
-  for (uint32_t i = 0; i < key.numRT; ++i) {
-    att[i] = in.blend->att[i];
-    if (key.rt[i] == VK_FORMAT_UNDEFINED) att[i].colorWriteMask = 0;
-  }
-  VkPipelineColorBlendStateCreateInfo cb{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  cb.attachmentCount = key.numRT;
-  cb.pAttachments = att;
-  VkDynamicState dyn[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR,
-                          VK_DYNAMIC_STATE_BLEND_CONSTANTS, VK_DYNAMIC_STATE_STENCIL_REFERENCE,
-                          VK_DYNAMIC_STATE_VERTEX_INPUT_BINDING_STRIDE,
-                          VK_DYNAMIC_STATE_PRIMITIVE_TOPOLOGY};
-  VkPipelineDynamicStateCreateInfo dy{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-  dy.dynamicStateCount = sizeof(dyn) / sizeof(dyn[0]);
-  if (binds.empty()) {  // no vertex buffers: no stride state to set
-    dyn[4] = dyn[5];
-    --dy.dynamicStateCount;
-  }
-  dy.pDynamicStates = dyn;
-  VkPipelineRenderingCreateInfo ri{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-  ri.colorAttachmentCount = key.numRT;
-  ri.pColorAttachmentFormats = key.rt;
-  ri.depthAttachmentFormat = key.ds;
-
+  const FixedFunction ff(key, in, !binds.empty());
   VkGraphicsPipelineCreateInfo ci{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-  ci.pNext = &ri;
+  ci.pNext = &ff.ri;
   ci.stageCount = nStages;
   ci.pStages = stages;
   ci.pVertexInputState = &vi;
-  ci.pInputAssemblyState = &ia;
-  ci.pViewportState = &vp;
-  ci.pRasterizationState = &rs;
-  ci.pMultisampleState = &ms;
-  ci.pDepthStencilState = &ds;
-  ci.pColorBlendState = &cb;
-  ci.pDynamicState = &dy;
+  ci.pInputAssemblyState = &ff.ia;
+  ci.pViewportState = &ff.vp;
+  ci.pRasterizationState = &ff.rs;
+  ci.pMultisampleState = &ff.ms;
+  ci.pDepthStencilState = &ff.ds;
+  ci.pColorBlendState = &ff.cb;
+  ci.pDynamicState = &ff.dy;
   ci.layout = prog->layout;
   VkPipeline pipeline = VK_NULL_HANDLE;
   VkResult r = vkCreateGraphicsPipelines(dev_->vk(), VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline);
@@ -175,24 +192,20 @@ VkPipeline PipelineCache::GetPipeline(const PipelineKey& key, const PipelineInpu
   return pipeline;
 }
 
-void PipelineCache::ForgetShader(uint64_t uid) {
+void PipelineCache::ForgetShader(uint64_t cacheId) {
   for (auto it = pipelines_.begin(); it != pipelines_.end();) {
-    if (it->first.vs == uid || it->first.ps == uid) {
+    if (it->first.shaders.Uses(cacheId)) {
       dev_->Defer(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<uint64_t>(it->second));
       it = pipelines_.erase(it);
     } else {
       ++it;
     }
   }
-  for (auto it = programIds_.begin(); it != programIds_.end();) {
-    if (it->first == uid || it->second == uid) {
-      auto p = programs_.find(ProgramKey(it->first, it->second));
-      if (p != programs_.end()) {
-        dev_->Defer(VK_OBJECT_TYPE_PIPELINE_LAYOUT, reinterpret_cast<uint64_t>(p->second->layout));
-        dev_->Defer(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, reinterpret_cast<uint64_t>(p->second->setLayout));
-        programs_.erase(p);
-      }
-      it = programIds_.erase(it);
+  for (auto it = programs_.begin(); it != programs_.end();) {
+    if (it->first.Uses(cacheId)) {
+      dev_->Defer(VK_OBJECT_TYPE_PIPELINE_LAYOUT, reinterpret_cast<uint64_t>(it->second->layout));
+      dev_->Defer(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, reinterpret_cast<uint64_t>(it->second->setLayout));
+      it = programs_.erase(it);
     } else {
       ++it;
     }
@@ -207,7 +220,6 @@ void PipelineCache::Destroy() {
     vkDestroyDescriptorSetLayout(dev_->vk(), p->setLayout, nullptr);
   }
   programs_.clear();
-  programIds_.clear();
 }
 
 }  // namespace d3dl::impl

@@ -1,13 +1,14 @@
 // Sampler, blend, depth-stencil and rasterizer state objects: D3D11
 // descriptions decoded into Vulkan create-info pieces once, at creation.
+// Descriptions are checked by Validate*Desc first.
 #include <cmath>
 
 #include "Context.h"
+#include "Validate.h"
 
 namespace d3dl::impl {
-namespace {
 
-bool ToAddress(TEXTURE_ADDRESS_MODE m, VkSamplerAddressMode* out) {
+bool ToVkAddressMode(TEXTURE_ADDRESS_MODE m, VkSamplerAddressMode* out) {
   switch (m) {
     case TEXTURE_ADDRESS_WRAP: *out = VK_SAMPLER_ADDRESS_MODE_REPEAT; return true;
     case TEXTURE_ADDRESS_MIRROR: *out = VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT; return true;
@@ -18,7 +19,7 @@ bool ToAddress(TEXTURE_ADDRESS_MODE m, VkSamplerAddressMode* out) {
   return false;
 }
 
-VkBlendFactor ToBlend(BLEND b) {
+VkBlendFactor ToVkBlendFactor(BLEND b) {
   switch (b) {
     case BLEND_ZERO: return VK_BLEND_FACTOR_ZERO;
     case BLEND_ONE: return VK_BLEND_FACTOR_ONE;
@@ -36,6 +37,8 @@ VkBlendFactor ToBlend(BLEND b) {
   }
   return VK_BLEND_FACTOR_MAX_ENUM;
 }
+
+namespace {
 // Alpha channel: colour factors become their alpha forms (as D3D does).
 VkBlendFactor ToBlendAlpha(BLEND b) {
   switch (b) {
@@ -45,7 +48,7 @@ VkBlendFactor ToBlendAlpha(BLEND b) {
     case BLEND_INV_DEST_COLOR: return VK_BLEND_FACTOR_ONE_MINUS_DST_ALPHA;
     case BLEND_BLEND_FACTOR: return VK_BLEND_FACTOR_CONSTANT_ALPHA;
     case BLEND_INV_BLEND_FACTOR: return VK_BLEND_FACTOR_ONE_MINUS_CONSTANT_ALPHA;
-    default: return ToBlend(b);
+    default: return ToVkBlendFactor(b);
   }
 }
 VkBlendOp ToBlendOp(BLEND_OP o) {
@@ -71,10 +74,69 @@ VkStencilOp ToStencilOp(STENCIL_OP o) {
   }
   return VK_STENCIL_OP_KEEP;
 }
-bool ValidCompare(COMPARISON_FUNC f) { return f >= COMPARISON_NEVER && f <= COMPARISON_ALWAYS; }
-bool ValidBlend(BLEND b) { return ToBlend(b) != VK_BLEND_FACTOR_MAX_ENUM; }
-bool ValidBlendOp(BLEND_OP o) { return o >= BLEND_OP_ADD && o <= BLEND_OP_MAX; }
-bool ValidStencilOp(STENCIL_OP o) { return o >= STENCIL_OP_KEEP && o <= STENCIL_OP_DECR; }
+
+// Vulkan has three fixed border colours (without custom border colours):
+// the nearest one, with a warning when it is none of them and used.
+VkBorderColor ToBorderColor(DeviceImpl& dev, const SAMPLER_DESC& d) {
+  const float* c = d.BorderColor;
+  if (c[0] == 0 && c[1] == 0 && c[2] == 0 && c[3] == 0) return VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
+  if (c[0] == 0 && c[1] == 0 && c[2] == 0 && c[3] == 1) return VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK;
+  if (c[0] == 1 && c[1] == 1 && c[2] == 1 && c[3] == 1) return VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
+  const float lum = (c[0] + c[1] + c[2]) / 3.0f;
+  const VkBorderColor nearest = c[3] < 0.5f ? VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK
+                                : lum < 0.5f ? VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK
+                                             : VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
+  const bool border = d.AddressU == TEXTURE_ADDRESS_BORDER || d.AddressV == TEXTURE_ADDRESS_BORDER ||
+                      d.AddressW == TEXTURE_ADDRESS_BORDER;
+  if (border)
+    dev.Log(LogLevel::Warning, "CreateSamplerState: BorderColor (%g, %g, %g, %g) has no Vulkan equivalent; using %s",
+            c[0], c[1], c[2], c[3],
+            nearest == VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK ? "transparent black"
+            : nearest == VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK    ? "opaque black"
+                                                               : "opaque white");
+  return nearest;
+}
+
+// Filter, address modes and LOD of a validated description.
+void FillSampler(DeviceImpl& dev, const SAMPLER_DESC& d, VkSamplerCreateInfo* ci) {
+  const uint32_t f = d.Filter;
+  ci->minFilter = (f & 0x10) ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  ci->magFilter = (f & 0x04) ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  ci->mipmapMode = (f & 0x01) ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  ToVkAddressMode(d.AddressU, &ci->addressModeU);
+  ToVkAddressMode(d.AddressV, &ci->addressModeV);
+  ToVkAddressMode(d.AddressW, &ci->addressModeW);
+  if (!dev.features().mirrorOnce) {
+    for (VkSamplerAddressMode* m : {&ci->addressModeU, &ci->addressModeV, &ci->addressModeW})
+      if (*m == VK_SAMPLER_ADDRESS_MODE_MIRROR_CLAMP_TO_EDGE) {
+        dev.Log(LogLevel::Warning, "CreateSamplerState: TEXTURE_ADDRESS_MIRROR_ONCE needs samplerMirrorClampToEdge; using CLAMP");
+        *m = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+      }
+  }
+  const auto& lim = dev.props().limits;
+  ci->mipLodBias = std::clamp(d.MipLODBias, -lim.maxSamplerLodBias, lim.maxSamplerLodBias);
+  if ((f & 0x40) && dev.features().anisotropy) {
+    ci->anisotropyEnable = VK_TRUE;
+    ci->maxAnisotropy = std::min(static_cast<float>(d.MaxAnisotropy), lim.maxSamplerAnisotropy);
+  }
+  if (((f >> 7) & 3) == 1) {
+    ci->compareEnable = VK_TRUE;
+    ci->compareOp = ToVkCompare(d.ComparisonFunc);
+  }
+  ci->minLod = std::max(0.0f, d.MinLOD);
+  ci->maxLod = d.MaxLOD >= FLOAT32_MAX ? VK_LOD_CLAMP_NONE : std::max(ci->minLod, d.MaxLOD);
+}
+
+// The fixed-function state objects: a validated description decoded once.
+template <class Impl, class Desc, class Iface, class Decode>
+HRESULT MakeState(DeviceImpl* dev, HRESULT valid, const Desc* desc, Iface** out, Decode decode) {
+  if (FAILED(valid)) return valid;
+  auto* s = new Impl(dev);
+  s->desc = *desc;
+  decode(*desc, s);
+  *out = s;
+  return S_OK;
+}
 
 }  // namespace
 
@@ -82,106 +144,24 @@ SamplerImpl::~SamplerImpl() { dev_->Defer(VK_OBJECT_TYPE_SAMPLER, reinterpret_ca
 void SamplerImpl::OnDebugName() { dev_->SetName(VK_OBJECT_TYPE_SAMPLER, reinterpret_cast<uint64_t>(sampler), name_); }
 
 HRESULT DeviceImpl::CreateSamplerState(const SAMPLER_DESC* desc, SamplerState** out) {
-  const char* fn = "CreateSamplerState";
   if (out) *out = nullptr;
-  if (!desc || !out) {
-    Log(LogLevel::Error, "%s: %s is null", fn, desc ? "ppSamplerState" : "pSamplerDesc");
-    return E_INVALIDARG;
-  }
+  const HRESULT valid = ValidateSamplerDesc(*this, desc, out);
+  if (FAILED(valid)) return valid;
   const SAMPLER_DESC& d = *desc;
-  // D3D11 FILTER bits: mip (bits 0-1), mag (2-3), min (4-5), anisotropic 0x40,
-  // reduction (7-8): 0 standard, 1 comparison, 2 minimum, 3 maximum.
-  const uint32_t f = d.Filter;
-  if (f & ~0x1D5u) {
-    Log(LogLevel::Error, "%s: Filter 0x%x is not a D3D11 filter", fn, f);
-    return E_INVALIDARG;
-  }
-  const bool anisotropic = (f & 0x40) != 0;
-  const uint32_t reduction = (f >> 7) & 3;
-  if (anisotropic && (f & 0x15) != 0x15) {
-    Log(LogLevel::Error, "%s: Filter 0x%x: anisotropic filters need linear min/mag/mip bits", fn, f);
-    return E_INVALIDARG;
-  }
   VkSamplerCreateInfo ci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  ci.minFilter = (f & 0x10) ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-  ci.magFilter = (f & 0x04) ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-  ci.mipmapMode = (f & 0x01) ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  if (!ToAddress(d.AddressU, &ci.addressModeU) || !ToAddress(d.AddressV, &ci.addressModeV) ||
-      !ToAddress(d.AddressW, &ci.addressModeW)) {
-    Log(LogLevel::Error, "%s: invalid address mode (U %u, V %u, W %u)", fn, d.AddressU, d.AddressV, d.AddressW);
-    return E_INVALIDARG;
-  }
-  if (!mirrorOnce_) {
-    for (VkSamplerAddressMode* m : {&ci.addressModeU, &ci.addressModeV, &ci.addressModeW})
-      if (*m == VK_SAMPLER_ADDRESS_MODE_MIRROR_CLAMP_TO_EDGE) {
-        Log(LogLevel::Warning, "%s: TEXTURE_ADDRESS_MIRROR_ONCE needs samplerMirrorClampToEdge; using CLAMP", fn);
-        *m = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-      }
-  }
-  if (!std::isfinite(d.MipLODBias) || d.MipLODBias < -16.0f || d.MipLODBias > 15.99f) {
-    Log(LogLevel::Error, "%s: MipLODBias %g out of range [-16, 15.99]", fn, d.MipLODBias);
-    return E_INVALIDARG;
-  }
-  ci.mipLodBias = std::clamp(d.MipLODBias, -props_.limits.maxSamplerLodBias, props_.limits.maxSamplerLodBias);
-  if (anisotropic) {
-    if (d.MaxAnisotropy < 1 || d.MaxAnisotropy > 16) {
-      Log(LogLevel::Error, "%s: MaxAnisotropy %u out of range [1, 16]", fn, d.MaxAnisotropy);
-      return E_INVALIDARG;
-    }
-    if (anisotropy_) {
-      ci.anisotropyEnable = VK_TRUE;
-      ci.maxAnisotropy = std::min(static_cast<float>(d.MaxAnisotropy), props_.limits.maxSamplerAnisotropy);
-    }
-  }
-  if (reduction == 1) {
-    if (!ValidCompare(d.ComparisonFunc)) {
-      Log(LogLevel::Error, "%s: ComparisonFunc %u is invalid", fn, d.ComparisonFunc);
-      return E_INVALIDARG;
-    }
-    ci.compareEnable = VK_TRUE;
-    ci.compareOp = ToVkCompare(d.ComparisonFunc);
-  }
+  FillSampler(*this, d, &ci);
+  // Reduction bits 7-8: 2 minimum, 3 maximum.
+  const uint32_t reduction = (d.Filter >> 7) & 3;
   VkSamplerReductionModeCreateInfo red{VK_STRUCTURE_TYPE_SAMPLER_REDUCTION_MODE_CREATE_INFO};
   if (reduction >= 2) {
-    if (!minmax_) {
-      Log(LogLevel::Error, "%s: Filter 0x%x needs min/max reduction (samplerFilterMinmax), which this adapter lacks", fn, f);
-      return E_INVALIDARG;
-    }
     red.reductionMode = reduction == 2 ? VK_SAMPLER_REDUCTION_MODE_MIN : VK_SAMPLER_REDUCTION_MODE_MAX;
     ci.pNext = &red;
   }
-  // Border colour: Vulkan has three fixed ones (without custom border colours).
-  const float* c = d.BorderColor;
-  if (c[0] == 0 && c[1] == 0 && c[2] == 0 && c[3] == 0) {
-    ci.borderColor = VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK;
-  } else if (c[0] == 0 && c[1] == 0 && c[2] == 0 && c[3] == 1) {
-    ci.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK;
-  } else if (c[0] == 1 && c[1] == 1 && c[2] == 1 && c[3] == 1) {
-    ci.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
-  } else {
-    float lum = (c[0] + c[1] + c[2]) / 3.0f;
-    ci.borderColor = c[3] < 0.5f ? VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK
-                     : lum < 0.5f ? VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK
-                                  : VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
-    bool border = d.AddressU == TEXTURE_ADDRESS_BORDER || d.AddressV == TEXTURE_ADDRESS_BORDER ||
-                  d.AddressW == TEXTURE_ADDRESS_BORDER;
-    if (border)
-      Log(LogLevel::Warning, "%s: BorderColor (%g, %g, %g, %g) has no Vulkan equivalent; using %s", fn,
-          c[0], c[1], c[2], c[3],
-          ci.borderColor == VK_BORDER_COLOR_FLOAT_TRANSPARENT_BLACK ? "transparent black"
-          : ci.borderColor == VK_BORDER_COLOR_FLOAT_OPAQUE_BLACK    ? "opaque black"
-                                                                    : "opaque white");
-  }
-  if (std::isnan(d.MinLOD) || std::isnan(d.MaxLOD) || d.MinLOD > d.MaxLOD) {
-    Log(LogLevel::Error, "%s: MinLOD %g > MaxLOD %g", fn, d.MinLOD, d.MaxLOD);
-    return E_INVALIDARG;
-  }
-  ci.minLod = std::max(0.0f, d.MinLOD);
-  ci.maxLod = d.MaxLOD >= FLOAT32_MAX ? VK_LOD_CLAMP_NONE : std::max(ci.minLod, d.MaxLOD);
+  ci.borderColor = ToBorderColor(*this, d);
   auto* s = new SamplerImpl(this);
   s->desc = d;
   if (vkCreateSampler(device_, &ci, nullptr, &s->sampler) != VK_SUCCESS) {
-    Log(LogLevel::Error, "%s: vkCreateSampler failed", fn);
+    Log(LogLevel::Error, "CreateSamplerState: vkCreateSampler failed");
     s->Release();
     return E_OUTOFMEMORY;
   }
@@ -194,8 +174,8 @@ void FillBlendState(const BLEND_DESC& d, VkPipelineColorBlendAttachmentState* ou
     const RENDER_TARGET_BLEND_DESC& r = d.RenderTarget[d.IndependentBlendEnable ? i : 0];
     VkPipelineColorBlendAttachmentState& a = out[i];
     a.blendEnable = r.BlendEnable ? VK_TRUE : VK_FALSE;
-    a.srcColorBlendFactor = ToBlend(r.SrcBlend);
-    a.dstColorBlendFactor = ToBlend(r.DestBlend);
+    a.srcColorBlendFactor = ToVkBlendFactor(r.SrcBlend);
+    a.dstColorBlendFactor = ToVkBlendFactor(r.DestBlend);
     a.colorBlendOp = ToBlendOp(r.BlendOp);
     a.srcAlphaBlendFactor = ToBlendAlpha(r.SrcBlendAlpha);
     a.dstAlphaBlendFactor = ToBlendAlpha(r.DestBlendAlpha);
@@ -205,26 +185,9 @@ void FillBlendState(const BLEND_DESC& d, VkPipelineColorBlendAttachmentState* ou
 }
 
 HRESULT DeviceImpl::CreateBlendState(const BLEND_DESC* desc, BlendState** out) {
-  const char* fn = "CreateBlendState";
   if (out) *out = nullptr;
-  if (!desc || !out) {
-    Log(LogLevel::Error, "%s: %s is null", fn, desc ? "ppBlendState" : "pBlendStateDesc");
-    return E_INVALIDARG;
-  }
-  uint32_t n = desc->IndependentBlendEnable ? SIMULTANEOUS_RENDER_TARGET_COUNT : 1;
-  for (uint32_t i = 0; i < n; ++i) {
-    const auto& r = desc->RenderTarget[i];
-    if (!ValidBlend(r.SrcBlend) || !ValidBlend(r.DestBlend) || !ValidBlend(r.SrcBlendAlpha) ||
-        !ValidBlend(r.DestBlendAlpha) || !ValidBlendOp(r.BlendOp) || !ValidBlendOp(r.BlendOpAlpha)) {
-      Log(LogLevel::Error, "%s: RenderTarget[%u] has an invalid blend factor or op", fn, i);
-      return E_INVALIDARG;
-    }
-  }
-  auto* s = new BlendImpl(this);
-  s->desc = *desc;
-  FillBlendState(*desc, s->att);
-  *out = s;
-  return S_OK;
+  return MakeState<BlendImpl>(this, ValidateBlendDesc(*this, desc, out), desc, out,
+                              [](const BLEND_DESC& d, BlendImpl* s) { FillBlendState(d, s->att); });
 }
 
 void FillDepthState(const DEPTH_STENCIL_DESC& d, VkPipelineDepthStencilStateCreateInfo* ci) {
@@ -248,26 +211,9 @@ void FillDepthState(const DEPTH_STENCIL_DESC& d, VkPipelineDepthStencilStateCrea
 }
 
 HRESULT DeviceImpl::CreateDepthStencilState(const DEPTH_STENCIL_DESC* desc, DepthStencilState** out) {
-  const char* fn = "CreateDepthStencilState";
   if (out) *out = nullptr;
-  if (!desc || !out) {
-    Log(LogLevel::Error, "%s: %s is null", fn, desc ? "ppDepthStencilState" : "pDepthStencilDesc");
-    return E_INVALIDARG;
-  }
-  const auto& d = *desc;
-  if (!ValidCompare(d.DepthFunc) || d.DepthWriteMask > DEPTH_WRITE_MASK_ALL ||
-      !ValidCompare(d.FrontFace.StencilFunc) || !ValidCompare(d.BackFace.StencilFunc) ||
-      !ValidStencilOp(d.FrontFace.StencilFailOp) || !ValidStencilOp(d.FrontFace.StencilPassOp) ||
-      !ValidStencilOp(d.FrontFace.StencilDepthFailOp) || !ValidStencilOp(d.BackFace.StencilFailOp) ||
-      !ValidStencilOp(d.BackFace.StencilPassOp) || !ValidStencilOp(d.BackFace.StencilDepthFailOp)) {
-    Log(LogLevel::Error, "%s: invalid DepthFunc %u / DepthWriteMask %u / stencil ops", fn, d.DepthFunc, d.DepthWriteMask);
-    return E_INVALIDARG;
-  }
-  auto* s = new DepthStencilImpl(this);
-  s->desc = d;
-  FillDepthState(d, &s->ci);
-  *out = s;
-  return S_OK;
+  return MakeState<DepthStencilImpl>(this, ValidateDepthStencilDesc(*this, desc, out), desc, out,
+                                     [](const DEPTH_STENCIL_DESC& d, DepthStencilImpl* s) { FillDepthState(d, &s->ci); });
 }
 
 void FillRasterState(const RASTERIZER_DESC& d, bool depthClamp, VkPipelineRasterizationStateCreateInfo* ci) {
@@ -288,30 +234,11 @@ void FillRasterState(const RASTERIZER_DESC& d, bool depthClamp, VkPipelineRaster
 }
 
 HRESULT DeviceImpl::CreateRasterizerState(const RASTERIZER_DESC* desc, RasterizerState** out) {
-  const char* fn = "CreateRasterizerState";
   if (out) *out = nullptr;
-  if (!desc || !out) {
-    Log(LogLevel::Error, "%s: %s is null", fn, desc ? "ppRasterizerState" : "pRasterizerDesc");
-    return E_INVALIDARG;
-  }
-  const auto& d = *desc;
-  if (d.FillMode != FILL_SOLID && d.FillMode != FILL_WIREFRAME) {
-    Log(LogLevel::Error, "%s: FillMode %u is invalid", fn, d.FillMode);
-    return E_INVALIDARG;
-  }
-  if (d.CullMode < CULL_NONE || d.CullMode > CULL_BACK) {
-    Log(LogLevel::Error, "%s: CullMode %u is invalid", fn, d.CullMode);
-    return E_INVALIDARG;
-  }
-  if (d.FillMode == FILL_WIREFRAME && !fillNonSolid_) {
-    Log(LogLevel::Error, "%s: FILL_WIREFRAME needs fillModeNonSolid", fn);
-    return DXGI_ERROR_UNSUPPORTED;
-  }
-  auto* s = new RasterizerImpl(this);
-  s->desc = d;
-  FillRasterState(d, depthClamp_, &s->ci);
-  *out = s;
-  return S_OK;
+  const bool depthClamp = features_.depthClamp;
+  return MakeState<RasterizerImpl>(
+      this, ValidateRasterizerDesc(*this, desc, out), desc, out,
+      [depthClamp](const RASTERIZER_DESC& d, RasterizerImpl* s) { FillRasterState(d, depthClamp, &s->ci); });
 }
 
 }  // namespace d3dl::impl

@@ -1,6 +1,8 @@
 // Headless swap chain: N offscreen images behind one back-buffer texture;
 // Present submits the frame and rotates to the next image.
 #include "Context.h"
+#include "SwapChain.h"
+#include "Validate.h"
 
 namespace d3dl::impl {
 
@@ -34,14 +36,8 @@ class SwapChainHeadless final : public Object<SwapChain>, public SwapChainImplBa
   }
 
   HRESULT Build(const SWAP_CHAIN_DESC& d) {
-    if (d.Width == 0 || d.Height == 0 || d.BufferCount == 0 || d.BufferCount > 16) {
-      dev_->Log(LogLevel::Error, "CreateHeadlessSwapChain: size %ux%u / BufferCount %u invalid (a headless swap chain needs an explicit size, 1..16 buffers)", d.Width, d.Height, d.BufferCount);
-      return E_INVALIDARG;
-    }
-    if (!dev_->CheckFormatSupport(d.Format, BIND_RENDER_TARGET | BIND_SHADER_RESOURCE)) {
-      dev_->Log(LogLevel::Error, "CreateHeadlessSwapChain: Format %s cannot be a render target", FormatName(d.Format));
-      return E_INVALIDARG;
-    }
+    const HRESULT valid = ValidateHeadlessSwapChain(*dev_, d);
+    if (FAILED(valid)) return valid;
     Texture2DImpl* p = CreateBackBufferProxy(dev_, d.Width, d.Height, d.Format, d.BufferCount, this);
     if (!p) return E_OUTOFMEMORY;
     if (proxy_) proxy_->Release();
@@ -51,7 +47,7 @@ class SwapChainHeadless final : public Object<SwapChain>, public SwapChainImplBa
   }
 
   HRESULT Present(UINT, UINT) override {
-    dev_->SubmitFrame();
+    if (ContextImpl* ctx = dev_->context()) ctx->SubmitFrame();
     proxy_->core.current = (proxy_->core.current + 1) % static_cast<uint32_t>(proxy_->core.images.size());
     return S_OK;
   }
@@ -89,10 +85,7 @@ class SwapChainHeadless final : public Object<SwapChain>, public SwapChainImplBa
 
 HRESULT DeviceImpl::CreateHeadlessSwapChain(const SWAP_CHAIN_DESC* desc, SwapChain** out) {
   if (out) *out = nullptr;
-  if (!desc || !out) {
-    Log(LogLevel::Error, "CreateHeadlessSwapChain: %s is null", desc ? "ppSwapChain" : "pDesc");
-    return E_INVALIDARG;
-  }
+  if (!ValidatePointers(*this, "CreateHeadlessSwapChain", desc, "pDesc", out, "ppSwapChain")) return E_INVALIDARG;
   auto* s = new SwapChainHeadless(this);
   HRESULT hr = s->Build(*desc);
   if (FAILED(hr)) {

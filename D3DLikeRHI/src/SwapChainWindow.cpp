@@ -5,6 +5,7 @@
 #include <GLFW/glfw3.h>
 
 #include "Context.h"
+#include "SwapChain.h"
 
 namespace d3dl::impl {
 
@@ -23,7 +24,7 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
     window_ = window;
     desc_ = d;
     if (desc_.BufferCount == 0) desc_.BufferCount = 2;
-    if (!dev_->hasSwapchain()) {
+    if (!dev_->features().swapchain) {
       dev_->Log(LogLevel::Error, "CreateSwapChainForWindow: the adapter has no VK_KHR_swapchain");
       return DXGI_ERROR_UNSUPPORTED;
     }
@@ -52,22 +53,20 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
     }
     ContextImpl* ctx = dev_->context();
     if (!acquired_) {
-      dev_->SubmitFrame();
+      ctx->SubmitFrame();
       RebuildIfNeeded();
       Acquire();
       return DXGI_STATUS_OCCLUDED;
     }
-    ctx->EndRendering();
-    ctx->UseTexture(&proxy_->core, 0, 1, 0, 1, usage::Present);
     VkSemaphore done = renderDone_[imageIndex_];
-    dev_->SubmitFrame({}, {done});
+    ctx->SubmitFrame(&proxy_->core, done);
     VkPresentInfoKHR pi{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
     pi.waitSemaphoreCount = 1;
     pi.pWaitSemaphores = &done;
     pi.swapchainCount = 1;
     pi.pSwapchains = &swapchain_;
     pi.pImageIndices = &imageIndex_;
-    VkResult r = vkQueuePresentKHR(dev_->queue(), &pi);
+    VkResult r = vkQueuePresentKHR(dev_->queue().vk(), &pi);
     acquired_ = false;
     if (r == VK_ERROR_OUT_OF_DATE_KHR || r == VK_SUBOPTIMAL_KHR) needRebuild_ = true;
     else if (r != VK_SUCCESS) dev_->Log(LogLevel::Error, "vkQueuePresentKHR failed (VkResult %d)", r);
@@ -85,11 +84,9 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
   }
 
   HRESULT ResizeBuffers(UINT count, UINT w, UINT h, DXGI_FORMAT format, UINT) override {
-    if (proxy_ && proxy_->RefCount() > 1 + proxy_->core.registeredViews.size() * 0) {
-      if (proxy_->RefCount() > 1) {
-        dev_->Log(LogLevel::Error, "ResizeBuffers: release every reference to the back buffer (and its views) first");
-        return E_INVALIDARG;
-      }
+    if (proxy_ && proxy_->RefCount() > 1) {
+      dev_->Log(LogLevel::Error, "ResizeBuffers: release every reference to the back buffer (and its views) first");
+      return E_INVALIDARG;
     }
     if (count) desc_.BufferCount = count;
     desc_.Width = w;
@@ -98,8 +95,7 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
       desc_.Format = format;
       if (!ChooseFormat()) return E_INVALIDARG;
     }
-    dev_->context()->EndRendering();
-    dev_->SubmitFrame();  // the acquire wait (if any) is consumed
+    dev_->context()->SubmitFrame();  // the acquire wait (if any) is consumed
     vkDeviceWaitIdle(dev_->vk());
     acquired_ = false;
     HRESULT hr = Build();
@@ -155,34 +151,53 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
       h = caps.currentExtent.height;
     }
     occluded_ = w == 0 || h == 0;
-    if (occluded_) {
-      // Minimised: keep (or make) only the stand-in image; no 0-size swap chain.
-      if (!proxy_) {
-        proxy_ = CreateBackBufferProxy(dev_, std::max(1u, desc_.Width ? desc_.Width : 1), std::max(1u, desc_.Height ? desc_.Height : 1),
-                                       actualFormat_, 1, this);
-        if (!proxy_) return E_OUTOFMEMORY;
-      }
-      proxy_->core.current = static_cast<uint32_t>(proxy_->core.images.size() - 1);
-      needRebuild_ = true;
-      return S_OK;
-    }
+    if (occluded_) return BuildStandInOnly();
     w = std::clamp(w, caps.minImageExtent.width, caps.maxImageExtent.width);
     h = std::clamp(h, caps.minImageExtent.height, caps.maxImageExtent.height);
-    uint32_t count = std::max(caps.minImageCount, desc_.BufferCount);
-    if (caps.maxImageCount) count = std::min(count, caps.maxImageCount);
+    HRESULT hr = CreateSwapchain(caps, w, h);
+    if (FAILED(hr)) return hr;
+    uint32_t n = 0;
+    vkGetSwapchainImagesKHR(dev_->vk(), swapchain_, &n, nullptr);
+    std::vector<VkImage> images(n);
+    vkGetSwapchainImagesKHR(dev_->vk(), swapchain_, &n, images.data());
+    hr = WrapImages(images, w, h);
+    if (FAILED(hr)) return hr;
+    for (auto s : renderDone_) dev_->Defer(VK_OBJECT_TYPE_SEMAPHORE, reinterpret_cast<uint64_t>(s));
+    renderDone_.assign(n, VK_NULL_HANDLE);
+    VkSemaphoreCreateInfo sci{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+    for (auto& s : renderDone_) vkCreateSemaphore(dev_->vk(), &sci, nullptr, &s);
+    needRebuild_ = false;
+    return S_OK;
+  }
 
+  // Minimised: keep (or make) only the stand-in image; no 0-size swap chain.
+  HRESULT BuildStandInOnly() {
+    if (!proxy_) {
+      proxy_ = CreateBackBufferProxy(dev_, std::max(1u, desc_.Width ? desc_.Width : 1),
+                                     std::max(1u, desc_.Height ? desc_.Height : 1), actualFormat_, 1, this);
+      if (!proxy_) return E_OUTOFMEMORY;
+    }
+    proxy_->core.current = static_cast<uint32_t>(proxy_->core.images.size() - 1);
+    needRebuild_ = true;
+    return S_OK;
+  }
+
+  // FIFO for vsync; MAILBOX, else IMMEDIATE, else FIFO without.
+  VkPresentModeKHR ChoosePresentMode() const {
     uint32_t pn = 0;
     vkGetPhysicalDeviceSurfacePresentModesKHR(dev_->phys(), surface_, &pn, nullptr);
     std::vector<VkPresentModeKHR> modes(pn);
     vkGetPhysicalDeviceSurfacePresentModesKHR(dev_->phys(), surface_, &pn, modes.data());
-    VkPresentModeKHR mode = VK_PRESENT_MODE_FIFO_KHR;
-    if (syncInterval_ == 0) {
-      for (auto m : {VK_PRESENT_MODE_MAILBOX_KHR, VK_PRESENT_MODE_IMMEDIATE_KHR})
-        if (mode == VK_PRESENT_MODE_FIFO_KHR && std::find(modes.begin(), modes.end(), m) != modes.end()) mode = m;
-    }
-    VkImageUsageFlags usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
-                              (caps.supportedUsageFlags & (VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT |
-                                                           VK_IMAGE_USAGE_SAMPLED_BIT));
+    if (syncInterval_ != 0) return VK_PRESENT_MODE_FIFO_KHR;
+    for (auto m : {VK_PRESENT_MODE_MAILBOX_KHR, VK_PRESENT_MODE_IMMEDIATE_KHR})
+      if (std::find(modes.begin(), modes.end(), m) != modes.end()) return m;
+    return VK_PRESENT_MODE_FIFO_KHR;
+  }
+
+  // Replaces swapchain_ (the old one is retired once the device is idle).
+  HRESULT CreateSwapchain(const VkSurfaceCapabilitiesKHR& caps, uint32_t w, uint32_t h) {
+    uint32_t count = std::max(caps.minImageCount, desc_.BufferCount);
+    if (caps.maxImageCount) count = std::min(count, caps.maxImageCount);
     VkSwapchainCreateInfoKHR ci{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
     ci.surface = surface_;
     ci.minImageCount = count;
@@ -190,13 +205,15 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
     ci.imageColorSpace = VK_COLOR_SPACE_SRGB_NONLINEAR_KHR;
     ci.imageExtent = {w, h};
     ci.imageArrayLayers = 1;
-    ci.imageUsage = usage;
+    ci.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT |
+                    (caps.supportedUsageFlags &
+                     (VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT));
     ci.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
     ci.preTransform = caps.currentTransform;
     ci.compositeAlpha = (caps.supportedCompositeAlpha & VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR)
                             ? VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR
                             : VkCompositeAlphaFlagBitsKHR(caps.supportedCompositeAlpha & -caps.supportedCompositeAlpha);
-    ci.presentMode = mode;
+    ci.presentMode = ChoosePresentMode();
     ci.clipped = VK_TRUE;
     ci.oldSwapchain = swapchain_;
     VkSwapchainKHR sc;
@@ -208,13 +225,12 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
     vkDeviceWaitIdle(dev_->vk());
     if (swapchain_) vkDestroySwapchainKHR(dev_->vk(), swapchain_, nullptr);
     swapchain_ = sc;
-    uint32_t n = 0;
-    vkGetSwapchainImagesKHR(dev_->vk(), sc, &n, nullptr);
-    std::vector<VkImage> images(n);
-    vkGetSwapchainImagesKHR(dev_->vk(), sc, &n, images.data());
+    return S_OK;
+  }
 
-    // The back-buffer texture keeps its identity (the application's views stay
-    // valid); its images are replaced: the swap-chain images + one stand-in.
+  // The back-buffer texture keeps its identity (the application's views stay
+  // valid); its images are replaced: the swap-chain images + one stand-in.
+  HRESULT WrapImages(const std::vector<VkImage>& images, uint32_t w, uint32_t h) {
     if (!proxy_) {
       proxy_ = CreateBackBufferProxy(dev_, w, h, actualFormat_, 1, this);
       if (!proxy_) return E_OUTOFMEMORY;
@@ -240,13 +256,8 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
       c.images.push_back(ti);
     }
     c.images.push_back(standIn);
-    c.current = n;
+    c.current = static_cast<uint32_t>(images.size());
     for (ViewCore* v : c.registeredViews) RebuildViews(dev_, *v);
-    for (auto s : renderDone_) dev_->Defer(VK_OBJECT_TYPE_SEMAPHORE, reinterpret_cast<uint64_t>(s));
-    renderDone_.assign(n, VK_NULL_HANDLE);
-    VkSemaphoreCreateInfo sci{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
-    for (auto& s : renderDone_) vkCreateSemaphore(dev_->vk(), &sci, nullptr, &s);
-    needRebuild_ = false;
     return S_OK;
   }
 
@@ -267,7 +278,7 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
     TextureCore& c = proxy_->core;
     c.current = static_cast<uint32_t>(c.images.size() - 1);  // stand-in
     if (occluded_ || !swapchain_ || acquired_) return;
-    VkSemaphore sem = dev_->Frame().acquireSemaphore;
+    VkSemaphore sem = dev_->queue().AcquireSemaphore();
     uint32_t idx = 0;
     VkResult r = vkAcquireNextImageKHR(dev_->vk(), swapchain_, UINT64_MAX, sem, VK_NULL_HANDLE, &idx);
     if (r == VK_ERROR_OUT_OF_DATE_KHR) {
@@ -279,7 +290,7 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
       return;
     }
     if (r == VK_SUBOPTIMAL_KHR) needRebuild_ = true;
-    dev_->AddPendingWait(sem);
+    dev_->queue().AddPendingWait(sem);
     imageIndex_ = idx;
     acquired_ = true;
     c.current = idx;

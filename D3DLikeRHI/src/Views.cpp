@@ -1,11 +1,10 @@
 // Shader-resource, render-target and depth-stencil views: VkImageViews (one
-// per image of the texture; swap-chain back buffers have several).
+// per image of the texture; swap-chain back buffers have several). The
+// arguments are checked by ValidateViewResource & co. first.
 #include "Context.h"
+#include "Validate.h"
 
 namespace d3dl::impl {
-namespace {
-
-}  // namespace
 
 bool RebuildViews(DeviceImpl* dev, ViewCore& v) {
   for (VkImageView view : v.views) dev->Defer(VK_OBJECT_TYPE_IMAGE_VIEW, reinterpret_cast<uint64_t>(view));
@@ -26,81 +25,6 @@ bool RebuildViews(DeviceImpl* dev, ViewCore& v) {
   }
   return true;
 }
-
-namespace {
-
-// Common checks; fills v.tex, v.resource (no reference yet) and the format.
-HRESULT Prepare(DeviceImpl* dev, const char* fn, Resource* r, DXGI_FORMAT requested, UINT bind,
-                const char* bindName, ViewCore& v) {
-  if (!r) {
-    dev->Log(LogLevel::Error, "%s: pResource is null", fn);
-    return E_INVALIDARG;
-  }
-  TextureCore* t = AsTexture(r);
-  if (!t) {
-    dev->Log(LogLevel::Error, "%s: the resource is a buffer; only texture views are supported", fn);
-    return E_INVALIDARG;
-  }
-  if (!(t->desc.BindFlags & bind)) {
-    dev->Log(LogLevel::Error, "%s: the texture was not created with %s (BindFlags 0x%x)", fn, bindName, t->desc.BindFlags);
-    return E_INVALIDARG;
-  }
-  v.tex = t;
-  v.aspect = t->aspect;
-  DXGI_FORMAT f = requested == DXGI_FORMAT_UNKNOWN ? t->desc.Format : requested;
-  if (t->aspect == VK_IMAGE_ASPECT_DEPTH_BIT) {
-    if (f != DXGI_FORMAT_R32_FLOAT && f != DXGI_FORMAT_D32_FLOAT && f != DXGI_FORMAT_R32_TYPELESS) {
-      dev->Log(LogLevel::Error, "%s: Format %s cannot view a 32-bit depth texture", fn, FormatName(f));
-      return E_INVALIDARG;
-    }
-    v.format = VK_FORMAT_D32_SFLOAT;
-    v.dxgiFormat = f;
-    return S_OK;
-  }
-  const FormatInfo* fi = GetFormatInfo(f);
-  if (!fi || (f == DXGI_FORMAT_R32_TYPELESS && requested == DXGI_FORMAT_UNKNOWN)) {
-    dev->Log(LogLevel::Error, "%s: Format %u (%s) cannot be used for a view", fn, f, FormatName(f));
-    return E_INVALIDARG;
-  }
-  if (fi->bytes != t->fmt->bytes || fi->bc != t->fmt->bc || fi->depth) {
-    dev->Log(LogLevel::Error, "%s: view Format %s is not compatible with texture Format %s", fn, fi->name, t->fmt->name);
-    return E_INVALIDARG;
-  }
-  v.format = fi->vk;
-  v.dxgiFormat = f;
-  return S_OK;
-}
-
-template <class V>
-HRESULT Finish(DeviceImpl* dev, const char* fn, Resource* r, V* view, ViewCore& v, auto** out) {
-  if (!RebuildViews(dev, v)) {
-    dev->Log(LogLevel::Error, "%s: vkCreateImageView failed", fn);
-    view->Release();
-    return E_INVALIDARG;
-  }
-  v.resource = r;
-  r->AddRef();
-  if (v.tex->swapChain) v.tex->registeredViews.push_back(&v);
-  *out = view;
-  return S_OK;
-}
-
-// Render-target and depth-stencil views: one mip, one layer.
-template <class V>
-HRESULT FinishMipSlice(DeviceImpl* dev, const char* fn, Resource* r, V* view, uint32_t mip, auto** out) {
-  ViewCore& v = view->v;
-  if (mip >= v.tex->desc.MipLevels) {
-    dev->Log(LogLevel::Error, "%s: MipSlice %u out of range (texture has %u mips)", fn, mip, v.tex->desc.MipLevels);
-    view->Release();
-    return E_INVALIDARG;
-  }
-  v.baseMip = mip;
-  v.mipCount = 1;
-  v.layerCount = 1;
-  return Finish(dev, fn, r, view, v, out);
-}
-
-}  // namespace
 
 template <class Iface, ViewKind Kind>
 ViewImpl<Iface, Kind>::~ViewImpl() {
@@ -123,90 +47,75 @@ template class ViewImpl<ShaderResourceView, ViewKind::SRV>;
 template class ViewImpl<RenderTargetView, ViewKind::RTV>;
 template class ViewImpl<DepthStencilView, ViewKind::DSV>;
 
-// What every Create*View starts with: the output pointer, a new view object
-// and the resource / format / bind-flag checks of Prepare. nullptr (and *hr
-// set) when any of them fails; the caller then returns *hr.
+namespace {
+
+// A view of `r` (validated) in `format` over the given mips and all layers
+// (one layer for render-target and depth-stencil views).
 template <class Impl, class Iface>
-static Impl* BeginView(DeviceImpl* dev, const char* fn, const char* outName, Resource* r,
-                       DXGI_FORMAT format, UINT bind, const char* bindName, Iface** out,
-                       HRESULT* hr) {
-  if (!out) {
-    dev->Log(LogLevel::Error, "%s: %s is null", fn, outName);
-    *hr = E_INVALIDARG;
-    return nullptr;
-  }
-  *out = nullptr;
+HRESULT MakeView(DeviceImpl* dev, const char* fn, Resource* r, const ViewFormat& format, uint32_t baseMip,
+                 uint32_t mipCount, bool oneLayer, Iface** out) {
   auto* view = new Impl(dev);
-  *hr = Prepare(dev, fn, r, format, bind, bindName, view->v);
-  if (FAILED(*hr)) {
+  ViewCore& v = view->v;
+  v.tex = AsTexture(r);
+  v.aspect = v.tex->aspect;
+  v.format = format.vk;
+  v.dxgiFormat = format.dxgi;
+  v.baseMip = baseMip;
+  v.mipCount = mipCount;
+  v.layerCount = oneLayer ? 1 : v.tex->desc.ArraySize;
+  if (!RebuildViews(dev, v)) {
+    dev->Log(LogLevel::Error, "%s: vkCreateImageView failed", fn);
     view->Release();
-    return nullptr;
+    return E_INVALIDARG;
   }
-  return view;
+  v.resource = r;
+  r->AddRef();
+  if (v.tex->swapChain) v.tex->registeredViews.push_back(&v);
+  *out = view;
+  return S_OK;
 }
+
+template <class Iface>
+DXGI_FORMAT RequestedFormat(const Iface* desc) {
+  return desc ? desc->Format : DXGI_FORMAT_UNKNOWN;
+}
+
+// Render-target and depth-stencil views: one mip, one layer.
+template <class Impl, class Desc, class Iface>
+HRESULT CreateMipSliceView(DeviceImpl* dev, const ViewKindInfo& kind, Resource* r, const Desc* desc, Iface** out) {
+  if (out) *out = nullptr;
+  ViewFormat format;
+  const UINT mip = desc ? desc->MipSlice : 0;
+  HRESULT hr = ValidateViewResource(*dev, kind, r, out, RequestedFormat(desc), &format);
+  if constexpr (std::is_same_v<Desc, DEPTH_STENCIL_VIEW_DESC>) {
+    if (SUCCEEDED(hr)) hr = ValidateDsvFormat(*dev, desc);
+  }
+  if (SUCCEEDED(hr)) hr = ValidateMipSlice(*dev, kind.fn, *AsTexture(r), mip);
+  if (FAILED(hr)) return hr;
+  return MakeView<Impl>(dev, kind.fn, r, format, mip, 1, true, out);
+}
+
+}  // namespace
 
 HRESULT DeviceImpl::CreateShaderResourceView(Resource* r, const SHADER_RESOURCE_VIEW_DESC* desc,
                                              ShaderResourceView** out) {
-  const char* fn = "CreateShaderResourceView";
-  HRESULT hr;
-  auto* view = BeginView<SRVImpl>(this, fn, "ppSRView", r, desc ? desc->Format : DXGI_FORMAT_UNKNOWN,
-                                  BIND_SHADER_RESOURCE, "BIND_SHADER_RESOURCE", out, &hr);
-  if (!view) return hr;
-  ViewCore& v = view->v;
-  const TextureCore* t = v.tex;
-  uint32_t most = 0, count = t->desc.MipLevels;
-  if (desc) {
-    SRV_DIMENSION want = t->dim == RESOURCE_DIMENSION_TEXTURE1D ? SRV_DIMENSION_TEXTURE1D
-                                                               : SRV_DIMENSION_TEXTURE2D;
-    if (desc->ViewDimension != want && desc->ViewDimension != SRV_DIMENSION_UNKNOWN) {
-      Log(LogLevel::Error, "%s: ViewDimension %u does not match the texture", fn, desc->ViewDimension);
-      view->Release();
-      return E_INVALIDARG;
-    }
-    most = desc->Texture.MostDetailedMip;
-    if (most >= t->desc.MipLevels) {
-      Log(LogLevel::Error, "%s: MostDetailedMip %u out of range (texture has %u mips)", fn, most, t->desc.MipLevels);
-      view->Release();
-      return E_INVALIDARG;
-    }
-    count = desc->Texture.MipLevels == ~0u ? t->desc.MipLevels - most : desc->Texture.MipLevels;
-    if (count == 0 || most + count > t->desc.MipLevels) {
-      Log(LogLevel::Error, "%s: MipLevels %u out of range (texture has %u mips)", fn, count, t->desc.MipLevels);
-      view->Release();
-      return E_INVALIDARG;
-    }
-  }
-  v.baseMip = most;
-  v.mipCount = count;
-  v.baseLayer = 0;
-  v.layerCount = t->desc.ArraySize;
-  return Finish(this, fn, r, view, v, out);
+  if (out) *out = nullptr;
+  ViewFormat format;
+  uint32_t baseMip, mipCount;
+  HRESULT hr = ValidateViewResource(*this, kSrvKind, r, out, RequestedFormat(desc), &format);
+  if (SUCCEEDED(hr)) hr = ValidateSrvMips(*this, *AsTexture(r), desc, &baseMip, &mipCount);
+  if (FAILED(hr)) return hr;
+  return MakeView<SRVImpl>(this, kSrvKind.fn, r, format, baseMip, mipCount, false, out);
 }
 
 HRESULT DeviceImpl::CreateRenderTargetView(Resource* r, const RENDER_TARGET_VIEW_DESC* desc,
                                            RenderTargetView** out) {
-  const char* fn = "CreateRenderTargetView";
-  HRESULT hr;
-  auto* view = BeginView<RTVImpl>(this, fn, "ppRTView", r, desc ? desc->Format : DXGI_FORMAT_UNKNOWN,
-                                  BIND_RENDER_TARGET, "BIND_RENDER_TARGET", out, &hr);
-  if (!view) return hr;
-  return FinishMipSlice(this, fn, r, view, desc ? desc->MipSlice : 0, out);
+  return CreateMipSliceView<RTVImpl>(this, kRtvKind, r, desc, out);
 }
 
 HRESULT DeviceImpl::CreateDepthStencilView(Resource* r, const DEPTH_STENCIL_VIEW_DESC* desc,
                                            DepthStencilView** out) {
-  const char* fn = "CreateDepthStencilView";
-  HRESULT hr;
-  auto* view = BeginView<DSVImpl>(this, fn, "ppDepthStencilView", r,
-                                  desc ? desc->Format : DXGI_FORMAT_UNKNOWN, BIND_DEPTH_STENCIL,
-                                  "BIND_DEPTH_STENCIL", out, &hr);
-  if (!view) return hr;
-  if (desc && desc->Format != DXGI_FORMAT_UNKNOWN && desc->Format != DXGI_FORMAT_D32_FLOAT) {
-    Log(LogLevel::Error, "%s: Format %s is not a depth format", fn, FormatName(desc->Format));
-    view->Release();
-    return E_INVALIDARG;
-  }
-  return FinishMipSlice(this, fn, r, view, desc ? desc->MipSlice : 0, out);
+  return CreateMipSliceView<DSVImpl>(this, kDsvKind, r, desc, out);
 }
 
 }  // namespace d3dl::impl

@@ -12,6 +12,7 @@
 #include "DynamicResolutionRendering.h"
 #include "analysis/ImageMetrics.h"
 #include "bench/BenchReport.h"
+#include "d3dl/BlitExtension.h"
 #include "imageio/ImageFile.h"
 
 namespace drr {
@@ -230,7 +231,7 @@ class BlitFloor {
     for (int i = 0; i < frames + 1; ++i) {  // the first one warms up
       ctx_->Begin(disjoint_.Get());
       ctx_->End(begin_.Get());
-      ctx_->BlitRegion(dst.Get(), dstRect, src.Get(), srcRect, d3dl::FILTER_MIN_MAG_MIP_LINEAR);
+      d3dl::GetBlitExtension(ctx_.Get())->BlitRegion(dst.Get(), dstRect, src.Get(), srcRect, d3dl::FILTER_MIN_MAG_MIP_LINEAR);
       ctx_->End(end_.Get());
       ctx_->End(disjoint_.Get());
       ctx_->Flush();

@@ -1,12 +1,20 @@
-// DeviceContext::BlitRegion (Vulkan-backend extension: vkCmdBlitImage with the
+// BlitExtension::BlitRegion (Vulkan-backend extension: vkCmdBlitImage with the
 // RHI's layout/barrier tracking). Pixels are read back; the fixture checks
 // that synchronization validation stays silent.
 #include "RhiTest.h"
+#include "d3dl/BlitExtension.h"
 
 namespace rhitest {
 namespace {
 
-class RhiBlit : public RhiTest {};
+class RhiBlit : public RhiTest {
+ protected:
+  BlitExtension* blit() {
+    BlitExtension* b = GetBlitExtension(context());
+    EXPECT_NE(b, nullptr);
+    return b;
+  }
+};
 
 uint32_t Rgba(uint8_t r, uint8_t g, uint8_t b, uint8_t a = 255) {
   return uint32_t(r) | uint32_t(g) << 8 | uint32_t(b) << 16 | uint32_t(a) << 24;
@@ -18,7 +26,7 @@ TEST_F(RhiBlit, NearestDuplicatesTexels) {
   for (uint32_t i = 0; i < 8; ++i) texels[i] = Rgba(uint8_t(i * 30), uint8_t(255 - i * 30), uint8_t(i), 255);
   auto src = MakeTexture(4, 2, DXGI_FORMAT_R8G8B8A8_UNORM, texels.data());
   auto dst = MakeRenderTarget(8, 4);
-  context()->BlitRegion(dst.texture.Get(), RECT{0, 0, 8, 4}, src.Get(), RECT{0, 0, 4, 2},
+  blit()->BlitRegion(dst.texture.Get(), RECT{0, 0, 8, 4}, src.Get(), RECT{0, 0, 4, 2},
                         FILTER_MIN_MAG_MIP_POINT);
   auto img = ReadBack(dst.texture.Get());
   for (uint32_t y = 0; y < 4; ++y)
@@ -39,7 +47,7 @@ TEST_F(RhiBlit, LinearInterpolatesWithClampToEdge) {
   std::vector<uint32_t> texels = {Rgba(0, 0, 0), Rgba(255, 255, 255)};
   auto src = MakeTexture(2, 1, DXGI_FORMAT_R8G8B8A8_UNORM, texels.data());
   auto dst = MakeRenderTarget(4, 1);
-  context()->BlitRegion(dst.texture.Get(), RECT{0, 0, 4, 1}, src.Get(), RECT{0, 0, 2, 1},
+  blit()->BlitRegion(dst.texture.Get(), RECT{0, 0, 4, 1}, src.Get(), RECT{0, 0, 2, 1},
                         FILTER_MIN_MAG_MIP_LINEAR);
   auto img = ReadBack(dst.texture.Get());
   EXPECT_TRUE(Near(img.RGBA8(0, 0)[0], 0, 1));
@@ -47,7 +55,7 @@ TEST_F(RhiBlit, LinearInterpolatesWithClampToEdge) {
   EXPECT_TRUE(Near(img.RGBA8(2, 0)[0], 191, 2)) << int(img.RGBA8(2, 0)[0]);
   EXPECT_TRUE(Near(img.RGBA8(3, 0)[0], 255, 1));
   // The sample's point sampler (MIN_LINEAR_MAG_MIP_POINT) magnifies with points.
-  context()->BlitRegion(dst.texture.Get(), RECT{0, 0, 4, 1}, src.Get(), RECT{0, 0, 2, 1},
+  blit()->BlitRegion(dst.texture.Get(), RECT{0, 0, 4, 1}, src.Get(), RECT{0, 0, 2, 1},
                         FILTER_MIN_LINEAR_MAG_MIP_POINT);
   img = ReadBack(dst.texture.Get());
   EXPECT_EQ(img.RGBA8(1, 0)[0], 0);
@@ -64,7 +72,7 @@ TEST_F(RhiBlit, SubRegionOfRenderedTargetsLeavesTheRestAlone) {
   context()->ClearRenderTargetView(src.rtv.Get(), green);
   context()->ClearRenderTargetView(dst.rtv.Get(), red);
   Bind(dst, 16, 16);
-  context()->BlitRegion(dst.texture.Get(), RECT{4, 4, 12, 12}, src.texture.Get(), RECT{0, 0, 2, 2},
+  blit()->BlitRegion(dst.texture.Get(), RECT{4, 4, 12, 12}, src.texture.Get(), RECT{0, 0, 2, 2},
                         FILTER_MIN_MAG_MIP_LINEAR);
   // The destination is used as a render target again after the blit.
   const RECT corner{0, 0, 2, 2};
@@ -90,13 +98,13 @@ TEST_F(RhiBlit, SubRegionOfRenderedTargetsLeavesTheRestAlone) {
 TEST_F(RhiBlit, RejectsBadArguments) {
   auto a = MakeRenderTarget(4, 4);
   auto b = MakeRenderTarget(4, 4);
-  context()->BlitRegion(a.texture.Get(), RECT{0, 0, 4, 4}, a.texture.Get(), RECT{0, 0, 2, 2},
+  blit()->BlitRegion(a.texture.Get(), RECT{0, 0, 4, 4}, a.texture.Get(), RECT{0, 0, 2, 2},
                         FILTER_MIN_MAG_MIP_LINEAR);
-  context()->BlitRegion(a.texture.Get(), RECT{0, 0, 5, 4}, b.texture.Get(), RECT{0, 0, 2, 2},
+  blit()->BlitRegion(a.texture.Get(), RECT{0, 0, 5, 4}, b.texture.Get(), RECT{0, 0, 2, 2},
                         FILTER_MIN_MAG_MIP_LINEAR);
-  context()->BlitRegion(a.texture.Get(), RECT{0, 0, 4, 4}, b.texture.Get(), RECT{1, 1, 1, 2},
+  blit()->BlitRegion(a.texture.Get(), RECT{0, 0, 4, 4}, b.texture.Get(), RECT{1, 1, 1, 2},
                         FILTER_MIN_MAG_MIP_LINEAR);
-  context()->BlitRegion(nullptr, RECT{0, 0, 4, 4}, b.texture.Get(), RECT{0, 0, 2, 2},
+  blit()->BlitRegion(nullptr, RECT{0, 0, 4, 4}, b.texture.Get(), RECT{0, 0, 2, 2},
                         FILTER_MIN_MAG_MIP_LINEAR);
   EXPECT_EQ(CountMessages(LogLevel::Error, "BlitRegion"), 4u);
 }

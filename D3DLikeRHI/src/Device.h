@@ -1,0 +1,171 @@
+// The device (VkDevice.cpp, DeviceSetup.cpp): instance, adapter, logical
+// device, memory, deferred destruction, and the factories of every object.
+#pragma once
+
+#include <memory>
+
+#include "PipelineCache.h"
+#include "Queue.h"
+#include "Resources.h"
+
+namespace d3dl::impl {
+
+// Optional features and extensions found on the adapter.
+struct DeviceFeatures {
+  bool debugUtils = false, minmax = false, depthClamp = false, swapchain = false;
+  bool surface = false;  // VK_KHR_surface enabled on the instance
+  bool anisotropy = false, bc = false, fillNonSolid = false, mirrorOnce = false;
+};
+
+// Bound where the shader expects a resource but none is bound.
+struct DummyResources {
+  VkBuffer uniform = VK_NULL_HANDLE;  // zeroed; also the vertex buffer of unbound slots
+  VkDeviceSize uniformSize = 0;
+  VkImageView view2D = VK_NULL_HANDLE, view1D = VK_NULL_HANDLE;
+  VkSampler sampler = VK_NULL_HANDLE;
+};
+
+// VK_EXT_debug_utils entry points (null without the extension).
+struct DebugUtils {
+  PFN_vkCmdBeginDebugUtilsLabelEXT cmdBeginLabel = nullptr;
+  PFN_vkCmdEndDebugUtilsLabelEXT cmdEndLabel = nullptr;
+  PFN_vkSetDebugUtilsObjectNameEXT setObjectName = nullptr;
+};
+
+class DeviceImpl final : public Device {
+ public:
+  DeviceImpl();
+  ~DeviceImpl();
+  HRESULT Init(const DEVICE_CREATE_DESC& desc);
+
+  UINT AddRef() override { return ++externalRefs_; }
+  UINT Release() override;
+
+  HRESULT CreateBuffer(const BUFFER_DESC*, const SUBRESOURCE_DATA*, Buffer**) override;
+  HRESULT CreateTexture1D(const TEXTURE1D_DESC*, const SUBRESOURCE_DATA*, Texture1D**) override;
+  HRESULT CreateTexture2D(const TEXTURE2D_DESC*, const SUBRESOURCE_DATA*, Texture2D**) override;
+  HRESULT CreateShaderResourceView(Resource*, const SHADER_RESOURCE_VIEW_DESC*,
+                                   ShaderResourceView**) override;
+  HRESULT CreateRenderTargetView(Resource*, const RENDER_TARGET_VIEW_DESC*,
+                                 RenderTargetView**) override;
+  HRESULT CreateDepthStencilView(Resource*, const DEPTH_STENCIL_VIEW_DESC*,
+                                 DepthStencilView**) override;
+  HRESULT CreateSamplerState(const SAMPLER_DESC*, SamplerState**) override;
+  HRESULT CreateBlendState(const BLEND_DESC*, BlendState**) override;
+  HRESULT CreateDepthStencilState(const DEPTH_STENCIL_DESC*, DepthStencilState**) override;
+  HRESULT CreateRasterizerState(const RASTERIZER_DESC*, RasterizerState**) override;
+  HRESULT CreateVertexShader(const void*, size_t, VertexShader**) override;
+  HRESULT CreatePixelShader(const void*, size_t, PixelShader**) override;
+  HRESULT CreateInputLayout(const INPUT_ELEMENT_DESC*, UINT, const void*, size_t,
+                            InputLayout**) override;
+  HRESULT CreateQuery(const QUERY_DESC*, Query**) override;
+  HRESULT CreateSwapChainForWindow(GLFWwindow*, const SWAP_CHAIN_DESC*, SwapChain**) override;
+  HRESULT CreateHeadlessSwapChain(const SWAP_CHAIN_DESC*, SwapChain**) override;
+  void GetImmediateContext(DeviceContext** context) override;
+  void GetAdapterDesc(ADAPTER_DESC* desc) const override {
+    if (desc) *desc = adapter_;
+  }
+  void GetStats(DEVICE_STATS* stats) const override;
+  bool CheckFormatSupport(DXGI_FORMAT format, UINT bindFlags) const override;
+  void WaitIdle() override;
+
+  // Logging
+  void Log(LogLevel level, const char* fmt, ...) __attribute__((format(printf, 3, 4)));
+  void OnValidationMessage(const char* msg);
+
+  // Memory
+  bool AllocateMemory(const VkMemoryRequirements& req, VkMemoryPropertyFlags want,
+                      VkMemoryPropertyFlags fallback, VkDeviceMemory* out);
+  bool CreateBufferRaw(VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible,
+                       VkBuffer* buf, VkDeviceMemory* mem, uint8_t** mapped);
+  void SetName(VkObjectType type, uint64_t handle, const std::string& name);
+  // A transient command pool of the graphics queue with one primary buffer.
+  void CreateCommandBuffer(VkCommandPool* pool, VkCommandBuffer* cmd);
+
+  // Deferred destruction: after the fence of the frame being recorded.
+  void Defer(VkObjectType type, uint64_t handle);
+  void DestroyNow(const Garbage& g);
+  void ChildCreated() { ++internalRefs_; }
+  void ChildDestroyed();
+
+  // The queue's frame being recorded.
+  FrameQueue& queue() { return queue_; }
+  uint64_t CurrentSerial() const { return queue_.CurrentSerial(); }
+  bool AllocateRing(VkDeviceSize size, VkDeviceSize align, RingAlloc* out) {
+    return queue_.AllocateRing(size, align, out);
+  }
+  VkCommandBuffer UploadCmd() { return queue_.UploadCmd(); }
+
+  // Accessors
+  VkDevice vk() const { return device_; }
+  VkPhysicalDevice phys() const { return phys_; }
+  VkInstance instance() const { return instance_; }
+  uint32_t queueFamily() const { return queueFamily_; }
+  ContextImpl* context() const { return context_.get(); }
+  PipelineCache& pipelines() { return pipelines_; }
+  const VkPhysicalDeviceProperties& props() const { return props_; }
+  VkDeviceSize uboAlign() const { return uboAlign_; }
+  const DeviceFeatures& features() const { return features_; }
+  const DummyResources& dummies() const { return dummies_; }
+  const DebugUtils& debugUtils() const { return debugUtils_; }
+  uint64_t NextUid() { return ++uidCounter_; }
+
+  DEVICE_STATS stats{};
+
+ private:
+  // DeviceSetup.cpp
+  bool CreateInstance(const DEVICE_CREATE_DESC& desc, ValidationMode mode);
+  void LoadDebugUtils(bool validation, const VkDebugUtilsMessengerCreateInfoEXT& mci);
+  bool PickAdapter(const DEVICE_CREATE_DESC& desc);
+  bool CreateLogicalDevice();
+  bool EnableFeatures(VkPhysicalDeviceFeatures2* enable, VkPhysicalDeviceVulkan12Features* e12,
+                      VkPhysicalDeviceVulkan13Features* e13);
+  void FillAdapterDesc(uint32_t timestampBits);
+  bool CreateDummies();
+  bool CreateDummyImage(VkImageType type, VkImage* image, VkImageView* view);
+  void ClearDummies(const VkImage images[2]);
+  void Shutdown();
+
+  std::atomic<UINT> externalRefs_{1};
+  std::atomic<UINT> internalRefs_{0};
+  bool orphaned_ = false;
+  bool shuttingDown_ = false;
+  LogCallback log_ = nullptr;
+  void* logUser_ = nullptr;
+
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  VkPhysicalDevice phys_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  uint32_t queueFamily_ = 0;
+  VkPhysicalDeviceProperties props_{};
+  VkPhysicalDeviceMemoryProperties memProps_{};
+  VkDeviceSize uboAlign_ = 256;
+  DeviceFeatures features_;
+  DebugUtils debugUtils_;
+  DummyResources dummies_;
+  std::vector<Garbage> dummyGarbage_;
+  ADAPTER_DESC adapter_{};
+  FrameQueue queue_;
+  PipelineCache pipelines_;
+  std::unique_ptr<ContextImpl> context_;
+  std::atomic<uint64_t> uidCounter_{0};
+};
+
+// Hot-path helpers, inline because they run once per draw.
+inline bool BufferImpl::NewRingSlice(VkDeviceSize align) {
+  if (!dev_->AllocateRing(desc_.ByteWidth, align, &ring_)) return false;  // writes only on success
+  ringSerial_ = dev_->CurrentSerial();
+  return true;
+}
+
+inline void BufferImpl::EnsureUploaded() {
+  if (ringSerial_ == dev_->CurrentSerial()) return;
+  RingAlloc a;
+  if (!dev_->AllocateRing(desc_.ByteWidth, dev_->uboAlign(), &a)) return;
+  std::memcpy(a.ptr, shadow_.data(), desc_.ByteWidth);
+  ring_ = a;
+  ringSerial_ = dev_->CurrentSerial();
+}
+
+}  // namespace d3dl::impl

@@ -1,0 +1,74 @@
+// Program layouts (descriptor-set + pipeline layout of a set of shaders) and
+// graphics pipelines keyed by a packed state key (PipelineCache.cpp).
+#pragma once
+
+#include <cstring>
+#include <memory>
+#include <unordered_map>
+
+#include "Shaders.h"
+#include "States.h"
+
+namespace d3dl::impl {
+
+struct ProgramLayout {
+  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  struct Slot {
+    uint16_t binding;
+    ShaderStage stage;
+    uint8_t slot;
+    bool image1D;
+  };
+  std::vector<Slot> cbs, srvs, samplers;  // sorted by binding
+};
+
+// Cache ids of the bound shader of each stage (0: none).
+struct ShaderIds {
+  uint64_t ids[kStageCount];
+  bool operator==(const ShaderIds& o) const { return std::memcmp(ids, o.ids, sizeof(ids)) == 0; }
+  bool Uses(uint64_t id) const {
+    for (uint64_t i : ids)
+      if (i == id) return true;
+    return false;
+  }
+};
+
+struct PipelineKey {
+  ShaderIds shaders;
+  uint64_t il, blend, depth, raster;
+  uint32_t topologyClass, numRT;
+  VkFormat rt[SIMULTANEOUS_RENDER_TARGET_COUNT];
+  VkFormat ds;
+  uint32_t pad;
+  bool operator==(const PipelineKey& o) const { return std::memcmp(this, &o, sizeof(*this)) == 0; }
+};
+// FNV-style hash of a key made of 64-bit words.
+struct WordHash {
+  template <class K>
+  size_t operator()(const K& k) const;
+};
+
+struct PipelineInputs {  // objects behind a key, for creation
+  PerStage<ShaderBase*> shaders;
+  InputLayoutImpl* il;
+  BlendImpl* blend;
+  DepthStencilImpl* depth;
+  RasterizerImpl* raster;
+};
+
+class PipelineCache {
+ public:
+  void Init(DeviceImpl* dev) { dev_ = dev; }
+  void Destroy();
+  ProgramLayout* GetProgram(const PerStage<ShaderBase*>& shaders);
+  VkPipeline GetPipeline(const PipelineKey& key, const PipelineInputs& in, ProgramLayout* prog);
+  void ForgetShader(uint64_t cacheId);
+
+ private:
+  DeviceImpl* dev_ = nullptr;
+  std::unordered_map<ShaderIds, std::unique_ptr<ProgramLayout>, WordHash> programs_;
+  std::unordered_map<PipelineKey, VkPipeline, WordHash> pipelines_;
+};
+
+}  // namespace d3dl::impl

@@ -1,0 +1,58 @@
+// Typed shader stages: the stages the backend binds, per-stage arrays
+// indexed by ShaderStage, and the names and Vulkan bits of each stage. A new
+// stage (hull, domain, geometry, compute) extends kStages and the switches.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include "d3dl/Bindings.h"
+
+namespace d3dl::impl {
+
+inline constexpr ShaderStage kStages[] = {ShaderStage::Vertex, ShaderStage::Pixel};
+inline constexpr uint32_t kStageCount = sizeof(kStages) / sizeof(kStages[0]);
+
+constexpr uint32_t StageIndex(ShaderStage s) { return static_cast<uint32_t>(s); }
+
+// Prefix of the stage's context methods ("VS" in VSSetShader).
+constexpr const char* StagePrefix(ShaderStage s) {
+  switch (s) {
+    case ShaderStage::Vertex: return "VS";
+    case ShaderStage::Pixel: return "PS";
+  }
+  return "?";
+}
+
+// The stage in messages ("a vertex shader").
+constexpr const char* StageName(ShaderStage s) {
+  switch (s) {
+    case ShaderStage::Vertex: return "vertex";
+    case ShaderStage::Pixel: return "pixel";
+  }
+  return "?";
+}
+
+constexpr VkShaderStageFlagBits ToVkStage(ShaderStage s) {
+  switch (s) {
+    case ShaderStage::Vertex: return VK_SHADER_STAGE_VERTEX_BIT;
+    case ShaderStage::Pixel: return VK_SHADER_STAGE_FRAGMENT_BIT;
+  }
+  return VK_SHADER_STAGE_ALL;
+}
+
+// One T per shader stage, indexed by ShaderStage.
+template <class T>
+class PerStage {
+ public:
+  T& operator[](ShaderStage s) { return items_[StageIndex(s)]; }
+  const T& operator[](ShaderStage s) const { return items_[StageIndex(s)]; }
+  T* begin() { return items_; }
+  T* end() { return items_ + kStageCount; }
+  const T* begin() const { return items_; }
+  const T* end() const { return items_ + kStageCount; }
+
+ private:
+  T items_[kStageCount]{};
+};
+
+}  // namespace d3dl::impl

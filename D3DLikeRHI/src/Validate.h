@@ -1,0 +1,97 @@
+// Argument validation of the public API, apart from the Vulkan code (like
+// sokol's _sg_validate_* or NVRHI's validation layer). Each function logs one
+// message naming the offending value, as the call would in D3D11's debug
+// layer, and returns whether the call may go on (HRESULT for factories).
+// The Vulkan-side code after it assumes valid arguments.
+// ValidateDevice.cpp: object creation. ValidateContext.cpp: context calls.
+#pragma once
+
+#include "Context.h"
+
+namespace d3dl::impl {
+
+// ---- object creation (ValidateDevice.cpp)
+// "fn: descName is null" / "fn: outName is null" when either pointer is null.
+bool ValidatePointers(DeviceImpl& dev, const char* fn, const void* desc, const char* descName,
+                      const void* out, const char* outName);
+HRESULT ValidateCreateBuffer(DeviceImpl& dev, const BUFFER_DESC* desc, const SUBRESOURCE_DATA* init,
+                             Buffer** out);
+// Also completes the description: MipLevels 0 becomes the full chain.
+HRESULT ValidateCreateTexture(DeviceImpl& dev, const char* fn, bool is1D, const SUBRESOURCE_DATA* init,
+                              TEXTURE2D_DESC* desc);
+
+// The three view kinds: their factory, output parameter and bind flag.
+struct ViewKindInfo {
+  const char* fn;
+  const char* outName;
+  UINT bind;
+  const char* bindName;
+};
+inline constexpr ViewKindInfo kSrvKind{"CreateShaderResourceView", "ppSRView", BIND_SHADER_RESOURCE,
+                                       "BIND_SHADER_RESOURCE"};
+inline constexpr ViewKindInfo kRtvKind{"CreateRenderTargetView", "ppRTView", BIND_RENDER_TARGET,
+                                       "BIND_RENDER_TARGET"};
+inline constexpr ViewKindInfo kDsvKind{"CreateDepthStencilView", "ppDepthStencilView", BIND_DEPTH_STENCIL,
+                                       "BIND_DEPTH_STENCIL"};
+// The format a view of `r` reads it as (`requested`, or the texture's own).
+struct ViewFormat {
+  VkFormat vk;
+  DXGI_FORMAT dxgi;
+};
+HRESULT ValidateViewResource(DeviceImpl& dev, const ViewKindInfo& kind, Resource* r, const void* out,
+                             DXGI_FORMAT requested, ViewFormat* format);
+// Mips of an SRV: *baseMip and *mipCount (all mips without a description).
+HRESULT ValidateSrvMips(DeviceImpl& dev, const TextureCore& t, const SHADER_RESOURCE_VIEW_DESC* desc,
+                        uint32_t* baseMip, uint32_t* mipCount);
+HRESULT ValidateDsvFormat(DeviceImpl& dev, const DEPTH_STENCIL_VIEW_DESC* desc);
+HRESULT ValidateMipSlice(DeviceImpl& dev, const char* fn, const TextureCore& t, UINT mip);
+
+HRESULT ValidateSamplerDesc(DeviceImpl& dev, const SAMPLER_DESC* desc, SamplerState** out);
+HRESULT ValidateBlendDesc(DeviceImpl& dev, const BLEND_DESC* desc, BlendState** out);
+HRESULT ValidateDepthStencilDesc(DeviceImpl& dev, const DEPTH_STENCIL_DESC* desc, DepthStencilState** out);
+HRESULT ValidateRasterizerDesc(DeviceImpl& dev, const RASTERIZER_DESC* desc, RasterizerState** out);
+HRESULT ValidateShaderBytecode(DeviceImpl& dev, const char* fn, const void* code, size_t len, const void* out);
+HRESULT ValidateCreateQuery(DeviceImpl& dev, const QUERY_DESC* desc, Query** out);
+HRESULT ValidateHeadlessSwapChain(DeviceImpl& dev, const SWAP_CHAIN_DESC& desc);
+
+// ---- context calls (ValidateContext.cpp)
+// "<stage><fn>: slots a..b out of range (0..count-1)".
+bool ValidateSlots(DeviceImpl& dev, const char* stage, const char* fn, UINT start, UINT num, UINT count);
+// The buffer to bind, or nullptr (logged) when it lacks the bind flag.
+BufferImpl* CheckedVertexBuffer(DeviceImpl& dev, Buffer* buffer, UINT slot);
+BufferImpl* CheckedConstantBuffer(DeviceImpl& dev, ShaderStage stage, Buffer* buffer, UINT slot);
+BufferImpl* CheckedIndexBuffer(DeviceImpl& dev, Buffer* buffer, DXGI_FORMAT format);
+bool ValidateViewports(DeviceImpl& dev, UINT num, const VIEWPORT* viewports);
+bool ValidateScissorRects(DeviceImpl& dev, UINT num, const RECT* rects);
+bool ValidateRenderTargets(DeviceImpl& dev, UINT num, RenderTargetView* const* rtvs);
+
+bool ValidateClearRenderTargetView(DeviceImpl& dev, RenderTargetView* rtv, const float color[4]);
+bool ValidateClearDepthStencilView(DeviceImpl& dev, DepthStencilView* dsv);
+// The render-target view to clear, or nullptr (logged).
+RTVImpl* ValidateClearView(DeviceImpl& dev, View* view, const float color[4], const RECT* rects, UINT numRects);
+
+HRESULT ValidateMap(DeviceImpl& dev, Resource* resource, UINT sub, MAP type, const MAPPED_SUBRESOURCE* mapped);
+// The region to write: [left, right) of a buffer, or a box inside a texture
+// mip. False when there is nothing to do (logged when the call is invalid;
+// an empty box is a no-op, as in D3D11).
+bool ValidateUpdateSubresource(DeviceImpl& dev, Resource* dst, UINT sub, const BOX* box, const void* data,
+                               UINT rowPitch, BOX* region);
+bool ValidateCopySubresourceRegion(DeviceImpl& dev, Resource* dst, UINT dstSub, UINT x, UINT y, Resource* src,
+                                   UINT srcSub, const BOX* box);
+bool ValidateCopyTextureRegion(DeviceImpl& dev, const TextureCore* dst, UINT dstSub, UINT x, UINT y,
+                               const TextureCore* src, UINT srcSub, const BOX* box);
+// Whole-resource checks; each subresource of a texture copy is then checked
+// with ValidateCopyTextureRegion.
+bool ValidateCopyResource(DeviceImpl& dev, Resource* dst, Resource* src);
+bool ValidateGenerateMips(DeviceImpl& dev, ShaderResourceView* srv);
+
+bool ValidateBlitRegion(DeviceImpl& dev, Texture2D* dst, const RECT& dstRect, Texture2D* src,
+                        const RECT& srcRect, FILTER filter);
+// Whether the blit filters linearly: the filter's magnification half when
+// the blit enlarges or keeps the size on both axes, else its minification half.
+bool BlitIsLinear(const RECT& dstRect, const RECT& srcRect, FILTER filter);
+
+bool ValidateBegin(DeviceImpl& dev, const QUERY_DESC& desc);
+bool ValidateGetData(DeviceImpl& dev, const QueryImpl* q, const void* data, UINT size);
+
+}  // namespace d3dl::impl

@@ -1,0 +1,456 @@
+// Validation of context calls: slot ranges and bind flags of the setters,
+// clears, Map, UpdateSubresource, copies, blits and queries (see Validate.h).
+#include <cstdlib>
+#include <cstring>
+
+#include "Validate.h"
+
+namespace d3dl::impl {
+
+bool ValidateSlots(DeviceImpl& dev, const char* stage, const char* fn, UINT start, UINT num, UINT count) {
+  if (start < count && num <= count - start) return true;
+  dev.Log(LogLevel::Error, "%s%s: slots %u..%u out of range (0..%u)", stage, fn, start, start + num, count - 1);
+  return false;
+}
+
+BufferImpl* CheckedVertexBuffer(DeviceImpl& dev, Buffer* buffer, UINT slot) {
+  auto* b = static_cast<BufferImpl*>(buffer);
+  if (!b || b->HasBindFlag(BIND_VERTEX_BUFFER)) return b;
+  dev.Log(LogLevel::Error, "IASetVertexBuffers: buffer in slot %u lacks BIND_VERTEX_BUFFER; unbound", slot);
+  return nullptr;
+}
+
+BufferImpl* CheckedConstantBuffer(DeviceImpl& dev, ShaderStage stage, Buffer* buffer, UINT slot) {
+  auto* b = static_cast<BufferImpl*>(buffer);
+  if (!b || b->IsConstantBuffer()) return b;
+  dev.Log(LogLevel::Error, "%sSetConstantBuffers: buffer in slot %u lacks BIND_CONSTANT_BUFFER; unbound",
+          StagePrefix(stage), slot);
+  return nullptr;
+}
+
+BufferImpl* CheckedIndexBuffer(DeviceImpl& dev, Buffer* buffer, DXGI_FORMAT format) {
+  auto* b = static_cast<BufferImpl*>(buffer);
+  if (b && !b->HasBindFlag(BIND_INDEX_BUFFER)) {
+    dev.Log(LogLevel::Error, "IASetIndexBuffer: buffer lacks BIND_INDEX_BUFFER; unbound");
+    return nullptr;
+  }
+  if (b && format != DXGI_FORMAT_R16_UINT && format != DXGI_FORMAT_R32_UINT) {
+    dev.Log(LogLevel::Error, "IASetIndexBuffer: Format %s is not R16_UINT or R32_UINT; unbound", FormatName(format));
+    return nullptr;
+  }
+  return b;
+}
+
+bool ValidateViewports(DeviceImpl& dev, UINT num, const VIEWPORT* viewports) {
+  if (num && !viewports) {
+    dev.Log(LogLevel::Error, "RSSetViewports: pViewports is null");
+    return false;
+  }
+  if (num > 1) dev.Log(LogLevel::Warning, "RSSetViewports: %u viewports; only the first is used", num);
+  return true;
+}
+
+bool ValidateScissorRects(DeviceImpl& dev, UINT num, const RECT* rects) {
+  if (!num || rects) return true;
+  dev.Log(LogLevel::Error, "RSSetScissorRects: pRects is null");
+  return false;
+}
+
+bool ValidateRenderTargets(DeviceImpl& dev, UINT num, RenderTargetView* const* rtvs) {
+  if (num <= SIMULTANEOUS_RENDER_TARGET_COUNT && (!num || rtvs)) return true;
+  dev.Log(LogLevel::Error, "OMSetRenderTargets: %u views (at most 8, array required)", num);
+  return false;
+}
+
+// ---------------------------------------------------------------------------
+bool ValidateClearRenderTargetView(DeviceImpl& dev, RenderTargetView* rtv, const float color[4]) {
+  if (rtv && color) return true;
+  dev.Log(LogLevel::Error, "ClearRenderTargetView: %s is null", rtv ? "ColorRGBA" : "pRenderTargetView");
+  return false;
+}
+
+bool ValidateClearDepthStencilView(DeviceImpl& dev, DepthStencilView* dsv) {
+  if (dsv) return true;
+  dev.Log(LogLevel::Error, "ClearDepthStencilView: pDepthStencilView is null");
+  return false;
+}
+
+RTVImpl* ValidateClearView(DeviceImpl& dev, View* view, const float color[4], const RECT* rects, UINT numRects) {
+  if (!view || !color || (numRects && !rects)) {
+    dev.Log(LogLevel::Error, "ClearView: %s is null", !view ? "pView" : !color ? "Color" : "pRect");
+    return nullptr;
+  }
+  auto* v = dynamic_cast<RTVImpl*>(view);
+  if (!v) dev.Log(LogLevel::Error, "ClearView: only render-target views are supported");
+  return v;
+}
+
+// ---------------------------------------------------------------------------
+// Map
+namespace {
+bool CpuAccessAllows(MAP type, UINT cpuAccess) {
+  const bool reads = type == MAP_READ || type == MAP_READ_WRITE;
+  return !(reads && !(cpuAccess & CPU_ACCESS_READ)) && !(type != MAP_READ && !(cpuAccess & CPU_ACCESS_WRITE));
+}
+
+HRESULT ValidateCpuAccess(DeviceImpl& dev, MAP type, UINT cpuAccess) {
+  if (CpuAccessAllows(type, cpuAccess)) return S_OK;
+  dev.Log(LogLevel::Error, "Map: MapType %u does not match CPUAccessFlags 0x%x", type, cpuAccess);
+  return E_INVALIDARG;
+}
+
+HRESULT ValidateMapBuffer(DeviceImpl& dev, const BufferImpl& b, UINT sub, MAP type) {
+  if (sub != 0) {
+    dev.Log(LogLevel::Error, "Map: buffers have one subresource (got %u)", sub);
+    return E_INVALIDARG;
+  }
+  switch (b.storage()) {
+    case Storage::Constants:
+    case Storage::DynamicConstants:
+      if (type != MAP_READ && type != MAP_READ_WRITE && b.storage() == Storage::DynamicConstants) return S_OK;
+      dev.Log(LogLevel::Error, "Map: a constant buffer can be mapped only with WRITE_DISCARD and USAGE_DYNAMIC");
+      return E_INVALIDARG;
+    case Storage::Ring:
+      if (type == MAP_WRITE_DISCARD || type == MAP_WRITE_NO_OVERWRITE) return S_OK;
+      dev.Log(LogLevel::Error, "Map: USAGE_DYNAMIC buffers accept WRITE_DISCARD or WRITE_NO_OVERWRITE only (got %u)", type);
+      return E_INVALIDARG;
+    case Storage::Staging: return ValidateCpuAccess(dev, type, b.desc().CPUAccessFlags);
+    case Storage::DeviceLocal: break;
+  }
+  dev.Log(LogLevel::Error, "Map: only DYNAMIC or STAGING buffers can be mapped");
+  return E_INVALIDARG;
+}
+
+HRESULT ValidateMapTexture(DeviceImpl& dev, const TextureCore* t, UINT sub, MAP type) {
+  SubIndex si;
+  if (!t || !t->DecodeSub(sub, &si)) {
+    dev.Log(LogLevel::Error, "Map: subresource %u out of range", sub);
+    return E_INVALIDARG;
+  }
+  switch (t->storage) {
+    case Storage::Staging: return ValidateCpuAccess(dev, type, t->desc.CPUAccessFlags);
+    case Storage::Ring:
+      if (type == MAP_WRITE_DISCARD) return S_OK;
+      dev.Log(LogLevel::Error, "Map: DYNAMIC textures accept WRITE_DISCARD only (got %u)", type);
+      return E_INVALIDARG;
+    default: break;
+  }
+  dev.Log(LogLevel::Error, "Map: only DYNAMIC or STAGING textures can be mapped");
+  return E_INVALIDARG;
+}
+}  // namespace
+
+HRESULT ValidateMap(DeviceImpl& dev, Resource* resource, UINT sub, MAP type, const MAPPED_SUBRESOURCE* mapped) {
+  if (!resource || !mapped) {
+    dev.Log(LogLevel::Error, "Map: %s is null", resource ? "pMappedResource" : "pResource");
+    return E_INVALIDARG;
+  }
+  if (type < MAP_READ || type > MAP_WRITE_NO_OVERWRITE) {
+    dev.Log(LogLevel::Error, "Map: invalid MapType %u", type);
+    return E_INVALIDARG;
+  }
+  if (const BufferImpl* b = AsBuffer(resource)) return ValidateMapBuffer(dev, *b, sub, type);
+  return ValidateMapTexture(dev, AsTexture(resource), sub, type);
+}
+
+// ---------------------------------------------------------------------------
+// UpdateSubresource
+namespace {
+bool ValidateUpdateBuffer(DeviceImpl& dev, const BufferImpl& b, UINT sub, const BOX* box, BOX* region) {
+  const UINT width = b.size();
+  const UINT lo = box ? box->left : 0, hi = box ? box->right : width;
+  if (sub != 0 || hi > width || lo > hi) {
+    dev.Log(LogLevel::Error, "UpdateSubresource: range [%u, %u) outside the buffer (%u bytes)", lo, hi, width);
+    return false;
+  }
+  if (lo == hi) return false;
+  const USAGE usage = b.desc().Usage;
+  if (usage == USAGE_IMMUTABLE || usage == USAGE_DYNAMIC) {
+    dev.Log(LogLevel::Error, "UpdateSubresource: buffer Usage %u cannot be updated (use Map for DYNAMIC)", usage);
+    return false;
+  }
+  *region = BOX{lo, 0, 0, hi, 1, 1};
+  return true;
+}
+
+bool ValidateUpdateTexture(DeviceImpl& dev, const TextureCore& t, UINT sub, const BOX* box, UINT rowPitch,
+                           BOX* region) {
+  SubIndex si;
+  if (!t.DecodeSub(sub, &si)) {
+    dev.Log(LogLevel::Error, "UpdateSubresource: subresource %u out of range", sub);
+    return false;
+  }
+  const uint32_t mw = t.MipWidth(si.mip), mh = t.MipHeight(si.mip);
+  const BOX b = box ? *box : BOX{0, 0, 0, mw, mh, 1};
+  if (b.right > mw || b.bottom > mh || b.left >= b.right || b.top >= b.bottom) {
+    if (box && (b.left >= b.right || b.top >= b.bottom)) return false;  // empty box: no-op, as D3D
+    dev.Log(LogLevel::Error, "UpdateSubresource: box (%u,%u)-(%u,%u) outside mip %u (%ux%u)", b.left, b.top, b.right,
+            b.bottom, si.mip, mw, mh);
+    return false;
+  }
+  if (t.fmt->bc && ((b.left % 4) || (b.top % 4))) {
+    dev.Log(LogLevel::Error, "UpdateSubresource: box of a block-compressed texture must be 4-aligned");
+    return false;
+  }
+  const uint32_t pitch = LinearLayout(*t.fmt, b.right - b.left, b.bottom - b.top).rowPitch;
+  if (rowPitch != 0 && rowPitch < pitch) {
+    dev.Log(LogLevel::Error, "UpdateSubresource: SrcRowPitch %u is smaller than a row (%u bytes)", rowPitch, pitch);
+    return false;
+  }
+  *region = b;
+  return true;
+}
+}  // namespace
+
+bool ValidateUpdateSubresource(DeviceImpl& dev, Resource* dst, UINT sub, const BOX* box, const void* data,
+                               UINT rowPitch, BOX* region) {
+  if (!dst || !data) {
+    dev.Log(LogLevel::Error, "UpdateSubresource: %s is null", dst ? "pSrcData" : "pDstResource");
+    return false;
+  }
+  if (const BufferImpl* b = AsBuffer(dst)) return ValidateUpdateBuffer(dev, *b, sub, box, region);
+  const TextureCore* t = AsTexture(dst);
+  if (!t) return false;
+  if (t->desc.Usage == USAGE_IMMUTABLE || t->desc.Usage == USAGE_DYNAMIC) {
+    dev.Log(LogLevel::Error, "UpdateSubresource: texture Usage %u cannot be updated", t->desc.Usage);
+    return false;
+  }
+  return ValidateUpdateTexture(dev, *t, sub, box, rowPitch, region);
+}
+
+// ---------------------------------------------------------------------------
+// Copies
+namespace {
+bool ValidateCopyBufferRegion(DeviceImpl& dev, const BufferImpl& dst, UINT dstX, const BufferImpl& src,
+                              const BOX* box) {
+  const UINT lo = box ? box->left : 0, hi = box ? box->right : src.size();
+  if (lo >= hi || hi > src.size() || dstX + (hi - lo) > dst.size()) {
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: buffer range [%u, %u) -> %u out of bounds", lo, hi, dstX);
+    return false;
+  }
+  const bool writable = dst.storage() == Storage::Staging ||
+                        (dst.storage() == Storage::DeviceLocal && dst.desc().Usage != USAGE_IMMUTABLE);
+  if (!writable) {
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: the destination buffer must be DEFAULT or STAGING (not a constant, dynamic or immutable buffer)");
+    return false;
+  }
+  return true;
+}
+
+bool CopyCompatible(const TextureCore& dst, const TextureCore& src) {
+  return dst.fmt->bytes == src.fmt->bytes && dst.fmt->bc == src.fmt->bc &&
+         (dst.IsStaging() || src.IsStaging() || dst.aspect == src.aspect);
+}
+}  // namespace
+
+bool ValidateCopyTextureRegion(DeviceImpl& dev, const TextureCore* dst, UINT dstSub, UINT x, UINT y,
+                               const TextureCore* src, UINT srcSub, const BOX* box) {
+  SubIndex ds, ss;
+  if (!dst->DecodeSub(dstSub, &ds) || !src->DecodeSub(srcSub, &ss)) {
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: subresource out of range (dst %u, src %u)", dstSub, srcSub);
+    return false;
+  }
+  if (!CopyCompatible(*dst, *src)) {
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: formats %s and %s are not copy-compatible", dst->fmt->name, src->fmt->name);
+    return false;
+  }
+  const uint32_t sw = src->MipWidth(ss.mip), sh = src->MipHeight(ss.mip);
+  const uint32_t dw = dst->MipWidth(ds.mip), dh = dst->MipHeight(ds.mip);
+  const BOX b = box ? *box : BOX{0, 0, 0, sw, sh, 1};
+  if (b.left >= b.right || b.top >= b.bottom || b.right > sw || b.bottom > sh || x + (b.right - b.left) > dw ||
+      y + (b.bottom - b.top) > dh) {
+    if (box && (b.left >= b.right || b.top >= b.bottom)) return false;  // empty box: no-op
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: box (%u,%u)-(%u,%u) at (%u,%u) out of bounds (src %ux%u, dst %ux%u)",
+            b.left, b.top, b.right, b.bottom, x, y, sw, sh, dw, dh);
+    return false;
+  }
+  if (dst->IsStaging() && src->IsStaging()) {
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: staging-to-staging copies are not supported");
+    return false;
+  }
+  return true;
+}
+
+bool ValidateCopySubresourceRegion(DeviceImpl& dev, Resource* dst, UINT dstSub, UINT x, UINT y, Resource* src,
+                                   UINT srcSub, const BOX* box) {
+  if (!dst || !src) {
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: %s is null", dst ? "pSrcResource" : "pDstResource");
+    return false;
+  }
+  if (dst == src && dstSub == srcSub) {
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: source and destination are the same subresource");
+    return false;
+  }
+  const BufferImpl *bd = AsBuffer(dst), *bs = AsBuffer(src);
+  if (bd && bs) {
+    if (!dstSub && !srcSub) return ValidateCopyBufferRegion(dev, *bd, x, *bs, box);
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: buffers have one subresource");
+    return false;
+  }
+  const TextureCore *td = AsTexture(dst), *ts = AsTexture(src);
+  if (!td || !ts) {
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: cannot copy between a buffer and a texture");
+    return false;
+  }
+  if (td->desc.Usage == USAGE_IMMUTABLE) {
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: the destination is IMMUTABLE");
+    return false;
+  }
+  return ValidateCopyTextureRegion(dev, td, dstSub, x, y, ts, srcSub, box);
+}
+
+bool ValidateCopyResource(DeviceImpl& dev, Resource* dst, Resource* src) {
+  if (!dst || !src || dst == src) {
+    dev.Log(LogLevel::Error, "CopyResource: %s", dst == src && dst ? "source and destination are the same" : "null resource");
+    return false;
+  }
+  const BufferImpl *bd = AsBuffer(dst), *bs = AsBuffer(src);
+  if (bd || bs) {
+    if (bd && bs && bd->size() == bs->size()) return ValidateCopyBufferRegion(dev, *bd, 0, *bs, nullptr);
+    dev.Log(LogLevel::Error, "CopyResource: buffers must have the same size");
+    return false;
+  }
+  const TextureCore *td = AsTexture(dst), *ts = AsTexture(src);
+  const TEXTURE2D_DESC &d = td->desc, &s = ts->desc;
+  if (td->dim != ts->dim || d.Width != s.Width || d.Height != s.Height || d.MipLevels != s.MipLevels ||
+      d.ArraySize != s.ArraySize) {
+    dev.Log(LogLevel::Error, "CopyResource: textures differ in size, mips or array size (%ux%u/%u vs %ux%u/%u)",
+            d.Width, d.Height, d.MipLevels, s.Width, s.Height, s.MipLevels);
+    return false;
+  }
+  if (d.Usage == USAGE_IMMUTABLE) {
+    dev.Log(LogLevel::Error, "CopyResource: the destination is IMMUTABLE");
+    return false;
+  }
+  return true;
+}
+
+bool ValidateGenerateMips(DeviceImpl& dev, ShaderResourceView* srv) {
+  if (!srv) {
+    dev.Log(LogLevel::Error, "GenerateMips: pShaderResourceView is null");
+    return false;
+  }
+  const TextureCore* t = static_cast<SRVImpl*>(srv)->v.tex;
+  if (!(t->desc.MiscFlags & RESOURCE_MISC_GENERATE_MIPS)) {
+    dev.Log(LogLevel::Error, "GenerateMips: the texture was not created with RESOURCE_MISC_GENERATE_MIPS");
+    return false;
+  }
+  VkFormatProperties fp;
+  vkGetPhysicalDeviceFormatProperties(dev.phys(), t->format, &fp);
+  const VkFormatFeatureFlags need = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT |
+                                    VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
+  if ((fp.optimalTilingFeatures & need) != need) {
+    dev.Log(LogLevel::Error, "GenerateMips: format %s cannot be blitted with linear filtering", t->fmt->name);
+    return false;
+  }
+  return true;
+}
+
+// ---------------------------------------------------------------------------
+// Blits (BlitExtension)
+namespace {
+bool InBounds(const RECT& r, uint32_t w, uint32_t h) {
+  auto in = [](int32_t v, uint32_t hi) { return v >= 0 && uint32_t(v) <= hi; };
+  return in(r.left, w) && in(r.right, w) && in(r.top, h) && in(r.bottom, h) && r.left != r.right &&
+         r.top != r.bottom;
+}
+
+bool ValidateBlitTextures(DeviceImpl& dev, const TextureCore* dst, const TextureCore* src) {
+  if (!dst || !src || dst == src) {
+    dev.Log(LogLevel::Error, "BlitRegion: source and destination must be two different textures");
+    return false;
+  }
+  if (dst->IsStaging() || src->IsStaging() || dst->aspect != VK_IMAGE_ASPECT_COLOR_BIT ||
+      src->aspect != VK_IMAGE_ASPECT_COLOR_BIT) {
+    dev.Log(LogLevel::Error, "BlitRegion: only non-staging colour textures can be blitted");
+    return false;
+  }
+  if (dst->desc.Usage == USAGE_IMMUTABLE) {
+    dev.Log(LogLevel::Error, "BlitRegion: the destination is IMMUTABLE");
+    return false;
+  }
+  return true;
+}
+
+bool ValidateBlitRects(DeviceImpl& dev, const TextureCore* dst, const RECT& dstRect, const TextureCore* src,
+                       const RECT& srcRect) {
+  const uint32_t sw = src->MipWidth(0), sh = src->MipHeight(0);
+  const uint32_t dw = dst->MipWidth(0), dh = dst->MipHeight(0);
+  if (InBounds(srcRect, sw, sh) && InBounds(dstRect, dw, dh)) return true;
+  dev.Log(LogLevel::Error,
+          "BlitRegion: rectangle out of bounds or empty (src (%d,%d)-(%d,%d) of %ux%u, dst (%d,%d)-(%d,%d) of %ux%u)",
+          srcRect.left, srcRect.top, srcRect.right, srcRect.bottom, sw, sh, dstRect.left, dstRect.top,
+          dstRect.right, dstRect.bottom, dw, dh);
+  return false;
+}
+
+bool ValidateBlitFormats(DeviceImpl& dev, const TextureCore* dst, const TextureCore* src, bool linear) {
+  VkFormatProperties sp, dp;
+  vkGetPhysicalDeviceFormatProperties(dev.phys(), src->format, &sp);
+  vkGetPhysicalDeviceFormatProperties(dev.phys(), dst->format, &dp);
+  if (!(sp.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_SRC_BIT) ||
+      !(dp.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT)) {
+    dev.Log(LogLevel::Error, "BlitRegion: %s -> %s is not blittable on this device", src->fmt->name, dst->fmt->name);
+    return false;
+  }
+  if (linear && !(sp.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT)) {
+    dev.Log(LogLevel::Error, "BlitRegion: format %s cannot be blitted with linear filtering", src->fmt->name);
+    return false;
+  }
+  // Integer formats blit only into the same kind of integer format, with
+  // point filtering (vkCmdBlitImage VUIDs 00229/00230, 00235 ... ).
+  auto isSigned = [](const TextureCore* t) { return std::strstr(t->fmt->name, "SINT") != nullptr; };
+  if (src->fmt->integer != dst->fmt->integer || (src->fmt->integer && (linear || isSigned(src) != isSigned(dst)))) {
+    dev.Log(LogLevel::Error, "BlitRegion: %s -> %s: integer formats blit only to the same kind of integer format, with point filtering",
+            src->fmt->name, dst->fmt->name);
+    return false;
+  }
+  return true;
+}
+}  // namespace
+
+bool BlitIsLinear(const RECT& dstRect, const RECT& srcRect, FILTER filter) {
+  const bool magnifies = std::abs(dstRect.right - dstRect.left) >= std::abs(srcRect.right - srcRect.left) &&
+                         std::abs(dstRect.bottom - dstRect.top) >= std::abs(srcRect.bottom - srcRect.top);
+  const uint32_t f = uint32_t(filter);
+  const bool anisotropic = (f & 0x40u) != 0;
+  return anisotropic || (magnifies ? (f & 0x04u) != 0 : (f & 0x10u) != 0);
+}
+
+bool ValidateBlitRegion(DeviceImpl& dev, Texture2D* dstTex, const RECT& dstRect, Texture2D* srcTex,
+                        const RECT& srcRect, FILTER filter) {
+  if (!dstTex || !srcTex) {
+    dev.Log(LogLevel::Error, "BlitRegion: %s is null", dstTex ? "pSrc" : "pDst");
+    return false;
+  }
+  const TextureCore* dst = AsTexture(dstTex);
+  const TextureCore* src = AsTexture(srcTex);
+  return ValidateBlitTextures(dev, dst, src) && ValidateBlitRects(dev, dst, dstRect, src, srcRect) &&
+         ValidateBlitFormats(dev, dst, src, BlitIsLinear(dstRect, srcRect, filter));
+}
+
+// ---------------------------------------------------------------------------
+// Queries
+bool ValidateBegin(DeviceImpl& dev, const QUERY_DESC& desc) {
+  if (desc.Query == QUERY_TIMESTAMP_DISJOINT) return true;
+  dev.Log(LogLevel::Warning, "Begin: query type %u has no Begin (only End)", desc.Query);
+  return false;
+}
+
+bool ValidateGetData(DeviceImpl& dev, const QueryImpl* q, const void* data, UINT size) {
+  if (!q) {
+    dev.Log(LogLevel::Error, "GetData: pAsync is null");
+    return false;
+  }
+  if (data && size != q->GetDataSize()) {
+    dev.Log(LogLevel::Error, "GetData: DataSize %u, expected %u", size, q->GetDataSize());
+    return false;
+  }
+  if (q->serial == 0) {
+    dev.Log(LogLevel::Error, "GetData: the query was never ended");
+    return false;
+  }
+  return true;
+}
+
+}  // namespace d3dl::impl

@@ -1,0 +1,439 @@
+// Validation of object creation: descriptions, initial data and the
+// resources views are made of (see Validate.h).
+#include <cmath>
+
+#include "Validate.h"
+
+namespace d3dl::impl {
+namespace {
+uint32_t FullMipCount(uint32_t w, uint32_t h) {
+  uint32_t m = 1;
+  while (w > 1 || h > 1) {
+    w = std::max(1u, w / 2);
+    h = std::max(1u, h / 2);
+    ++m;
+  }
+  return m;
+}
+bool ValidCompare(COMPARISON_FUNC f) { return f >= COMPARISON_NEVER && f <= COMPARISON_ALWAYS; }
+bool ValidBlend(BLEND b) { return ToVkBlendFactor(b) != VK_BLEND_FACTOR_MAX_ENUM; }
+bool ValidBlendOp(BLEND_OP o) { return o >= BLEND_OP_ADD && o <= BLEND_OP_MAX; }
+bool ValidStencilOp(STENCIL_OP o) { return o >= STENCIL_OP_KEEP && o <= STENCIL_OP_DECR; }
+bool ValidStencilFace(const DEPTH_STENCILOP_DESC& f) {
+  return ValidCompare(f.StencilFunc) && ValidStencilOp(f.StencilFailOp) && ValidStencilOp(f.StencilPassOp) &&
+         ValidStencilOp(f.StencilDepthFailOp);
+}
+}  // namespace
+
+bool ValidatePointers(DeviceImpl& dev, const char* fn, const void* desc, const char* descName, const void* out,
+                      const char* outName) {
+  if (desc && out) return true;
+  dev.Log(LogLevel::Error, "%s: %s is null", fn, desc ? outName : descName);
+  return false;
+}
+
+// ---------------------------------------------------------------------------
+// Buffers
+namespace {
+HRESULT ValidateBufferBinding(DeviceImpl& dev, const BUFFER_DESC& d) {
+  if (d.BindFlags & (BIND_SHADER_RESOURCE | BIND_RENDER_TARGET | BIND_DEPTH_STENCIL)) {
+    dev.Log(LogLevel::Error, "CreateBuffer: BindFlags 0x%x: buffer views are not supported", d.BindFlags);
+    return E_INVALIDARG;
+  }
+  const bool isCB = d.BindFlags & BIND_CONSTANT_BUFFER;
+  if (isCB && (d.BindFlags & ~static_cast<UINT>(BIND_CONSTANT_BUFFER))) {
+    dev.Log(LogLevel::Error, "CreateBuffer: BIND_CONSTANT_BUFFER cannot be combined with other bind flags (0x%x)", d.BindFlags);
+    return E_INVALIDARG;
+  }
+  if (isCB && (d.ByteWidth % 16 != 0 || d.ByteWidth > 65536 || d.ByteWidth > dev.props().limits.maxUniformBufferRange)) {
+    dev.Log(LogLevel::Error, "CreateBuffer: constant buffer ByteWidth %u must be a multiple of 16 and <= 65536", d.ByteWidth);
+    return E_INVALIDARG;
+  }
+  return S_OK;
+}
+
+HRESULT ValidateBufferUsage(DeviceImpl& dev, const BUFFER_DESC& d, const SUBRESOURCE_DATA* init) {
+  if (d.Usage > USAGE_STAGING) {
+    dev.Log(LogLevel::Error, "CreateBuffer: invalid Usage %u", d.Usage);
+    return E_INVALIDARG;
+  }
+  if (d.Usage == USAGE_IMMUTABLE && (!init || !init->pSysMem)) {
+    dev.Log(LogLevel::Error, "CreateBuffer: USAGE_IMMUTABLE needs initial data");
+    return E_INVALIDARG;
+  }
+  if (d.Usage == USAGE_DYNAMIC && !(d.CPUAccessFlags & CPU_ACCESS_WRITE)) {
+    dev.Log(LogLevel::Error, "CreateBuffer: USAGE_DYNAMIC needs CPU_ACCESS_WRITE");
+    return E_INVALIDARG;
+  }
+  if (d.Usage == USAGE_STAGING && (d.BindFlags || !d.CPUAccessFlags)) {
+    dev.Log(LogLevel::Error, "CreateBuffer: USAGE_STAGING needs BindFlags 0 and CPU access (BindFlags 0x%x)", d.BindFlags);
+    return E_INVALIDARG;
+  }
+  if (d.Usage != USAGE_STAGING && d.Usage != USAGE_DYNAMIC && d.CPUAccessFlags) {
+    dev.Log(LogLevel::Error, "CreateBuffer: CPUAccessFlags 0x%x need USAGE_DYNAMIC or USAGE_STAGING", d.CPUAccessFlags);
+    return E_INVALIDARG;
+  }
+  return S_OK;
+}
+}  // namespace
+
+HRESULT ValidateCreateBuffer(DeviceImpl& dev, const BUFFER_DESC* desc, const SUBRESOURCE_DATA* init, Buffer** out) {
+  if (!ValidatePointers(dev, "CreateBuffer", desc, "pDesc", out, "ppBuffer")) return E_INVALIDARG;
+  const BUFFER_DESC& d = *desc;
+  if (d.ByteWidth == 0) {
+    dev.Log(LogLevel::Error, "CreateBuffer: ByteWidth is 0");
+    return E_INVALIDARG;
+  }
+  HRESULT hr = ValidateBufferBinding(dev, d);
+  if (SUCCEEDED(hr)) hr = ValidateBufferUsage(dev, d, init);
+  if (FAILED(hr)) return hr;
+  const bool isCB = d.BindFlags & BIND_CONSTANT_BUFFER;
+  if (!isCB && d.Usage != USAGE_STAGING && !(d.BindFlags & (BIND_VERTEX_BUFFER | BIND_INDEX_BUFFER))) {
+    dev.Log(LogLevel::Error, "CreateBuffer: BindFlags 0x%x: need a vertex, index or constant buffer binding", d.BindFlags);
+    return E_INVALIDARG;
+  }
+  if (init && !init->pSysMem) {
+    dev.Log(LogLevel::Error, "CreateBuffer: pInitialData->pSysMem is null");
+    return E_INVALIDARG;
+  }
+  return S_OK;
+}
+
+// ---------------------------------------------------------------------------
+// Textures
+namespace {
+HRESULT ValidateTextureShape(DeviceImpl& dev, const char* fn, bool is1D, TEXTURE2D_DESC& d) {
+  const auto& lim = dev.props().limits;
+  const uint32_t maxDim = is1D ? lim.maxImageDimension1D : lim.maxImageDimension2D;
+  if (d.Width == 0 || d.Height == 0 || d.Width > maxDim || d.Height > maxDim) {
+    dev.Log(LogLevel::Error, "%s: size %ux%u is invalid (1..%u)", fn, d.Width, d.Height, maxDim);
+    return E_INVALIDARG;
+  }
+  if (d.ArraySize == 0 || d.ArraySize > lim.maxImageArrayLayers) {
+    dev.Log(LogLevel::Error, "%s: ArraySize %u is invalid", fn, d.ArraySize);
+    return E_INVALIDARG;
+  }
+  if (d.SampleDesc.Count != 1) {
+    dev.Log(LogLevel::Error, "%s: SampleDesc.Count %u: multisampling is not supported", fn, d.SampleDesc.Count);
+    return E_INVALIDARG;
+  }
+  const FormatInfo* f = GetFormatInfo(d.Format);
+  if (!f) {
+    dev.Log(LogLevel::Error, "%s: Format %u (%s) is not supported", fn, d.Format, FormatName(d.Format));
+    return E_INVALIDARG;
+  }
+  if (f->bc && !dev.features().bc) {
+    dev.Log(LogLevel::Error, "%s: Format %s: the adapter has no BC support", fn, f->name);
+    return DXGI_ERROR_UNSUPPORTED;
+  }
+  if (f->bc && ((d.Width % 4) || (d.Height % 4)) && !(d.Width < 4 && d.Height < 4)) {
+    dev.Log(LogLevel::Error, "%s: %s needs a size multiple of 4 (got %ux%u)", fn, f->name, d.Width, d.Height);
+    return E_INVALIDARG;
+  }
+  const uint32_t full = FullMipCount(d.Width, d.Height);
+  if (d.MipLevels == 0) d.MipLevels = full;
+  if (d.MipLevels > full) {
+    dev.Log(LogLevel::Error, "%s: MipLevels %u exceeds the full chain of %u for %ux%u", fn, d.MipLevels, full, d.Width, d.Height);
+    return E_INVALIDARG;
+  }
+  return S_OK;
+}
+
+HRESULT ValidateTextureUsage(DeviceImpl& dev, const char* fn, const TEXTURE2D_DESC& d) {
+  if (d.Usage > USAGE_STAGING) {
+    dev.Log(LogLevel::Error, "%s: invalid Usage %u", fn, d.Usage);
+    return E_INVALIDARG;
+  }
+  if (d.Usage == USAGE_STAGING) {
+    if (d.BindFlags) {
+      dev.Log(LogLevel::Error, "%s: USAGE_STAGING textures cannot have BindFlags (0x%x)", fn, d.BindFlags);
+      return E_INVALIDARG;
+    }
+    if (!(d.CPUAccessFlags & (CPU_ACCESS_READ | CPU_ACCESS_WRITE))) {
+      dev.Log(LogLevel::Error, "%s: USAGE_STAGING needs CPUAccessFlags", fn);
+      return E_INVALIDARG;
+    }
+  } else if (d.Usage == USAGE_DYNAMIC) {
+    if (!(d.CPUAccessFlags & CPU_ACCESS_WRITE) || (d.CPUAccessFlags & CPU_ACCESS_READ)) {
+      dev.Log(LogLevel::Error, "%s: USAGE_DYNAMIC needs CPUAccessFlags = CPU_ACCESS_WRITE (0x%x)", fn, d.CPUAccessFlags);
+      return E_INVALIDARG;
+    }
+  } else if (d.CPUAccessFlags) {
+    dev.Log(LogLevel::Error, "%s: CPUAccessFlags 0x%x need USAGE_DYNAMIC or USAGE_STAGING", fn, d.CPUAccessFlags);
+    return E_INVALIDARG;
+  }
+  return S_OK;
+}
+
+HRESULT ValidateTextureBinding(DeviceImpl& dev, const char* fn, const TEXTURE2D_DESC& d) {
+  const FormatInfo* f = GetFormatInfo(d.Format);
+  if (d.BindFlags & (BIND_VERTEX_BUFFER | BIND_INDEX_BUFFER | BIND_CONSTANT_BUFFER)) {
+    dev.Log(LogLevel::Error, "%s: BindFlags 0x%x include buffer bindings", fn, d.BindFlags);
+    return E_INVALIDARG;
+  }
+  if ((d.BindFlags & BIND_DEPTH_STENCIL) && (d.BindFlags & BIND_RENDER_TARGET)) {
+    dev.Log(LogLevel::Error, "%s: BIND_DEPTH_STENCIL and BIND_RENDER_TARGET together", fn);
+    return E_INVALIDARG;
+  }
+  if ((d.BindFlags & BIND_DEPTH_STENCIL) && d.Format != DXGI_FORMAT_D32_FLOAT && d.Format != DXGI_FORMAT_R32_TYPELESS) {
+    dev.Log(LogLevel::Error, "%s: BIND_DEPTH_STENCIL needs D32_FLOAT or R32_TYPELESS (got %s)", fn, f->name);
+    return E_INVALIDARG;
+  }
+  if (f->depth && (d.BindFlags & BIND_RENDER_TARGET)) {
+    dev.Log(LogLevel::Error, "%s: %s cannot be a render target", fn, f->name);
+    return E_INVALIDARG;
+  }
+  if ((d.MiscFlags & RESOURCE_MISC_GENERATE_MIPS) &&
+      (d.BindFlags & (BIND_RENDER_TARGET | BIND_SHADER_RESOURCE)) != (BIND_RENDER_TARGET | BIND_SHADER_RESOURCE)) {
+    dev.Log(LogLevel::Error, "%s: RESOURCE_MISC_GENERATE_MIPS needs BIND_RENDER_TARGET | BIND_SHADER_RESOURCE", fn);
+    return E_INVALIDARG;
+  }
+  if (d.Usage != USAGE_STAGING && !dev.CheckFormatSupport(d.Format, d.BindFlags)) {
+    dev.Log(LogLevel::Error, "%s: Format %s does not support BindFlags 0x%x on this adapter", fn, f->name, d.BindFlags);
+    return E_INVALIDARG;
+  }
+  return S_OK;
+}
+
+// One entry per subresource with data; rows at least as long as the mip's.
+HRESULT ValidateInitialData(DeviceImpl& dev, const char* fn, const TEXTURE2D_DESC& d, const SUBRESOURCE_DATA* init) {
+  if (d.Usage == USAGE_IMMUTABLE && !init) {
+    dev.Log(LogLevel::Error, "%s: USAGE_IMMUTABLE needs initial data", fn);
+    return E_INVALIDARG;
+  }
+  if (!init) return S_OK;
+  const uint32_t subCount = d.MipLevels * d.ArraySize;
+  for (uint32_t i = 0; i < subCount; ++i)
+    if (!init[i].pSysMem) {
+      dev.Log(LogLevel::Error, "%s: pInitialData[%u].pSysMem is null", fn, i);
+      return E_INVALIDARG;
+    }
+  if (d.Usage == USAGE_STAGING) return S_OK;  // staging copies take the pitch as given
+  const FormatInfo& f = *GetFormatInfo(d.Format);
+  for (uint32_t i = 0; i < subCount; ++i) {
+    const uint32_t m = i % d.MipLevels;
+    const uint32_t pitch = LinearLayout(f, std::max(1u, d.Width >> m), std::max(1u, d.Height >> m)).rowPitch;
+    const uint32_t srcPitch = init[i].SysMemPitch ? init[i].SysMemPitch : pitch;
+    if (srcPitch < pitch) {
+      dev.Log(LogLevel::Error, "%s: pInitialData[%u].SysMemPitch %u is smaller than a row (%u bytes)", fn, i, srcPitch, pitch);
+      return E_INVALIDARG;
+    }
+  }
+  return S_OK;
+}
+}  // namespace
+
+HRESULT ValidateCreateTexture(DeviceImpl& dev, const char* fn, bool is1D, const SUBRESOURCE_DATA* init,
+                              TEXTURE2D_DESC* desc) {
+  if (is1D && (desc->BindFlags & BIND_DEPTH_STENCIL)) {
+    dev.Log(LogLevel::Error, "CreateTexture1D: BIND_DEPTH_STENCIL is not supported for 1-D textures");
+    return E_INVALIDARG;
+  }
+  HRESULT hr = ValidateTextureShape(dev, fn, is1D, *desc);
+  if (SUCCEEDED(hr)) hr = ValidateTextureUsage(dev, fn, *desc);
+  if (SUCCEEDED(hr)) hr = ValidateTextureBinding(dev, fn, *desc);
+  if (SUCCEEDED(hr)) hr = ValidateInitialData(dev, fn, *desc, init);
+  return hr;
+}
+
+// ---------------------------------------------------------------------------
+// Views
+namespace {
+HRESULT ValidateDepthViewFormat(DeviceImpl& dev, const char* fn, DXGI_FORMAT f, ViewFormat* format) {
+  if (f != DXGI_FORMAT_R32_FLOAT && f != DXGI_FORMAT_D32_FLOAT && f != DXGI_FORMAT_R32_TYPELESS) {
+    dev.Log(LogLevel::Error, "%s: Format %s cannot view a 32-bit depth texture", fn, FormatName(f));
+    return E_INVALIDARG;
+  }
+  *format = {VK_FORMAT_D32_SFLOAT, f};
+  return S_OK;
+}
+}  // namespace
+
+HRESULT ValidateViewResource(DeviceImpl& dev, const ViewKindInfo& kind, Resource* r, const void* out,
+                             DXGI_FORMAT requested, ViewFormat* format) {
+  const char* fn = kind.fn;
+  if (!out) {
+    dev.Log(LogLevel::Error, "%s: %s is null", fn, kind.outName);
+    return E_INVALIDARG;
+  }
+  if (!r) {
+    dev.Log(LogLevel::Error, "%s: pResource is null", fn);
+    return E_INVALIDARG;
+  }
+  const TextureCore* t = AsTexture(r);
+  if (!t) {
+    dev.Log(LogLevel::Error, "%s: the resource is a buffer; only texture views are supported", fn);
+    return E_INVALIDARG;
+  }
+  if (!(t->desc.BindFlags & kind.bind)) {
+    dev.Log(LogLevel::Error, "%s: the texture was not created with %s (BindFlags 0x%x)", fn, kind.bindName, t->desc.BindFlags);
+    return E_INVALIDARG;
+  }
+  const DXGI_FORMAT f = requested == DXGI_FORMAT_UNKNOWN ? t->desc.Format : requested;
+  if (t->aspect == VK_IMAGE_ASPECT_DEPTH_BIT) return ValidateDepthViewFormat(dev, fn, f, format);
+  const FormatInfo* fi = GetFormatInfo(f);
+  if (!fi || (f == DXGI_FORMAT_R32_TYPELESS && requested == DXGI_FORMAT_UNKNOWN)) {
+    dev.Log(LogLevel::Error, "%s: Format %u (%s) cannot be used for a view", fn, f, FormatName(f));
+    return E_INVALIDARG;
+  }
+  if (fi->bytes != t->fmt->bytes || fi->bc != t->fmt->bc || fi->depth) {
+    dev.Log(LogLevel::Error, "%s: view Format %s is not compatible with texture Format %s", fn, fi->name, t->fmt->name);
+    return E_INVALIDARG;
+  }
+  *format = {fi->vk, f};
+  return S_OK;
+}
+
+HRESULT ValidateSrvMips(DeviceImpl& dev, const TextureCore& t, const SHADER_RESOURCE_VIEW_DESC* desc,
+                        uint32_t* baseMip, uint32_t* mipCount) {
+  const char* fn = kSrvKind.fn;
+  const uint32_t mips = t.desc.MipLevels;
+  *baseMip = 0;
+  *mipCount = mips;
+  if (!desc) return S_OK;
+  const SRV_DIMENSION want = t.dim == RESOURCE_DIMENSION_TEXTURE1D ? SRV_DIMENSION_TEXTURE1D : SRV_DIMENSION_TEXTURE2D;
+  if (desc->ViewDimension != want && desc->ViewDimension != SRV_DIMENSION_UNKNOWN) {
+    dev.Log(LogLevel::Error, "%s: ViewDimension %u does not match the texture", fn, desc->ViewDimension);
+    return E_INVALIDARG;
+  }
+  const uint32_t most = desc->Texture.MostDetailedMip;
+  if (most >= mips) {
+    dev.Log(LogLevel::Error, "%s: MostDetailedMip %u out of range (texture has %u mips)", fn, most, mips);
+    return E_INVALIDARG;
+  }
+  const uint32_t count = desc->Texture.MipLevels == ~0u ? mips - most : desc->Texture.MipLevels;
+  if (count == 0 || most + count > mips) {
+    dev.Log(LogLevel::Error, "%s: MipLevels %u out of range (texture has %u mips)", fn, count, mips);
+    return E_INVALIDARG;
+  }
+  *baseMip = most;
+  *mipCount = count;
+  return S_OK;
+}
+
+HRESULT ValidateDsvFormat(DeviceImpl& dev, const DEPTH_STENCIL_VIEW_DESC* desc) {
+  if (desc && desc->Format != DXGI_FORMAT_UNKNOWN && desc->Format != DXGI_FORMAT_D32_FLOAT) {
+    dev.Log(LogLevel::Error, "%s: Format %s is not a depth format", kDsvKind.fn, FormatName(desc->Format));
+    return E_INVALIDARG;
+  }
+  return S_OK;
+}
+
+HRESULT ValidateMipSlice(DeviceImpl& dev, const char* fn, const TextureCore& t, UINT mip) {
+  if (mip < t.desc.MipLevels) return S_OK;
+  dev.Log(LogLevel::Error, "%s: MipSlice %u out of range (texture has %u mips)", fn, mip, t.desc.MipLevels);
+  return E_INVALIDARG;
+}
+
+// ---------------------------------------------------------------------------
+// Pipeline state objects, shaders, queries, swap chains
+HRESULT ValidateSamplerDesc(DeviceImpl& dev, const SAMPLER_DESC* desc, SamplerState** out) {
+  const char* fn = "CreateSamplerState";
+  if (!ValidatePointers(dev, fn, desc, "pSamplerDesc", out, "ppSamplerState")) return E_INVALIDARG;
+  const SAMPLER_DESC& d = *desc;
+  // D3D11 FILTER bits: mip (bits 0-1), mag (2-3), min (4-5), anisotropic 0x40,
+  // reduction (7-8): 0 standard, 1 comparison, 2 minimum, 3 maximum.
+  const uint32_t f = d.Filter;
+  const bool anisotropic = (f & 0x40) != 0;
+  const uint32_t reduction = (f >> 7) & 3;
+  VkSamplerAddressMode mode;
+  if (f & ~0x1D5u) {
+    dev.Log(LogLevel::Error, "%s: Filter 0x%x is not a D3D11 filter", fn, f);
+  } else if (anisotropic && (f & 0x15) != 0x15) {
+    dev.Log(LogLevel::Error, "%s: Filter 0x%x: anisotropic filters need linear min/mag/mip bits", fn, f);
+  } else if (!ToVkAddressMode(d.AddressU, &mode) || !ToVkAddressMode(d.AddressV, &mode) ||
+             !ToVkAddressMode(d.AddressW, &mode)) {
+    dev.Log(LogLevel::Error, "%s: invalid address mode (U %u, V %u, W %u)", fn, d.AddressU, d.AddressV, d.AddressW);
+  } else if (!std::isfinite(d.MipLODBias) || d.MipLODBias < -16.0f || d.MipLODBias > 15.99f) {
+    dev.Log(LogLevel::Error, "%s: MipLODBias %g out of range [-16, 15.99]", fn, d.MipLODBias);
+  } else if (anisotropic && (d.MaxAnisotropy < 1 || d.MaxAnisotropy > 16)) {
+    dev.Log(LogLevel::Error, "%s: MaxAnisotropy %u out of range [1, 16]", fn, d.MaxAnisotropy);
+  } else if (reduction == 1 && !ValidCompare(d.ComparisonFunc)) {
+    dev.Log(LogLevel::Error, "%s: ComparisonFunc %u is invalid", fn, d.ComparisonFunc);
+  } else if (reduction >= 2 && !dev.features().minmax) {
+    dev.Log(LogLevel::Error, "%s: Filter 0x%x needs min/max reduction (samplerFilterMinmax), which this adapter lacks", fn, f);
+  } else if (std::isnan(d.MinLOD) || std::isnan(d.MaxLOD) || d.MinLOD > d.MaxLOD) {
+    dev.Log(LogLevel::Error, "%s: MinLOD %g > MaxLOD %g", fn, d.MinLOD, d.MaxLOD);
+  } else {
+    return S_OK;
+  }
+  return E_INVALIDARG;
+}
+
+HRESULT ValidateBlendDesc(DeviceImpl& dev, const BLEND_DESC* desc, BlendState** out) {
+  const char* fn = "CreateBlendState";
+  if (!ValidatePointers(dev, fn, desc, "pBlendStateDesc", out, "ppBlendState")) return E_INVALIDARG;
+  const uint32_t n = desc->IndependentBlendEnable ? SIMULTANEOUS_RENDER_TARGET_COUNT : 1;
+  for (uint32_t i = 0; i < n; ++i) {
+    const auto& r = desc->RenderTarget[i];
+    if (!ValidBlend(r.SrcBlend) || !ValidBlend(r.DestBlend) || !ValidBlend(r.SrcBlendAlpha) ||
+        !ValidBlend(r.DestBlendAlpha) || !ValidBlendOp(r.BlendOp) || !ValidBlendOp(r.BlendOpAlpha)) {
+      dev.Log(LogLevel::Error, "%s: RenderTarget[%u] has an invalid blend factor or op", fn, i);
+      return E_INVALIDARG;
+    }
+  }
+  return S_OK;
+}
+
+HRESULT ValidateDepthStencilDesc(DeviceImpl& dev, const DEPTH_STENCIL_DESC* desc, DepthStencilState** out) {
+  const char* fn = "CreateDepthStencilState";
+  if (!ValidatePointers(dev, fn, desc, "pDepthStencilDesc", out, "ppDepthStencilState")) return E_INVALIDARG;
+  const auto& d = *desc;
+  if (!ValidCompare(d.DepthFunc) || d.DepthWriteMask > DEPTH_WRITE_MASK_ALL || !ValidStencilFace(d.FrontFace) ||
+      !ValidStencilFace(d.BackFace)) {
+    dev.Log(LogLevel::Error, "%s: invalid DepthFunc %u / DepthWriteMask %u / stencil ops", fn, d.DepthFunc, d.DepthWriteMask);
+    return E_INVALIDARG;
+  }
+  return S_OK;
+}
+
+HRESULT ValidateRasterizerDesc(DeviceImpl& dev, const RASTERIZER_DESC* desc, RasterizerState** out) {
+  const char* fn = "CreateRasterizerState";
+  if (!ValidatePointers(dev, fn, desc, "pRasterizerDesc", out, "ppRasterizerState")) return E_INVALIDARG;
+  const auto& d = *desc;
+  if (d.FillMode != FILL_SOLID && d.FillMode != FILL_WIREFRAME) {
+    dev.Log(LogLevel::Error, "%s: FillMode %u is invalid", fn, d.FillMode);
+    return E_INVALIDARG;
+  }
+  if (d.CullMode < CULL_NONE || d.CullMode > CULL_BACK) {
+    dev.Log(LogLevel::Error, "%s: CullMode %u is invalid", fn, d.CullMode);
+    return E_INVALIDARG;
+  }
+  if (d.FillMode == FILL_WIREFRAME && !dev.features().fillNonSolid) {
+    dev.Log(LogLevel::Error, "%s: FILL_WIREFRAME needs fillModeNonSolid", fn);
+    return DXGI_ERROR_UNSUPPORTED;
+  }
+  return S_OK;
+}
+
+HRESULT ValidateShaderBytecode(DeviceImpl& dev, const char* fn, const void* code, size_t len, const void* out) {
+  if (!ValidatePointers(dev, fn, code, "pShaderBytecode", out, "ppShader")) return E_INVALIDARG;
+  if (len < 20 || len % 4 != 0) {
+    dev.Log(LogLevel::Error, "%s: bytecode length %zu is not SPIR-V (a multiple of 4, at least 20)", fn, len);
+    return E_INVALIDARG;
+  }
+  return S_OK;
+}
+
+HRESULT ValidateCreateQuery(DeviceImpl& dev, const QUERY_DESC* desc, Query** out) {
+  if (!ValidatePointers(dev, "CreateQuery", desc, "pQueryDesc", out, "ppQuery")) return E_INVALIDARG;
+  if (desc->Query != QUERY_EVENT && desc->Query != QUERY_TIMESTAMP && desc->Query != QUERY_TIMESTAMP_DISJOINT) {
+    dev.Log(LogLevel::Error, "CreateQuery: query type %u is not supported", desc->Query);
+    return E_INVALIDARG;
+  }
+  return S_OK;
+}
+
+HRESULT ValidateHeadlessSwapChain(DeviceImpl& dev, const SWAP_CHAIN_DESC& d) {
+  if (d.Width == 0 || d.Height == 0 || d.BufferCount == 0 || d.BufferCount > 16) {
+    dev.Log(LogLevel::Error, "CreateHeadlessSwapChain: size %ux%u / BufferCount %u invalid (a headless swap chain needs an explicit size, 1..16 buffers)", d.Width, d.Height, d.BufferCount);
+    return E_INVALIDARG;
+  }
+  if (!dev.CheckFormatSupport(d.Format, BIND_RENDER_TARGET | BIND_SHADER_RESOURCE)) {
+    dev.Log(LogLevel::Error, "CreateHeadlessSwapChain: Format %s cannot be a render target", FormatName(d.Format));
+    return E_INVALIDARG;
+  }
+  return S_OK;
+}
+
+}  // namespace d3dl::impl

@@ -1,0 +1,45 @@
+// Shader-resource, render-target and depth-stencil views (Views.cpp).
+#pragma once
+
+#include <vector>
+
+#include "Resources.h"
+
+namespace d3dl::impl {
+
+struct ViewCore {
+  Resource* resource = nullptr;  // holds a reference
+  TextureCore* tex = nullptr;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  DXGI_FORMAT dxgiFormat = DXGI_FORMAT_UNKNOWN;
+  VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+  uint32_t baseMip = 0, mipCount = 1, baseLayer = 0, layerCount = 1;
+  std::vector<VkImageView> views;  // one per image of the texture
+  VkImageView Current() const { return views[tex->current]; }
+  SubresourceRange range() const { return {baseMip, mipCount, baseLayer, layerCount}; }
+  uint32_t Width() const { return tex->MipWidth(baseMip); }
+  uint32_t Height() const { return tex->MipHeight(baseMip); }
+};
+
+enum class ViewKind { SRV, RTV, DSV };
+// (Re)creates the VkImageViews of a view, one per image of its texture.
+bool RebuildViews(DeviceImpl* dev, ViewCore& v);
+
+template <class Iface, ViewKind Kind>
+class ViewImpl final : public Child<Iface> {
+ public:
+  explicit ViewImpl(DeviceImpl* d) : Child<Iface>(d) {}
+  ~ViewImpl() override;
+  void GetResource(Resource** r) const override {
+    if (!r) return;
+    *r = v.resource;
+    if (*r) (*r)->AddRef();
+  }
+  void OnDebugName() override;
+  ViewCore v;
+};
+using SRVImpl = ViewImpl<ShaderResourceView, ViewKind::SRV>;
+using RTVImpl = ViewImpl<RenderTargetView, ViewKind::RTV>;
+using DSVImpl = ViewImpl<DepthStencilView, ViewKind::DSV>;
+
+}  // namespace d3dl::impl
