@@ -185,7 +185,7 @@ double FractionAbove(const ImageF& a, const ImageF& b, float threshold) {
   return double(above) / double(uint64_t(a.width) * a.height);
 }
 
-// The physical floor of the scale pass: DeviceContext::BlitRegion (a linear
+// The fixed-function blit of the scale pass: BlitExtension::BlitRegion (a linear
 // vkCmdBlitImage) of the viewport region of a dynamic-RT-sized texture holding
 // the captured scene colour to a back-buffer-sized target, timed with its own
 // timestamp queries on the sample's device (outside the sample's frames).
@@ -193,9 +193,10 @@ class BlitFloor {
  public:
   explicit BlitFloor(d3dl::Device* device) : device_(device) {
     device_->GetImmediateContext(ctx_.GetAddressOf());
+    blit_ = d3dl::GetBlitExtension(ctx_.Get());  // null: a context without the Vulkan blit
     d3dl::QUERY_DESC d;
     d.Query = d3dl::QUERY_TIMESTAMP_DISJOINT;
-    ok_ = d3dl::SUCCEEDED(device_->CreateQuery(&d, disjoint_.GetAddressOf()));
+    ok_ = blit_ && d3dl::SUCCEEDED(device_->CreateQuery(&d, disjoint_.GetAddressOf()));
     d.Query = d3dl::QUERY_TIMESTAMP;
     ok_ = ok_ && d3dl::SUCCEEDED(device_->CreateQuery(&d, begin_.GetAddressOf())) &&
           d3dl::SUCCEEDED(device_->CreateQuery(&d, end_.GetAddressOf()));
@@ -231,7 +232,7 @@ class BlitFloor {
     for (int i = 0; i < frames + 1; ++i) {  // the first one warms up
       ctx_->Begin(disjoint_.Get());
       ctx_->End(begin_.Get());
-      d3dl::GetBlitExtension(ctx_.Get())->BlitRegion(dst.Get(), dstRect, src.Get(), srcRect, d3dl::FILTER_MIN_MAG_MIP_LINEAR);
+      blit_->BlitRegion(dst.Get(), dstRect, src.Get(), srcRect, d3dl::FILTER_MIN_MAG_MIP_LINEAR);
       ctx_->End(end_.Get());
       ctx_->End(disjoint_.Get());
       ctx_->Flush();
@@ -266,6 +267,7 @@ class BlitFloor {
       std::this_thread::yield();
     }
   }
+  d3dl::BlitExtension* blit_ = nullptr;
   d3dl::Device* device_;
   d3dl::ComPtr<d3dl::DeviceContext> ctx_;
   d3dl::ComPtr<d3dl::Query> disjoint_, begin_, end_;

@@ -9,7 +9,7 @@
 //
 // Besides the sweep it records:
 //  - "blit-floor" rows per view and scale: a linear vkCmdBlitImage
-//    (DeviceContext::BlitRegion) of the viewport region of the captured scene
+//    (BlitExtension::BlitRegion) of the viewport region of the captured scene
 //    colour to a back-buffer-sized target, timed with its own timestamp
 //    queries: the physical floor of the scale pass;
 //  - claim rows on the first view (pixel-shader vs API clear, super sampling,

@@ -405,7 +405,7 @@ bool WriteSummary(const BenchResults& res, const std::string& path, std::string*
      << " (at 1.0) |\n\n";
 
   md << "### Scale-pass cost (GPU ms, median, mean over views)\n\n"
-        "`blit-floor` is a linear `vkCmdBlitImage` (DeviceContext::BlitRegion) of the same "
+        "`blit-floor` is a linear `vkCmdBlitImage` (BlitExtension::BlitRegion) of the same "
         "viewport region of the scene colour to a back-buffer-sized target, timed with its own "
         "timestamp queries in the same run: the physical floor of the scale pass.\n\n"
         "| filter | scale | ms | ratio to point | ratio to blit | article ratio to point (JP) |\n"
