@@ -46,16 +46,28 @@ float Fbm(float u, float v, int baseFreq, int octaves, uint32_t seed) {
 // A colour channel in [0,1] as an 8-bit value.
 uint8_t B(float v) { return uint8_t(std::lround(std::clamp(v, 0.f, 1.f) * 255.f)); }
 
+// An RGBA8 image, all zero.
+Image Blank(int w, int h) { return {w, h, 4, std::vector<uint8_t>(size_t(w) * h * 4)}; }
+
+void Put(Image& img, int x, int y, vec3 c, uint8_t alpha = 255) {
+  uint8_t* p = &img.px[(size_t(y) * img.w + x) * 4];
+  p[0] = B(c.r); p[1] = B(c.g); p[2] = B(c.b); p[3] = alpha;
+}
+
+void PutGray(Image& img, int x, int y, float v) {
+  uint8_t* q = &img.px[(size_t(y) * img.w + x) * 4];
+  q[0] = q[1] = q[2] = B(v); q[3] = 255;
+}
+
 // Height field (tileable) -> tangent-space normal map (+X = +u, +Y = +v, v downwards in the image).
 Image NormalFromHeight(const std::vector<float>& h, int n, float strength) {
-  Image img{n, n, 4, std::vector<uint8_t>(size_t(n) * n * 4)};
+  Image img = Blank(n, n);
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
       auto H = [&](int xx, int yy) { return h[size_t((yy + n) % n) * n + (xx + n) % n]; };
       float dx = (H(x + 1, y) - H(x - 1, y)) * strength, dy = (H(x, y + 1) - H(x, y - 1)) * strength;
       vec3 nn = glm::normalize(vec3(-dx, -dy, 1.f));
-      uint8_t* p = &img.px[(size_t(y) * n + x) * 4];
-      p[0] = B(nn.x * 0.5f + 0.5f); p[1] = B(nn.y * 0.5f + 0.5f); p[2] = B(nn.z * 0.5f + 0.5f); p[3] = 255;
+      Put(img, x, y, nn * 0.5f + 0.5f);
     }
   return img;
 }
@@ -84,96 +96,88 @@ bool WritePng(const fs::path& file, const Image& img) {
   return ok;
 }
 
+// Calls texel(x, y, u, v) for each texel of an n x n texture, (u, v) at its centre.
+template <class Texel>
+void ForEachTexel(int n, Texel texel) {
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) texel(x, y, (x + 0.5f) / n, (y + 0.5f) / n);
+}
+
+// n x n diffuse (and specular) maps, all zero.
+MaterialTextures BlankMaterial(int n, bool withSpecular) {
+  MaterialTextures t;
+  t.diffuse = Blank(n, n);
+  if (withSpecular) t.specular = Blank(n, n);
+  t.hasSpecular = withSpecular;
+  return t;
+}
+
 MaterialTextures MakeStone(int n, uint32_t seed, vec3 base, vec3 mortarCol, int cols, int rows, bool offset,
                            float specLevel) {
-  MaterialTextures t;
-  t.diffuse = {n, n, 4, std::vector<uint8_t>(size_t(n) * n * 4)};
-  t.specular = {n, n, 4, std::vector<uint8_t>(size_t(n) * n * 4)};
+  MaterialTextures t = BlankMaterial(n, true);
   std::vector<float> height(size_t(n) * n);
-  for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x) {
-      float u = (x + 0.5f) / n, v = (y + 0.5f) / n;
-      int id;
-      float blk = BlockPattern(u, v, cols, rows, offset, 0.012f, &id);
-      float nz = Fbm(u, v, 8, 5, seed);
-      float tint = Hash2(id, 7, seed) * 0.25f + 0.85f;
-      vec3 c = glm::mix(mortarCol, base * tint * (0.75f + 0.5f * nz), blk);
-      height[size_t(y) * n + x] = blk * 0.6f + nz * 0.4f;
-      uint8_t* p = &t.diffuse.px[(size_t(y) * n + x) * 4];
-      p[0] = B(c.r); p[1] = B(c.g); p[2] = B(c.b); p[3] = 255;
-      float s = specLevel * blk * (0.6f + 0.8f * Fbm(u, v, 16, 3, seed + 9));
-      uint8_t* q = &t.specular.px[(size_t(y) * n + x) * 4];
-      q[0] = q[1] = q[2] = B(s); q[3] = 255;
-    }
+  ForEachTexel(n, [&](int x, int y, float u, float v) {
+    int id;
+    float blk = BlockPattern(u, v, cols, rows, offset, 0.012f, &id);
+    float nz = Fbm(u, v, 8, 5, seed);
+    float tint = Hash2(id, 7, seed) * 0.25f + 0.85f;
+    vec3 c = glm::mix(mortarCol, base * tint * (0.75f + 0.5f * nz), blk);
+    height[size_t(y) * n + x] = blk * 0.6f + nz * 0.4f;
+    Put(t.diffuse, x, y, c);
+    PutGray(t.specular, x, y, specLevel * blk * (0.6f + 0.8f * Fbm(u, v, 16, 3, seed + 9)));
+  });
   t.normal = NormalFromHeight(height, n, n / 64.f);
-  t.hasNormal = t.hasSpecular = true;
+  t.hasNormal = true;
   return t;
 }
 
 MaterialTextures MakeMarble(int n, uint32_t seed) {
-  MaterialTextures t;
-  t.diffuse = {n, n, 4, std::vector<uint8_t>(size_t(n) * n * 4)};
-  t.specular = {n, n, 4, std::vector<uint8_t>(size_t(n) * n * 4)};
+  MaterialTextures t = BlankMaterial(n, true);
   std::vector<float> height(size_t(n) * n);
-  for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x) {
-      float u = (x + 0.5f) / n, v = (y + 0.5f) / n;
-      float turb = Fbm(u, v, 4, 6, seed);
-      float vein = std::pow(std::fabs(std::sin((u * 4.f + turb * 6.f) * kPi)), 0.35f);
-      vec3 c = glm::mix(vec3(0.35f, 0.33f, 0.32f), vec3(0.85f, 0.83f, 0.78f), vein);
-      // Flutes along v (columns): a cosine groove pattern.
-      float flute = 0.5f + 0.5f * std::cos(u * 2 * kPi * 12.f);
-      height[size_t(y) * n + x] = flute * 0.7f + turb * 0.3f;
-      uint8_t* p = &t.diffuse.px[(size_t(y) * n + x) * 4];
-      p[0] = B(c.r); p[1] = B(c.g); p[2] = B(c.b); p[3] = 255;
-      uint8_t* q = &t.specular.px[(size_t(y) * n + x) * 4];
-      q[0] = q[1] = q[2] = B(0.35f + 0.5f * vein); q[3] = 255;
-    }
+  ForEachTexel(n, [&](int x, int y, float u, float v) {
+    float turb = Fbm(u, v, 4, 6, seed);
+    float vein = std::pow(std::fabs(std::sin((u * 4.f + turb * 6.f) * kPi)), 0.35f);
+    vec3 c = glm::mix(vec3(0.35f, 0.33f, 0.32f), vec3(0.85f, 0.83f, 0.78f), vein);
+    // Flutes along v (columns): a cosine groove pattern.
+    float flute = 0.5f + 0.5f * std::cos(u * 2 * kPi * 12.f);
+    height[size_t(y) * n + x] = flute * 0.7f + turb * 0.3f;
+    Put(t.diffuse, x, y, c);
+    PutGray(t.specular, x, y, 0.35f + 0.5f * vein);
+  });
   t.normal = NormalFromHeight(height, n, n / 96.f);
-  t.hasNormal = t.hasSpecular = true;
+  t.hasNormal = true;
   return t;
 }
 
 MaterialTextures MakeRock(int n, uint32_t seed) {  // normal map, no specular map
-  MaterialTextures t;
-  t.diffuse = {n, n, 4, std::vector<uint8_t>(size_t(n) * n * 4)};
+  MaterialTextures t = BlankMaterial(n, false);
   std::vector<float> height(size_t(n) * n);
-  for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x) {
-      float u = (x + 0.5f) / n, v = (y + 0.5f) / n;
-      float a = Fbm(u, v, 6, 6, seed), b = Fbm(u, v, 24, 3, seed + 5);
-      vec3 c = vec3(0.42f, 0.38f, 0.33f) * (0.6f + 0.7f * a) + vec3(0.05f) * b;
-      height[size_t(y) * n + x] = a * 0.8f + b * 0.2f;
-      uint8_t* p = &t.diffuse.px[(size_t(y) * n + x) * 4];
-      p[0] = B(c.r); p[1] = B(c.g); p[2] = B(c.b); p[3] = 255;
-    }
+  ForEachTexel(n, [&](int x, int y, float u, float v) {
+    float a = Fbm(u, v, 6, 6, seed), b = Fbm(u, v, 24, 3, seed + 5);
+    vec3 c = vec3(0.42f, 0.38f, 0.33f) * (0.6f + 0.7f * a) + vec3(0.05f) * b;
+    height[size_t(y) * n + x] = a * 0.8f + b * 0.2f;
+    Put(t.diffuse, x, y, c);
+  });
   t.normal = NormalFromHeight(height, n, n / 24.f);
   t.hasNormal = true;
   return t;
 }
 
 MaterialTextures MakeBronze(int n, uint32_t seed) {  // specular map, no normal map
-  MaterialTextures t;
-  t.diffuse = {n, n, 4, std::vector<uint8_t>(size_t(n) * n * 4)};
-  t.specular = {n, n, 4, std::vector<uint8_t>(size_t(n) * n * 4)};
-  for (int y = 0; y < n; ++y)
-    for (int x = 0; x < n; ++x) {
-      float u = (x + 0.5f) / n, v = (y + 0.5f) / n;
-      float patina = glm::smoothstep(0.55f, 0.75f, Fbm(u, v, 4, 5, seed));
-      vec3 c = glm::mix(vec3(0.55f, 0.36f, 0.16f), vec3(0.22f, 0.45f, 0.38f), patina);
-      float band = std::fmod(v * 10.f, 1.f) < 0.08f ? 0.7f : 1.f;
-      c *= band;
-      uint8_t* p = &t.diffuse.px[(size_t(y) * n + x) * 4];
-      p[0] = B(c.r); p[1] = B(c.g); p[2] = B(c.b); p[3] = 255;
-      uint8_t* q = &t.specular.px[(size_t(y) * n + x) * 4];
-      q[0] = q[1] = q[2] = B(0.9f * (1.f - patina) + 0.1f); q[3] = 255;
-    }
-  t.hasSpecular = true;
+  MaterialTextures t = BlankMaterial(n, true);
+  ForEachTexel(n, [&](int x, int y, float u, float v) {
+    float patina = glm::smoothstep(0.55f, 0.75f, Fbm(u, v, 4, 5, seed));
+    vec3 c = glm::mix(vec3(0.55f, 0.36f, 0.16f), vec3(0.22f, 0.45f, 0.38f), patina);
+    float band = std::fmod(v * 10.f, 1.f) < 0.08f ? 0.7f : 1.f;
+    c *= band;
+    Put(t.diffuse, x, y, c);
+    PutGray(t.specular, x, y, 0.9f * (1.f - patina) + 0.1f);
+  });
   return t;
 }
 
 Image MakeSky(int n, uint32_t seed) {  // u = azimuth, v = 0 zenith .. 1 below horizon
-  Image img{n, n / 2, 4, std::vector<uint8_t>(size_t(n) * (n / 2) * 4)};
+  Image img = Blank(n, n / 2);
   for (int y = 0; y < n / 2; ++y)
     for (int x = 0; x < n; ++x) {
       float u = (x + 0.5f) / n, v = (y + 0.5f) / (n / 2);
@@ -184,14 +188,13 @@ Image MakeSky(int n, uint32_t seed) {  // u = azimuth, v = 0 zenith .. 1 below h
         float cl = glm::smoothstep(0.5f, 0.8f, Fbm(u, v * 0.5f, 8, 5, seed));
         c = glm::mix(c, vec3(0.95f), cl * std::min(1.f, elev * 4.f) * 0.8f);
       }
-      uint8_t* p = &img.px[(size_t(y) * n + x) * 4];
-      p[0] = B(c.r); p[1] = B(c.g); p[2] = B(c.b); p[3] = 255;
+      Put(img, x, y, c);
     }
   return img;
 }
 
 Image MakeDecal(int n, uint32_t seed) {  // 2x2 atlas of scorch marks / cracks / glyphs, with alpha
-  Image img{n, n, 4, std::vector<uint8_t>(size_t(n) * n * 4)};
+  Image img = Blank(n, n);
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
       int cell = (y * 2 / n) * 2 + (x * 2 / n);
@@ -212,8 +215,7 @@ Image MakeDecal(int n, uint32_t seed) {  // 2x2 atlas of scorch marks / cracks /
         a = glm::clamp((0.9f - r) * 2.f, 0.f, 1.f) * glm::smoothstep(0.35f, 0.65f, nz);
         c = vec3(0.18f, 0.28f, 0.08f);
       }
-      uint8_t* p = &img.px[(size_t(y) * n + x) * 4];
-      p[0] = B(c.r); p[1] = B(c.g); p[2] = B(c.b); p[3] = B(a);
+      Put(img, x, y, c, B(a));
     }
   return img;
 }
