@@ -146,16 +146,16 @@ bool GuiRenderer::EnsureBuffers(int vertexCount, int indexCount) {
   return true;
 }
 
-void GuiRenderer::Render(d3dl::DeviceContext* ctx, ImDrawData* dd) {
-  if (!dd || dd->TotalVtxCount == 0 || dd->DisplaySize.x <= 0 || dd->DisplaySize.y <= 0 || !m_VS)
-    return;
-  if (!EnsureBuffers(dd->TotalVtxCount, dd->TotalIdxCount)) return;
+namespace {
 
-  d3dl::MAPPED_SUBRESOURCE vm, im, cm;
-  if (d3dl::FAILED(ctx->Map(m_VB.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &vm))) return;
-  if (d3dl::FAILED(ctx->Map(m_IB.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &im))) {
-    ctx->Unmap(m_VB.Get(), 0);
-    return;
+// Copies every draw list's vertices and indices, one after the other, into the
+// dynamic buffers.
+bool UploadGeometry(d3dl::DeviceContext* ctx, d3dl::Buffer* vb, d3dl::Buffer* ib, const ImDrawData* dd) {
+  d3dl::MAPPED_SUBRESOURCE vm, im;
+  if (d3dl::FAILED(ctx->Map(vb, 0, d3dl::MAP_WRITE_DISCARD, 0, &vm))) return false;
+  if (d3dl::FAILED(ctx->Map(ib, 0, d3dl::MAP_WRITE_DISCARD, 0, &im))) {
+    ctx->Unmap(vb, 0);
+    return false;
   }
   auto* vdst = static_cast<ImDrawVert*>(vm.pData);
   auto* idst = static_cast<ImDrawIdx*>(im.pData);
@@ -166,35 +166,28 @@ void GuiRenderer::Render(d3dl::DeviceContext* ctx, ImDrawData* dd) {
     vdst += list->VtxBuffer.Size;
     idst += list->IdxBuffer.Size;
   }
-  ctx->Unmap(m_IB.Get(), 0);
-  ctx->Unmap(m_VB.Get(), 0);
+  ctx->Unmap(ib, 0);
+  ctx->Unmap(vb, 0);
+  return true;
+}
 
-  // Orthographic mapping of ImGui's pixel space (origin top-left) to clip space.
+// Orthographic mapping of ImGui's pixel space (origin top-left) to clip space.
+void UploadProjection(d3dl::DeviceContext* ctx, d3dl::Buffer* cb, const ImDrawData* dd) {
   GuiConstants c;
   c.scale[0] = 2.0f / dd->DisplaySize.x;
   c.scale[1] = -2.0f / dd->DisplaySize.y;
   c.translate[0] = -1.0f - dd->DisplayPos.x * c.scale[0];
   c.translate[1] = 1.0f - dd->DisplayPos.y * c.scale[1];
-  if (d3dl::SUCCEEDED(ctx->Map(m_CB.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &cm))) {
+  d3dl::MAPPED_SUBRESOURCE cm;
+  if (d3dl::SUCCEEDED(ctx->Map(cb, 0, d3dl::MAP_WRITE_DISCARD, 0, &cm))) {
     std::memcpy(cm.pData, &c, sizeof c);
-    ctx->Unmap(m_CB.Get(), 0);
+    ctx->Unmap(cb, 0);
   }
+}
 
-  const uint32_t stride = sizeof(ImDrawVert), offset = 0;
-  ctx->IASetInputLayout(m_Layout.Get());
-  ctx->IASetVertexBuffers(0, 1, m_VB.GetAddressOf(), &stride, &offset);
-  ctx->IASetIndexBuffer(m_IB.Get(),
-                        sizeof(ImDrawIdx) == 2 ? d3dl::DXGI_FORMAT_R16_UINT : d3dl::DXGI_FORMAT_R32_UINT, 0);
-  ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLELIST);
-  ctx->VSSetShader(m_VS.Get());
-  ctx->VSSetConstantBuffers(0, 1, m_CB.GetAddressOf());
-  ctx->PSSetShader(m_PS.Get());
-  ctx->PSSetSamplers(0, 1, m_Sampler.GetAddressOf());
-  const float blendFactor[4] = {0, 0, 0, 0};
-  ctx->OMSetBlendState(m_Blend.Get(), blendFactor, 0xffffffffu);
-  ctx->OMSetDepthStencilState(m_Depth.Get(), 0);
-  ctx->RSSetState(m_Raster.Get());
-
+// One indexed draw per command, scissored to its clip rectangle, with its
+// texture; user callbacks run in their place.
+void DrawCommands(d3dl::DeviceContext* ctx, const ImDrawData* dd) {
   const ImVec2 clipOff = dd->DisplayPos;
   int vtxBase = 0, idxBase = 0;
   for (int n = 0; n < dd->CmdListsCount; ++n) {
@@ -224,6 +217,33 @@ void GuiRenderer::Render(d3dl::DeviceContext* ctx, ImDrawData* dd) {
     vtxBase += list->VtxBuffer.Size;
     idxBase += list->IdxBuffer.Size;
   }
+}
+
+}  // namespace
+
+void GuiRenderer::Render(d3dl::DeviceContext* ctx, ImDrawData* dd) {
+  if (!dd || dd->TotalVtxCount == 0 || dd->DisplaySize.x <= 0 || dd->DisplaySize.y <= 0 || !m_VS)
+    return;
+  if (!EnsureBuffers(dd->TotalVtxCount, dd->TotalIdxCount)) return;
+  if (!UploadGeometry(ctx, m_VB.Get(), m_IB.Get(), dd)) return;
+  UploadProjection(ctx, m_CB.Get(), dd);
+
+  const uint32_t stride = sizeof(ImDrawVert), offset = 0;
+  ctx->IASetInputLayout(m_Layout.Get());
+  ctx->IASetVertexBuffers(0, 1, m_VB.GetAddressOf(), &stride, &offset);
+  ctx->IASetIndexBuffer(m_IB.Get(),
+                        sizeof(ImDrawIdx) == 2 ? d3dl::DXGI_FORMAT_R16_UINT : d3dl::DXGI_FORMAT_R32_UINT, 0);
+  ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+  ctx->VSSetShader(m_VS.Get());
+  ctx->VSSetConstantBuffers(0, 1, m_CB.GetAddressOf());
+  ctx->PSSetShader(m_PS.Get());
+  ctx->PSSetSamplers(0, 1, m_Sampler.GetAddressOf());
+  const float blendFactor[4] = {0, 0, 0, 0};
+  ctx->OMSetBlendState(m_Blend.Get(), blendFactor, 0xffffffffu);
+  ctx->OMSetDepthStencilState(m_Depth.Get(), 0);
+  ctx->RSSetState(m_Raster.Get());
+
+  DrawCommands(ctx, dd);
   d3dl::ShaderResourceView* none = nullptr;
   ctx->PSSetShaderResources(0, 1, &none);
   ctx->RSSetState(nullptr);

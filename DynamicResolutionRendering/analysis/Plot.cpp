@@ -119,6 +119,81 @@ std::string Format(double v, double step) {
   return buf;
 }
 
+// The plot area in pixels and the data range drawn in it, rounded out to
+// whole tick steps (xs, ys).
+struct Axes {
+  int left, right, top, bottom;
+  double x0, x1, y0, y1, xs, ys;
+  double Px(double v) const { return left + (v - x0) / (x1 - x0) * (right - left); }
+  double Py(double v) const { return bottom - (v - y0) / (y1 - y0) * (bottom - top); }
+};
+
+Axes FitAxes(const PlotDesc& plot, uint32_t w, uint32_t h) {
+  Axes a{80, int(w) - 200, 40, int(h) - 60, 0, 0, 0, 0, 0, 0};
+  double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
+  for (const auto& s : plot.series) {
+    for (size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
+      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
+      x0 = std::min(x0, s.x[i]);
+      x1 = std::max(x1, s.x[i]);
+      y0 = std::min(y0, s.y[i]);
+      y1 = std::max(y1, s.y[i]);
+    }
+  }
+  if (!std::isfinite(x0)) x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+  if (x1 - x0 < 1e-12) x0 -= 0.5, x1 += 0.5;
+  if (y1 - y0 < 1e-12) y0 -= 0.5, y1 += 0.5;
+  a.xs = NiceStep(x0, x1, 8), a.ys = NiceStep(y0, y1, 6);
+  a.x0 = std::floor(x0 / a.xs) * a.xs, a.x1 = std::ceil(x1 / a.xs) * a.xs;
+  a.y0 = std::floor(y0 / a.ys) * a.ys, a.y1 = std::ceil(y1 / a.ys) * a.ys;
+  return a;
+}
+
+// Grid, ticks and their labels, the axes, the title and the axis labels.
+void DrawFrame(Canvas& canvas, const Axes& a, const PlotDesc& plot) {
+  const int left = a.left, right = a.right, top = a.top, bottom = a.bottom;
+  for (double v = a.x0; v <= a.x1 + a.xs * 0.5; v += a.xs) {
+    canvas.Line(a.Px(v), top, a.Px(v), bottom, 0xe6e6e6, 1.0f);
+    const std::string t = Format(v, a.xs);
+    canvas.Text(int(a.Px(v)) - canvas.TextWidth(t) / 2, bottom + 6, t, 0x333333);
+  }
+  for (double v = a.y0; v <= a.y1 + a.ys * 0.5; v += a.ys) {
+    canvas.Line(left, a.Py(v), right, a.Py(v), 0xe6e6e6, 1.0f);
+    const std::string t = Format(v, a.ys);
+    canvas.Text(left - 8 - canvas.TextWidth(t), int(a.Py(v)) - 6, t, 0x333333);
+  }
+  canvas.Line(left, bottom, right, bottom, 0x333333, 1.2f);
+  canvas.Line(left, top, left, bottom, 0x333333, 1.2f);
+  canvas.Text((left + right - canvas.TextWidth(plot.title)) / 2, 12, plot.title, 0x000000);
+  canvas.Text((left + right - canvas.TextWidth(plot.xLabel)) / 2, bottom + 28, plot.xLabel, 0x000000);
+  canvas.Text(16, (top + bottom + canvas.TextWidth(plot.yLabel)) / 2, plot.yLabel, 0x000000, true);
+}
+
+// Each series (a gap at every non-finite point) and its legend entry.
+void DrawSeries(Canvas& canvas, const Axes& a, const PlotDesc& plot) {
+  int legendY = a.top;
+  for (size_t k = 0; k < plot.series.size(); ++k) {
+    const auto& s = plot.series[k];
+    const uint32_t color = s.color ? s.color : kPalette[k % std::size(kPalette)];
+    bool havePrev = false;
+    double lx = 0, ly = 0;
+    for (size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
+      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) {
+        havePrev = false;
+        continue;
+      }
+      const double cx = a.Px(s.x[i]), cy = a.Py(s.y[i]);
+      if (s.lines && havePrev) canvas.Line(lx, ly, cx, cy, color, 2.0f, s.dashed);
+      if (s.markers) canvas.Dot(cx, cy, 3.5f, color);
+      lx = cx, ly = cy, havePrev = true;
+    }
+    canvas.Line(a.right + 16, legendY + 7, a.right + 40, legendY + 7, color, 2.0f, s.dashed);
+    if (s.markers) canvas.Dot(a.right + 28, legendY + 7, 3.5f, color);
+    canvas.Text(a.right + 46, legendY, s.name, 0x000000);
+    legendY += 18;
+  }
+}
+
 }  // namespace
 
 std::vector<size_t> ParetoFront(const std::vector<double>& x, const std::vector<double>& y) {
@@ -142,66 +217,9 @@ std::vector<size_t> ParetoFront(const std::vector<double>& x, const std::vector<
 bool WritePlotPng(const PlotDesc& plot, const std::string& path, std::string* error) {
   const uint32_t w = std::max(plot.width, 320u), h = std::max(plot.height, 240u);
   Canvas canvas(w, h);
-  const int left = 80, right = int(w) - 200, top = 40, bottom = int(h) - 60;
-
-  double x0 = std::numeric_limits<double>::infinity(), x1 = -x0, y0 = x0, y1 = -x0;
-  for (const auto& s : plot.series) {
-    for (size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
-      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
-      x0 = std::min(x0, s.x[i]);
-      x1 = std::max(x1, s.x[i]);
-      y0 = std::min(y0, s.y[i]);
-      y1 = std::max(y1, s.y[i]);
-    }
-  }
-  if (!std::isfinite(x0)) x0 = 0, x1 = 1, y0 = 0, y1 = 1;
-  if (x1 - x0 < 1e-12) x0 -= 0.5, x1 += 0.5;
-  if (y1 - y0 < 1e-12) y0 -= 0.5, y1 += 0.5;
-  const double xs = NiceStep(x0, x1, 8), ys = NiceStep(y0, y1, 6);
-  x0 = std::floor(x0 / xs) * xs, x1 = std::ceil(x1 / xs) * xs;
-  y0 = std::floor(y0 / ys) * ys, y1 = std::ceil(y1 / ys) * ys;
-  auto px = [&](double v) { return left + (v - x0) / (x1 - x0) * (right - left); };
-  auto py = [&](double v) { return bottom - (v - y0) / (y1 - y0) * (bottom - top); };
-
-  // Grid, ticks and labels.
-  for (double v = x0; v <= x1 + xs * 0.5; v += xs) {
-    canvas.Line(px(v), top, px(v), bottom, 0xe6e6e6, 1.0f);
-    const std::string t = Format(v, xs);
-    canvas.Text(int(px(v)) - canvas.TextWidth(t) / 2, bottom + 6, t, 0x333333);
-  }
-  for (double v = y0; v <= y1 + ys * 0.5; v += ys) {
-    canvas.Line(left, py(v), right, py(v), 0xe6e6e6, 1.0f);
-    const std::string t = Format(v, ys);
-    canvas.Text(left - 8 - canvas.TextWidth(t), int(py(v)) - 6, t, 0x333333);
-  }
-  canvas.Line(left, bottom, right, bottom, 0x333333, 1.2f);
-  canvas.Line(left, top, left, bottom, 0x333333, 1.2f);
-  canvas.Text((left + right - canvas.TextWidth(plot.title)) / 2, 12, plot.title, 0x000000);
-  canvas.Text((left + right - canvas.TextWidth(plot.xLabel)) / 2, bottom + 28, plot.xLabel, 0x000000);
-  canvas.Text(16, (top + bottom + canvas.TextWidth(plot.yLabel)) / 2, plot.yLabel, 0x000000, true);
-
-  // Series and legend.
-  int legendY = top;
-  for (size_t k = 0; k < plot.series.size(); ++k) {
-    const auto& s = plot.series[k];
-    const uint32_t color = s.color ? s.color : kPalette[k % std::size(kPalette)];
-    bool havePrev = false;
-    double lx = 0, ly = 0;
-    for (size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
-      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) {
-        havePrev = false;
-        continue;
-      }
-      const double cx = px(s.x[i]), cy = py(s.y[i]);
-      if (s.lines && havePrev) canvas.Line(lx, ly, cx, cy, color, 2.0f, s.dashed);
-      if (s.markers) canvas.Dot(cx, cy, 3.5f, color);
-      lx = cx, ly = cy, havePrev = true;
-    }
-    canvas.Line(right + 16, legendY + 7, right + 40, legendY + 7, color, 2.0f, s.dashed);
-    if (s.markers) canvas.Dot(right + 28, legendY + 7, 3.5f, color);
-    canvas.Text(right + 46, legendY, s.name, 0x000000);
-    legendY += 18;
-  }
+  const Axes axes = FitAxes(plot, w, h);
+  DrawFrame(canvas, axes, plot);
+  DrawSeries(canvas, axes, plot);
   return canvas.Save(path, error);
 }
 

@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <thread>
 #include <unistd.h>
@@ -17,53 +16,6 @@
 
 namespace drr {
 namespace {
-
-const char* kBenchUsage =
-    "DynamicResolutionRendering --bench [--quick] --out DIR [sample options]\n"
-    "\n"
-    "Renders every (camera view, filter, scale) after a warm-up and records image\n"
-    "error (PSNR, SSIM, max error) against a 4x4 super-sampled reference, GPU time\n"
-    "per pass (median and quartiles) and wall time. Writes results.csv,\n"
-    "results.json, summary.md and plots (PNG) into DIR.\n"
-    "Also measured: a 'blit-floor' row per view and scale (a linear vkCmdBlitImage of\n"
-    "the viewport region to a back-buffer-sized target: the physical floor of the\n"
-    "scale pass, with each filter's cost as a ratio to it and to point); claim rows\n"
-    "on the first view at 0.71 (pixel-shader vs API clear, super sampling allowed at\n"
-    "1.0, fast vs velocity-reading TAA) and motion blur at 0.71 vs native on the\n"
-    "moving cinematic camera; ghosting ('ghost <filter>': point, taa, taa-basic,\n"
-    "taa-noise-offset at 0.71, motion blur off) on the cinematic camera moving by a\n"
-    "fixed step per frame: PSNR against the reference rendered at the captured\n"
-    "frame's animation time, ghost fraction = pixels > 0.1 away from the same\n"
-    "filter's still image of that time. summary.md judges the article's claims\n"
-    "from these numbers.\n"
-    "\n"
-    "  --quick              short preset for CI: one static camera, point / bilinear /\n"
-    "                       bicubic / TAA at scales 0.3 0.5 0.71 1.0, 320x180, with\n"
-    "                       the blit-floor, claim and ghosting rows\n"
-    "  --out DIR            output folder (default: bench_out)\n"
-    "  --bench-warmup N     frames rendered before measuring (default 8, quick 4)\n"
-    "  --bench-warmup-ms T  and warm up for at least T ms (default 500, quick 0): GPU\n"
-    "                       clocks drop while the CPU compares images, and a few\n"
-    "                       frames do not bring them back\n"
-    "  --bench-frames N     frames measured per configuration (default 24, quick 6)\n"
-    "  --camera N           only this camera (a static view at its default time)\n"
-    "  --filter F           only this filter\n"
-    "  --scale S            only this scale\n"
-    "  --no-claims          skip the claim rows\n"
-    "  --no-ghosting        skip the ghosting rows\n"
-    "  --ghost-frames N     moving frames before the ghosting capture (default 24,\n"
-    "                       quick 6); the camera steps 1/30 s per frame and the\n"
-    "                       capture is at animation time 12 s\n"
-    "  --width/--height, --scene, --no-motion-blur, --symmetric-taa, --no-ps-clear,\n"
-    "  --validation         as for the sample (see DynamicResolutionRendering --help)\n";
-
-bool ParseInt(const std::string& s, int lo, int hi, int* out) {
-  char* end = nullptr;
-  const long v = std::strtol(s.c_str(), &end, 10);
-  if (s.empty() || !end || *end || v < lo || v > hi) return false;
-  *out = int(v);
-  return true;
-}
 
 std::string Num2(double v) {
   char buf[32];
@@ -274,127 +226,6 @@ class BlitFloor {
   bool ok_ = false;
 };
 
-}  // namespace
-
-bool HasBenchFlag(int argc, char** argv) {
-  for (int i = 1; i < argc; ++i) {
-    if (std::strcmp(argv[i], "--bench") == 0) return true;
-  }
-  return false;
-}
-
-int ParseBenchCommandLine(const std::vector<std::string>& args, BenchPlan* plan,
-                          std::string* message) {
-  std::vector<std::string> rest;
-  bool cameraGiven = false, filterGiven = false, scaleGiven = false, sizeGiven = false;
-  int warmup = -1, warmupMs = -1, frames = -1, ghostFrames = -1;
-  plan->outDir = "bench_out";
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    auto value = [&](const char* name, std::string* out) {
-      if (i + 1 >= args.size()) {
-        *message = std::string(name) + ": missing value\n\n" + kBenchUsage;
-        return false;
-      }
-      *out = args[++i];
-      return true;
-    };
-    std::string v;
-    if (a == "--bench") continue;
-    if (a == "--help" || a == "-h") {
-      *message = kBenchUsage;
-      return 1;
-    }
-    if (a == "--quick") {
-      plan->quick = true;
-    } else if (a == "--out") {
-      if (!value("--out", &plan->outDir)) return 2;
-    } else if (a == "--no-claims") {
-      plan->claims = false;
-    } else if (a == "--no-ghosting") {
-      plan->ghosting = false;
-    } else if (a == "--ghost-frames") {
-      if (!value("--ghost-frames", &v)) return 2;
-      if (!ParseInt(v, 2, 300, &ghostFrames)) {
-        *message = "--ghost-frames: expected an integer in [2, 300], got '" + v + "'";
-        return 2;
-      }
-    } else if (a == "--bench-warmup-ms") {
-      if (!value("--bench-warmup-ms", &v)) return 2;
-      if (!ParseInt(v, 0, 60000, &warmupMs)) {
-        *message = "--bench-warmup-ms: expected an integer in [0, 60000], got '" + v + "'";
-        return 2;
-      }
-    } else if (a == "--bench-warmup" || a == "--bench-frames") {
-      if (!value(a.c_str(), &v)) return 2;
-      int n = 0;
-      if (!ParseInt(v, a == "--bench-warmup" ? 0 : 1, 10000, &n)) {
-        *message = a + ": expected an integer in [" + (a == "--bench-warmup" ? "0" : "1") +
-                   ", 10000], got '" + v + "'";
-        return 2;
-      }
-      (a == "--bench-warmup" ? warmup : frames) = n;
-    } else {
-      cameraGiven |= a == "--camera";
-      filterGiven |= a == "--filter";
-      scaleGiven |= a == "--scale" || a == "--scale-x" || a == "--scale-y";
-      sizeGiven |= a == "--width" || a == "--height";
-      rest.push_back(a);
-    }
-  }
-  std::string parseMessage;
-  const ParseStatus status = ParseCommandLine(rest, &plan->base, &parseMessage);
-  if (status == ParseStatus::Error) {
-    *message = parseMessage;
-    return 2;
-  }
-  if (status == ParseStatus::Help) {
-    *message = kBenchUsage;
-    return 1;
-  }
-  if (plan->outDir.empty()) {
-    *message = "--out: the output folder must not be empty";
-    return 2;
-  }
-  if (plan->quick && !sizeGiven) {
-    plan->base.width = 320;
-    plan->base.height = 180;
-  }
-  plan->warmupFrames = warmup >= 0 ? warmup : (plan->quick ? 4 : 8);
-  plan->warmupMs = warmupMs >= 0 ? warmupMs : (plan->quick ? 0 : 500);
-  plan->measuredFrames = frames >= 0 ? frames : (plan->quick ? 6 : 24);
-  plan->ghostFrames = ghostFrames >= 0 ? ghostFrames : (plan->quick ? 6 : 24);
-
-  if (cameraGiven) {
-    plan->views = {{plan->base.camera, plan->base.time >= 0 ? plan->base.time : 0.0,
-                    "camera " + std::to_string(plan->base.camera)}};
-  } else if (plan->quick) {
-    plan->views = {{1, 0.0, "static 1"}};
-  } else {
-    plan->views = {{1, 0.0, "static 1"},
-                   {2, 0.0, "static 2"},
-                   {0, 4.0, "cinematic t=4"},
-                   {0, 12.0, "cinematic t=12"}};
-  }
-  if (filterGiven) {
-    plan->filters = {plan->base.filter};
-  } else if (plan->quick) {
-    plan->filters = {Filter::Point, Filter::Bilinear, Filter::Bicubic, Filter::TAA};
-  } else {
-    for (int f = int(Filter::Point); f < int(Filter::Count); ++f) plan->filters.push_back(Filter(f));
-  }
-  if (scaleGiven) {
-    plan->scales = {plan->base.scaleX};
-  } else if (plan->quick) {
-    plan->scales = {0.3f, 0.5f, 0.71f, 1.0f};
-  } else {
-    plan->scales = {0.3f, 0.4f, 0.5f, 0.6f, 0.71f, 0.8f, 0.9f, 1.0f, 1.25f, 1.5f, 2.0f};
-  }
-  return 0;
-}
-
-namespace {
-
 // One measured configuration of a running sample: apply, warm up, measure,
 // capture. Returns the row (error against `reference`) and the image.
 BenchRow Measure(Sample& sample, const BenchPlan& plan, const Options& settings,
@@ -548,6 +379,118 @@ bool MeasureMoving(const BenchPlan& plan, BenchResults* results, Progress* progr
   return true;
 }
 
+// What the measurements of one view share; AddRow measures one configuration
+// with the plan's warm-up and frame counts and records it.
+struct ViewRun {
+  const BenchPlan& plan;
+  const BenchView& view;
+  const ImageF& reference;
+  Sample& sample;
+  BenchResults* results;
+  Progress* progress;
+
+  void AddRow(const Options& settings, const std::string& filterName, double scale) {
+    results->rows.push_back(Measure(sample, plan, settings, view.name, filterName, scale, reference,
+                                    plan.warmupFrames, plan.measuredFrames));
+    progress->Step(view.name + " " + filterName + " " + Num2(scale));
+  }
+};
+
+// Blit floor of one scale, from the scene colour of the row just measured:
+// same source region, same back-buffer size, linear filter.
+bool AddBlitFloorRow(ViewRun& run, BlitFloor& blit, float scale, std::string* error) {
+  const Image scene = run.sample.CapturedSceneColor();
+  const BenchRow& last = run.results->rows.back();
+  BenchRow row;
+  row.view = run.view.name;
+  row.filter = kBlitFloor;
+  row.scale = scale;
+  row.viewportW = last.viewportW;
+  row.viewportH = last.viewportH;
+  std::vector<double> ms;
+  Image image;
+  if (!blit.Run(scene, uint32_t(last.viewportW), uint32_t(last.viewportH), run.sample.BackBufferWidth(),
+                run.sample.BackBufferHeight(), run.plan.measuredFrames, &ms, &image, error))
+    return false;
+  row.gpuScale = Summarise(ms);
+  row.error = CompareImages(ToImage(image), run.reference);
+  run.results->rows.push_back(row);
+  run.progress->Step(run.view.name + " blit-floor " + Num2(scale));
+  return true;
+}
+
+// Native (dynamic resolution off, the full-resolution path of the original),
+// then every filter at every scale, with the blit floor after the first
+// filter (point in the default plans).
+bool MeasureSweep(ViewRun& run, const Options& o, std::string* error) {
+  Options native = o;
+  native.dynamicResolution = false;
+  native.filter = Filter::Point;
+  run.AddRow(native, "native", 1.0);
+  BlitFloor blit(run.sample.GetDevice());
+  const BenchPlan& plan = run.plan;
+  for (size_t fi = 0; fi < plan.filters.size(); ++fi) {
+    for (float scale : plan.scales) {
+      Options s = o;
+      s.dynamicResolution = true;
+      s.filter = plan.filters[fi];
+      s.scaleX = s.scaleY = scale;
+      run.AddRow(s, FilterOption(plan.filters[fi]), scale);
+      if (fi == 0 && !AddBlitFloorRow(run, blit, scale, error)) return false;
+    }
+  }
+  return true;
+}
+
+// One static view: reference, native, the sweep, and the claim rows when it
+// is the first view. Says on stderr what failed.
+bool MeasureView(const BenchPlan& plan, const BenchView& view, bool firstView, BenchResults* results,
+                 Progress* progress) {
+  std::string error;
+  ImageF reference;
+  BenchRow repeat;
+  if (!MakeReference(plan, view, &reference, &repeat, &error)) {
+    std::fprintf(stderr, "\nbench: reference for %s failed: %s\n", view.name.c_str(),
+                 error.c_str());
+    return false;
+  }
+  results->rows.push_back(repeat);
+  progress->Step(view.name + " reference");
+
+  Options o = ViewOptions(plan, view);
+  o.superSampling = std::any_of(plan.scales.begin(), plan.scales.end(),
+                                [](float s) { return s > 1.0f; });
+  Sample sample;
+  if (sample.Init(o, &error) != 0) {
+    std::fprintf(stderr, "\nbench: %s\n", error.c_str());
+    return false;
+  }
+  if (results->adapter.empty()) {
+    d3dl::ADAPTER_DESC adapter;
+    sample.GetDevice()->GetAdapterDesc(&adapter);
+    results->adapter = adapter.Description;
+    results->driver = adapter.Driver;
+  }
+  ViewRun run{plan, view, reference, sample, results, progress};
+  if (!MeasureSweep(run, o, &error)) {
+    std::fprintf(stderr, "\nbench: %s\n", error.c_str());
+    return false;
+  }
+  if (firstView && plan.claims) MeasureClaims(sample, plan, o, view, reference, results, progress);
+  results->validationMessages += sample.ValidationMessages();
+  sample.Shutdown();
+  return true;
+}
+
+// Progress steps: per view the reference, native, the sweep and one
+// blit-floor row per scale; claims on the first view; the moving camera
+// (reference, ghosting with its still captures, motion blur).
+size_t ProgressSteps(const BenchPlan& plan) {
+  const size_t perView = 2 + plan.filters.size() * plan.scales.size() + plan.scales.size();
+  const size_t moving = (plan.ghosting || plan.claims ? 1 : 0) + (plan.ghosting ? 8 : 0) + (plan.claims ? 2 : 0);
+  return plan.views.size() * perView + (plan.claims ? 8 : 0) + moving;
+}
+
 }  // namespace
 
 int RunBench(const BenchPlan& plan) {
@@ -560,90 +503,11 @@ int RunBench(const BenchPlan& plan) {
   }
   BenchResults results;
   results.plan = &plan;
-  // Per view: reference, native, the sweep and one blit-floor row per scale;
-  // claims on the first view; the moving camera (reference, ghosting, motion blur).
-  const size_t perView = 2 + plan.filters.size() * plan.scales.size() + plan.scales.size();
-  const size_t moving = (plan.ghosting || plan.claims ? 1 : 0) + (plan.ghosting ? 8 : 0) + (plan.claims ? 2 : 0);
-  Progress progress(plan.views.size() * perView + (plan.claims ? 8 : 0) + moving);
+  Progress progress(ProgressSteps(plan));
   const auto started = std::chrono::steady_clock::now();
 
-  for (size_t vi = 0; vi < plan.views.size(); ++vi) {
-    const BenchView& view = plan.views[vi];
-    std::string error;
-    ImageF reference;
-    BenchRow repeat;
-    if (!MakeReference(plan, view, &reference, &repeat, &error)) {
-      std::fprintf(stderr, "\nbench: reference for %s failed: %s\n", view.name.c_str(),
-                   error.c_str());
-      return 1;
-    }
-    results.rows.push_back(repeat);
-    progress.Step(view.name + " reference");
-
-    Options o = ViewOptions(plan, view);
-    o.superSampling = std::any_of(plan.scales.begin(), plan.scales.end(),
-                                  [](float s) { return s > 1.0f; });
-    Sample sample;
-    if (sample.Init(o, &error) != 0) {
-      std::fprintf(stderr, "\nbench: %s\n", error.c_str());
-      return 1;
-    }
-    if (results.adapter.empty()) {
-      d3dl::ADAPTER_DESC adapter;
-      sample.GetDevice()->GetAdapterDesc(&adapter);
-      results.adapter = adapter.Description;
-      results.driver = adapter.Driver;
-    }
-    auto measure = [&](const Options& settings, const std::string& filterName, double scale,
-                       Image* image = nullptr) {
-      results.rows.push_back(Measure(sample, plan, settings, view.name, filterName, scale, reference,
-                                     plan.warmupFrames, plan.measuredFrames, image));
-      progress.Step(view.name + " " + filterName + " " + Num2(scale));
-    };
-
-    // Native: dynamic resolution off, the full-resolution path of the original.
-    Options native = o;
-    native.dynamicResolution = false;
-    native.filter = Filter::Point;
-    measure(native, "native", 1.0);
-
-    BlitFloor blit(sample.GetDevice());
-    for (size_t fi = 0; fi < plan.filters.size(); ++fi) {
-      for (float scale : plan.scales) {
-        Options s = o;
-        s.dynamicResolution = true;
-        s.filter = plan.filters[fi];
-        s.scaleX = s.scaleY = scale;
-        measure(s, FilterOption(plan.filters[fi]), scale);
-        if (fi != 0) continue;
-        // Blit floor of this scale, from the scene colour the first filter
-        // (point in the default plans) rendered: same source region, same
-        // back-buffer size, linear filter.
-        const Image scene = sample.CapturedSceneColor();
-        const BenchRow& last = results.rows.back();
-        BenchRow row;
-        row.view = view.name;
-        row.filter = kBlitFloor;
-        row.scale = scale;
-        row.viewportW = last.viewportW;
-        row.viewportH = last.viewportH;
-        std::vector<double> ms;
-        Image image;
-        if (!blit.Run(scene, uint32_t(last.viewportW), uint32_t(last.viewportH), sample.BackBufferWidth(),
-                      sample.BackBufferHeight(), plan.measuredFrames, &ms, &image, &error)) {
-          std::fprintf(stderr, "\nbench: %s\n", error.c_str());
-          return 1;
-        }
-        row.gpuScale = Summarise(ms);
-        row.error = CompareImages(ToImage(image), reference);
-        results.rows.push_back(row);
-        progress.Step(view.name + " blit-floor " + Num2(scale));
-      }
-    }
-    if (vi == 0 && plan.claims) MeasureClaims(sample, plan, o, view, reference, &results, &progress);
-    results.validationMessages += sample.ValidationMessages();
-    sample.Shutdown();
-  }
+  for (size_t vi = 0; vi < plan.views.size(); ++vi)
+    if (!MeasureView(plan, plan.views[vi], vi == 0, &results, &progress)) return 1;
   if (plan.ghosting || plan.claims) {
     std::string error;
     if (!MeasureMoving(plan, &results, &progress, &error)) {

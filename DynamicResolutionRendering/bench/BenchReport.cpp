@@ -49,6 +49,17 @@ double MeanOver(const std::vector<BenchRow>& rows, const std::string& filter, do
   return n ? sum / n : std::nan("");
 }
 
+// Means over views for one filter and scale: PSNR, scale-pass and frame GPU medians.
+double MeanPsnr(const BenchResults& res, const std::string& filter, double scale) {
+  return MeanOver(res.rows, filter, scale, [](const BenchRow& r) { return r.error.psnr; });
+}
+double MeanScaleMs(const BenchResults& res, const std::string& filter, double scale) {
+  return MeanOver(res.rows, filter, scale, [](const BenchRow& r) { return r.gpuScale.median; });
+}
+double MeanFrameMs(const BenchResults& res, const std::string& filter, double scale) {
+  return MeanOver(res.rows, filter, scale, [](const BenchRow& r) { return r.gpuFrame.median; });
+}
+
 std::string Today() {
   std::time_t t = std::time(nullptr);
   char buf[32];
@@ -140,9 +151,9 @@ bool WritePlots(const BenchResults& res, const std::string& dir, std::string* er
     PlotSeries a{name, {}, {}}, b{name, {}, {}}, c{name, {}, {}};
     a.lines = b.lines = false;
     for (float s : plan.scales) {
-      const double psnr = MeanOver(res.rows, name, s, [](const BenchRow& r) { return r.error.psnr; });
-      const double scaleMs = MeanOver(res.rows, name, s, [](const BenchRow& r) { return r.gpuScale.median; });
-      const double frameMs = MeanOver(res.rows, name, s, [](const BenchRow& r) { return r.gpuFrame.median; });
+      const double psnr = MeanPsnr(res, name, s);
+      const double scaleMs = MeanScaleMs(res, name, s);
+      const double frameMs = MeanFrameMs(res, name, s);
       a.x.push_back(scaleMs), a.y.push_back(psnr);
       b.x.push_back(frameMs), b.y.push_back(psnr);
       c.x.push_back(s), c.y.push_back(frameMs);
@@ -201,12 +212,12 @@ void WriteTaaSettled(const BenchResults& res, std::ostringstream& md) {
   for (Filter f : taa) {
     md << "| " << FilterOption(f) << " |";
     for (float s : plan.scales)
-      md << ' ' << Num(MeanOver(res.rows, FilterOption(f), s, [](const BenchRow& r) { return r.error.psnr; }), 2) << " |";
+      md << ' ' << Num(MeanPsnr(res, FilterOption(f), s), 2) << " |";
     md << '\n';
   }
   md << "| point (for comparison) |";
   for (float s : plan.scales)
-    md << ' ' << Num(MeanOver(res.rows, "point", s, [](const BenchRow& r) { return r.error.psnr; }), 2) << " |";
+    md << ' ' << Num(MeanPsnr(res, "point", s), 2) << " |";
   md << "\n\n";
 }
 
@@ -215,137 +226,144 @@ void ClaimLine(std::ostringstream& md, const std::string& claim, const std::stri
   md << "| " << claim << " | " << ours << " | " << verdict << " |\n";
 }
 
+// Scale-pass cost of the filters relative to each other.
+void ClaimScalePassRatios(const BenchResults& res, std::ostringstream& md) {
+  const float cs = CostScale(*res.plan);
+  const double p = MeanScaleMs(res, "point", cs), b = MeanScaleMs(res, "bilinear", cs),
+               bc = MeanScaleMs(res, "bicubic", cs), t = MeanScaleMs(res, "taa", cs);
+  std::ostringstream o;
+  o << "at " << Num(cs, 2) << ": bilinear/point " << Num(b / p, 2) << ", bicubic/point " << Num(bc / p, 2)
+    << ", bicubic/bilinear " << Num(bc / b, 2) << ", taa/point " << Num(t / p, 2);
+  std::string v = "cannot measure (filters missing)";
+  if (std::isfinite(bc / b)) v = (bc / b >= 8.75 / 2 && bc / b <= 8.75 * 2) ? "agree (within 2x of 8.75)" : "disagree (not within 2x of 8.75)";
+  ClaimLine(md, "Bicubic costs ~7x bilinear (1/7 of its performance); bilinear = point", o.str(), v);
+}
+
+void ClaimPsClear(const BenchResults& res, std::ostringstream& md) {
+  const BenchRow* api = FindRow(res, "point api-clear");
+  const BenchRow* ps = FindRow(res, "point ps-clear");
+  const double a = Median(api, &BenchRow::gpuClear), p = Median(ps, &BenchRow::gpuClear);
+  std::ostringstream o;
+  o << "clear: ps " << Num(p, 3) << " vs api " << Num(a, 3) << " (frame " << Num(Median(ps, &BenchRow::gpuFrame), 3)
+    << " vs " << Num(Median(api, &BenchRow::gpuFrame), 3) << ")";
+  ClaimLine(md, "Pixel-shader clear of the viewport beats the API clear at 0.71x", o.str(),
+            !(std::isfinite(a) && std::isfinite(p)) ? "cannot measure" : p < a ? "agree" : "disagree");
+}
+
+// Super sampling: is the extra cost mostly clears?
+void ClaimSuperSampling(const BenchResults& res, std::ostringstream& md) {
+  const double nan = std::nan("");
+  auto pair = [&](const std::string& suffix, double* dFrame, double* dClear) {
+    const BenchRow* no = FindRow(res, "point 1.0 no-ss" + suffix);
+    const BenchRow* ss = FindRow(res, "point 1.0 ss-allowed" + suffix);
+    *dFrame = Median(ss, &BenchRow::gpuFrame) - Median(no, &BenchRow::gpuFrame);
+    *dClear = Median(ss, &BenchRow::gpuClear) - Median(no, &BenchRow::gpuClear);
+  };
+  double fApi = nan, cApi = nan, fPs = nan, cPs = nan;
+  pair(" api-clear", &fApi, &cApi);
+  pair("", &fPs, &cPs);
+  std::ostringstream o;
+  o << "2x RT allowed at scale 1.0, API clear: +" << Num(fApi, 3) << " frame, +" << Num(cApi, 3)
+    << " clear; pixel-shader clear: +" << Num(fPs, 3) << " frame, +" << Num(cPs, 3) << " clear";
+  std::string v = "cannot measure";
+  if (std::isfinite(fApi) && std::isfinite(cApi)) {
+    if (fApi <= 0.0) v = "cannot measure (no extra frame cost measured)";
+    else v = cApi / fApi >= 0.5 ? "agree (clear is " + Num(100 * cApi / fApi, 0) + " % of the extra cost)"
+                                 : "disagree (clear is " + Num(100 * cApi / fApi, 0) + " % of the extra cost)";
+  }
+  ClaimLine(md, "Super sampling (2x RT): the cost is mostly clearing the larger buffers", o.str(), v);
+}
+
+void ClaimFastTaa(const BenchResults& res, std::ostringstream& md) {
+  const double fast = Median(FindRow(res, "taa fast (motion blur on)"), &BenchRow::gpuScale);
+  const double vel = Median(FindRow(res, "taa velocity (motion blur off)"), &BenchRow::gpuScale);
+  const double saving = 1.0 - fast / vel;
+  std::ostringstream o;
+  o << "scale pass: fast " << Num(fast, 3) << ", velocity-reading " << Num(vel, 3) << "; saving "
+    << Num(100 * saving, 0) << " %";
+  ClaimLine(md, "Fast TAA (velocity in motion-blur alpha) ~40 % faster than the velocity-reading TAA", o.str(),
+            !std::isfinite(saving) ? "cannot measure"
+            : std::abs(saving - 0.40) <= 0.15 ? "agree (within 15 points of 40 %)"
+                                               : "disagree (not within 15 points of 40 %)");
+}
+
+// Motion blur at 0.71 close to native, and cheaper.
+void ClaimMotionBlur(const BenchResults& res, std::ostringstream& md) {
+  const BenchRow* n = FindRow(res, "motion-blur native");
+  const BenchRow* s = FindRow(res, "motion-blur 0.71");
+  std::ostringstream o;
+  o << "PSNR vs reference: 0.71 (bilinear) " << Num(Psnr(s), 2) << ", native " << Num(Psnr(n), 2)
+    << "; 0.71 vs native image " << Num(s ? s->psnrVsNative : std::nan(""), 2) << " dB; frame "
+    << Num(Median(s, &BenchRow::gpuFrame), 3) << " vs " << Num(Median(n, &BenchRow::gpuFrame), 3);
+  std::string v = "cannot measure";
+  if (n && s && std::isfinite(Psnr(n)) && std::isfinite(Psnr(s))) {
+    const bool close = Psnr(n) - Psnr(s) <= 2.0 || s->psnrVsNative >= 30.0;
+    const bool shorter = Median(s, &BenchRow::gpuFrame) < Median(n, &BenchRow::gpuFrame);
+    v = close && shorter ? "agree" : close ? "disagree (image close, frame not shorter)"
+                                             : "disagree (image differs: > 2 dB and < 30 dB vs native)";
+  }
+  ClaimLine(md, "Motion blur at 0.71x: nearly the same image as native, shorter frame", o.str(), v);
+}
+
+void ClaimTaaQuality(const BenchResults& res, std::ostringstream& md) {
+  const double t71 = MeanPsnr(res, "taa", 0.71), t10 = MeanPsnr(res, "taa", 1.0), nat = MeanPsnr(res, "native", 1.0);
+  std::ostringstream o;
+  o << "PSNR: taa 0.71 " << Num(t71, 2) << ", taa 1.0 " << Num(t10, 2) << ", native " << Num(nat, 2);
+  std::string v = "cannot measure";
+  if (std::isfinite(t71) && std::isfinite(nat)) v = nat - t71 <= 1.5 ? "agree (within 1.5 dB)" : "disagree (> 1.5 dB below native)";
+  ClaimLine(md, "TAA at 0.71x gives almost full-resolution quality", o.str(), v);
+  v = "cannot measure";
+  if (std::isfinite(t10) && std::isfinite(nat)) v = t10 > nat ? "agree" : "disagree";
+  ClaimLine(md, "TAA at >= 1.0x acts as anti-aliasing (better than native)", Num(t10 - nat, 2) + " dB vs native", v);
+}
+
+void ClaimBicubicQuality(const BenchResults& res, std::ostringstream& md) {
+  std::ostringstream o;
+  double d05 = std::nan(""), maxOther = -1e9;
+  for (float s : res.plan->scales) {
+    const double d = MeanPsnr(res, "bicubic", s) - MeanPsnr(res, "bilinear", s);
+    o << Num(s, 2) << ": " << Num(d, 2) << " dB; ";
+    if (std::abs(s - 0.5f) < 1e-4) d05 = d;
+    else if (s >= 0.71f && std::isfinite(d)) maxOther = std::max(maxOther, d);
+  }
+  std::string v = "cannot measure";
+  if (std::isfinite(d05)) v = d05 > 0 && d05 <= 1.5 && maxOther <= d05 ? "agree" : "disagree";
+  ClaimLine(md, "Bicubic only slightly better than bilinear, and only at 0.5x", "bicubic - bilinear PSNR: " + o.str(), v);
+}
+
+// Figure 11: frame time grows with the scale.
+void ClaimFrameTimeScaling(const BenchResults& res, std::ostringstream& md) {
+  std::ostringstream o;
+  bool mono = true;
+  double prev = -1;
+  for (float s : res.plan->scales) {
+    const double f = MeanFrameMs(res, "point", s);
+    o << Num(s, 2) << ": " << Num(f, 2) << "; ";
+    if (std::isfinite(f)) {
+      if (prev >= 0 && f < prev) mono = false;
+      prev = f;
+    }
+  }
+  ClaimLine(md, "Frame time scales with resolution (figure 11)", "point frame ms " + o.str(),
+            prev < 0 ? "cannot measure" : mono ? "agree (monotonic)" : "disagree (not monotonic)");
+}
+
 void WriteClaims(const BenchResults& res, std::ostringstream& md) {
   const BenchPlan& plan = *res.plan;
-  const double nan = std::nan("");
   md << "### Claims (article-figures.md) against this run\n\n"
         "Claim rows run on the first view (`" << (plan.views.empty() ? std::string("-") : plan.views.front().name)
      << "`) at scale 0.71 unless named otherwise; motion blur on the moving cinematic camera. "
         "Timings are GPU medians (ms). Verdicts are computed from the numbers; on a CPU "
         "rasteriser (lavapipe) timings say little about a GPU.\n\n"
         "| claim | our numbers | verdict |\n| --- | --- | --- |\n";
-  const float cs = CostScale(plan);
-  auto ms = [&](const std::string& f, double s) {
-    return MeanOver(res.rows, f, s, [](const BenchRow& r) { return r.gpuScale.median; });
-  };
-  auto psnrAt = [&](const std::string& f, double s) {
-    return MeanOver(res.rows, f, s, [](const BenchRow& r) { return r.error.psnr; });
-  };
-  // Scale-pass ratios.
-  {
-    const double p = ms("point", cs), b = ms("bilinear", cs), bc = ms("bicubic", cs), t = ms("taa", cs);
-    std::ostringstream o;
-    o << "at " << Num(cs, 2) << ": bilinear/point " << Num(b / p, 2) << ", bicubic/point " << Num(bc / p, 2)
-      << ", bicubic/bilinear " << Num(bc / b, 2) << ", taa/point " << Num(t / p, 2);
-    std::string v = "cannot measure (filters missing)";
-    if (std::isfinite(bc / b)) v = (bc / b >= 8.75 / 2 && bc / b <= 8.75 * 2) ? "agree (within 2x of 8.75)" : "disagree (not within 2x of 8.75)";
-    ClaimLine(md, "Bicubic costs ~7x bilinear (1/7 of its performance); bilinear = point", o.str(), v);
-  }
-  // PS clear vs API clear.
-  {
-    const BenchRow* api = FindRow(res, "point api-clear");
-    const BenchRow* ps = FindRow(res, "point ps-clear");
-    const double a = Median(api, &BenchRow::gpuClear), p = Median(ps, &BenchRow::gpuClear);
-    std::ostringstream o;
-    o << "clear: ps " << Num(p, 3) << " vs api " << Num(a, 3) << " (frame " << Num(Median(ps, &BenchRow::gpuFrame), 3)
-      << " vs " << Num(Median(api, &BenchRow::gpuFrame), 3) << ")";
-    ClaimLine(md, "Pixel-shader clear of the viewport beats the API clear at 0.71x", o.str(),
-              !(std::isfinite(a) && std::isfinite(p)) ? "cannot measure" : p < a ? "agree" : "disagree");
-  }
-  // Super sampling: extra cost mostly clears.
-  {
-    auto pair = [&](const std::string& suffix, double* dFrame, double* dClear) {
-      const BenchRow* no = FindRow(res, "point 1.0 no-ss" + suffix);
-      const BenchRow* ss = FindRow(res, "point 1.0 ss-allowed" + suffix);
-      *dFrame = Median(ss, &BenchRow::gpuFrame) - Median(no, &BenchRow::gpuFrame);
-      *dClear = Median(ss, &BenchRow::gpuClear) - Median(no, &BenchRow::gpuClear);
-    };
-    double fApi = nan, cApi = nan, fPs = nan, cPs = nan;
-    pair(" api-clear", &fApi, &cApi);
-    pair("", &fPs, &cPs);
-    std::ostringstream o;
-    o << "2x RT allowed at scale 1.0, API clear: +" << Num(fApi, 3) << " frame, +" << Num(cApi, 3)
-      << " clear; pixel-shader clear: +" << Num(fPs, 3) << " frame, +" << Num(cPs, 3) << " clear";
-    std::string v = "cannot measure";
-    if (std::isfinite(fApi) && std::isfinite(cApi)) {
-      if (fApi <= 0.0) v = "cannot measure (no extra frame cost measured)";
-      else v = cApi / fApi >= 0.5 ? "agree (clear is " + Num(100 * cApi / fApi, 0) + " % of the extra cost)"
-                                   : "disagree (clear is " + Num(100 * cApi / fApi, 0) + " % of the extra cost)";
-    }
-    ClaimLine(md, "Super sampling (2x RT): the cost is mostly clearing the larger buffers", o.str(), v);
-  }
-  // Fast TAA.
-  {
-    const double fast = Median(FindRow(res, "taa fast (motion blur on)"), &BenchRow::gpuScale);
-    const double vel = Median(FindRow(res, "taa velocity (motion blur off)"), &BenchRow::gpuScale);
-    const double saving = 1.0 - fast / vel;
-    std::ostringstream o;
-    o << "scale pass: fast " << Num(fast, 3) << ", velocity-reading " << Num(vel, 3) << "; saving "
-      << Num(100 * saving, 0) << " %";
-    ClaimLine(md, "Fast TAA (velocity in motion-blur alpha) ~40 % faster than the velocity-reading TAA", o.str(),
-              !std::isfinite(saving) ? "cannot measure"
-              : std::abs(saving - 0.40) <= 0.15 ? "agree (within 15 points of 40 %)"
-                                                 : "disagree (not within 15 points of 40 %)");
-  }
-  // Motion blur at 0.71 close to native.
-  {
-    const BenchRow* n = FindRow(res, "motion-blur native");
-    const BenchRow* s = FindRow(res, "motion-blur 0.71");
-    std::ostringstream o;
-    o << "PSNR vs reference: 0.71 (bilinear) " << Num(Psnr(s), 2) << ", native " << Num(Psnr(n), 2)
-      << "; 0.71 vs native image " << Num(s ? s->psnrVsNative : nan, 2) << " dB; frame "
-      << Num(Median(s, &BenchRow::gpuFrame), 3) << " vs " << Num(Median(n, &BenchRow::gpuFrame), 3);
-    std::string v = "cannot measure";
-    if (n && s && std::isfinite(Psnr(n)) && std::isfinite(Psnr(s))) {
-      const bool close = Psnr(n) - Psnr(s) <= 2.0 || s->psnrVsNative >= 30.0;
-      const bool shorter = Median(s, &BenchRow::gpuFrame) < Median(n, &BenchRow::gpuFrame);
-      v = close && shorter ? "agree" : close ? "disagree (image close, frame not shorter)"
-                                               : "disagree (image differs: > 2 dB and < 30 dB vs native)";
-    }
-    ClaimLine(md, "Motion blur at 0.71x: nearly the same image as native, shorter frame", o.str(), v);
-  }
-  // TAA quality.
-  {
-    const double t71 = psnrAt("taa", 0.71), t10 = psnrAt("taa", 1.0), nat = psnrAt("native", 1.0);
-    std::ostringstream o;
-    o << "PSNR: taa 0.71 " << Num(t71, 2) << ", taa 1.0 " << Num(t10, 2) << ", native " << Num(nat, 2);
-    std::string v = "cannot measure";
-    if (std::isfinite(t71) && std::isfinite(nat)) v = nat - t71 <= 1.5 ? "agree (within 1.5 dB)" : "disagree (> 1.5 dB below native)";
-    ClaimLine(md, "TAA at 0.71x gives almost full-resolution quality", o.str(), v);
-    v = "cannot measure";
-    if (std::isfinite(t10) && std::isfinite(nat)) v = t10 > nat ? "agree" : "disagree";
-    ClaimLine(md, "TAA at >= 1.0x acts as anti-aliasing (better than native)", Num(t10 - nat, 2) + " dB vs native", v);
-  }
-  // Bicubic vs bilinear quality.
-  {
-    std::ostringstream o;
-    double d05 = nan, maxOther = -1e9;
-    for (float s : plan.scales) {
-      const double d = psnrAt("bicubic", s) - psnrAt("bilinear", s);
-      o << Num(s, 2) << ": " << Num(d, 2) << " dB; ";
-      if (std::abs(s - 0.5f) < 1e-4) d05 = d;
-      else if (s >= 0.71f && std::isfinite(d)) maxOther = std::max(maxOther, d);
-    }
-    std::string v = "cannot measure";
-    if (std::isfinite(d05)) v = d05 > 0 && d05 <= 1.5 && maxOther <= d05 ? "agree" : "disagree";
-    ClaimLine(md, "Bicubic only slightly better than bilinear, and only at 0.5x", "bicubic - bilinear PSNR: " + o.str(), v);
-  }
-  // Figure 11.
-  {
-    std::ostringstream o;
-    bool mono = true;
-    double prev = -1;
-    for (float s : plan.scales) {
-      const double f = MeanOver(res.rows, "point", s, [](const BenchRow& r) { return r.gpuFrame.median; });
-      o << Num(s, 2) << ": " << Num(f, 2) << "; ";
-      if (std::isfinite(f)) {
-        if (prev >= 0 && f < prev) mono = false;
-        prev = f;
-      }
-    }
-    ClaimLine(md, "Frame time scales with resolution (figure 11)", "point frame ms " + o.str(),
-              prev < 0 ? "cannot measure" : mono ? "agree (monotonic)" : "disagree (not monotonic)");
-  }
+  ClaimScalePassRatios(res, md);
+  ClaimPsClear(res, md);
+  ClaimSuperSampling(res, md);
+  ClaimFastTaa(res, md);
+  ClaimMotionBlur(res, md);
+  ClaimTaaQuality(res, md);
+  ClaimBicubicQuality(res, md);
+  ClaimFrameTimeScaling(res, md);
   ClaimLine(md, "Power: halving the resolution cuts package power", "-", "cannot measure (no power counters)");
   ClaimLine(md, "Controller dS = k S (T - t)/T holds 30/60 FPS", "-", "not measured here (controller tests)");
   md << '\n';
@@ -397,11 +415,11 @@ bool WriteSummary(const BenchResults& res, const std::string& path, std::string*
   for (Filter f : plan.filters) {
     md << "| " << FilterOption(f) << " |";
     for (float s : plan.scales)
-      md << ' ' << Num(MeanOver(res.rows, FilterOption(f), s, [](const BenchRow& r) { return r.error.psnr; }), 2) << " |";
+      md << ' ' << Num(MeanPsnr(res, FilterOption(f), s), 2) << " |";
     md << '\n';
   }
   md << "| native (dynamic resolution off) | "
-     << Num(MeanOver(res.rows, "native", 1.0, [](const BenchRow& r) { return r.error.psnr; }), 2)
+     << Num(MeanPsnr(res, "native", 1.0), 2)
      << " (at 1.0) |\n\n";
 
   md << "### Scale-pass cost (GPU ms, median, mean over views)\n\n"
@@ -411,10 +429,10 @@ bool WriteSummary(const BenchResults& res, const std::string& path, std::string*
         "| filter | scale | ms | ratio to point | ratio to blit | article ratio to point (JP) |\n"
         "| --- | ---: | ---: | ---: | ---: | ---: |\n";
   const float costScale = CostScale(plan);
-  const double pointMs = MeanOver(res.rows, "point", costScale, [](const BenchRow& r) { return r.gpuScale.median; });
-  const double blitMs = MeanOver(res.rows, kBlitFloor, costScale, [](const BenchRow& r) { return r.gpuScale.median; });
+  const double pointMs = MeanScaleMs(res, "point", costScale);
+  const double blitMs = MeanScaleMs(res, kBlitFloor, costScale);
   auto costRow = [&](const std::string& name) {
-    const double ms = MeanOver(res.rows, name, costScale, [](const BenchRow& r) { return r.gpuScale.median; });
+    const double ms = MeanScaleMs(res, name, costScale);
     const double article = ArticleScaleRatio(name);
     md << "| " << name << " | " << Num(costScale, 2) << " | " << Num(ms, 3) << " | "
        << Num(pointMs > 0 ? ms / pointMs : std::nan(""), 2) << " | "
@@ -425,7 +443,7 @@ bool WriteSummary(const BenchResults& res, const std::string& path, std::string*
   for (Filter f : plan.filters) costRow(FilterOption(f));
   md << "\nPSNR of the blit floor itself (linear blit of the scene colour, no motion blur) by scale:";
   for (float s : plan.scales)
-    md << ' ' << Num(s, 2) << ": " << Num(MeanOver(res.rows, kBlitFloor, s, [](const BenchRow& r) { return r.error.psnr; }), 2) << " dB;";
+    md << ' ' << Num(s, 2) << ": " << Num(MeanPsnr(res, kBlitFloor, s), 2) << " dB;";
   md << "\n\n";
   WriteTaaSettled(res, md);
   WriteClaims(res, md);
@@ -434,7 +452,7 @@ bool WriteSummary(const BenchResults& res, const std::string& path, std::string*
         "| scale | frame ms | scene ms | wall ms |\n| ---: | ---: | ---: | ---: |\n";
   for (float s : plan.scales) {
     md << "| " << Num(s, 2) << " | "
-       << Num(MeanOver(res.rows, "point", s, [](const BenchRow& r) { return r.gpuFrame.median; }), 3) << " | "
+       << Num(MeanFrameMs(res, "point", s), 3) << " | "
        << Num(MeanOver(res.rows, "point", s, [](const BenchRow& r) { return r.gpuScene.median; }), 3) << " | "
        << Num(MeanOver(res.rows, "point", s, [](const BenchRow& r) { return r.wall.median; }), 3) << " |\n";
   }

@@ -4,7 +4,6 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
-#include <functional>
 #include <limits>
 
 #include <assimp/Importer.hpp>
@@ -137,8 +136,11 @@ void ModelData::Bounds(glm::vec3* mn, glm::vec3* mx) const {
   if (mn->x > mx->x) *mn = *mx = glm::vec3(0.f);
 }
 
-bool RepairMesh(MeshData* mesh, std::vector<std::string>* messages) {
-  const std::string who = "mesh '" + mesh->name + "'";
+namespace {
+
+// Drops the triangles with out-of-range indices, non-finite positions or no
+// area, and says how many of each went.
+void DropBadTriangles(MeshData* mesh, const std::string& who, std::vector<std::string>* messages) {
   auto& V = mesh->vertices;
   auto& I = mesh->indices;
   size_t badIndex = 0, badPos = 0, degenerate = 0;
@@ -162,12 +164,16 @@ bool RepairMesh(MeshData* mesh, std::vector<std::string>* messages) {
   if (badPos) messages->push_back(who + ": dropped " + std::to_string(badPos) + " triangles with non-finite (NaN/Inf) vertex positions");
   if (degenerate) messages->push_back(who + ": dropped " + std::to_string(degenerate) + " degenerate (zero-area) triangles");
   I.swap(kept);
+}
 
-  // Remove unreferenced vertices (among them every non-finite one).
+// Removes unreferenced vertices (among them every non-finite one), keeping
+// the others in the order of their first use.
+void CompactVertices(MeshData* mesh) {
+  auto& V = mesh->vertices;
   std::vector<uint32_t> remap(V.size(), UINT32_MAX);
   std::vector<SceneVertex> nv;
   nv.reserve(V.size());
-  for (uint32_t& idx : I) {
+  for (uint32_t& idx : mesh->indices) {
     if (remap[idx] == UINT32_MAX) {
       remap[idx] = static_cast<uint32_t>(nv.size());
       nv.push_back(V[idx]);
@@ -175,21 +181,47 @@ bool RepairMesh(MeshData* mesh, std::vector<std::string>* messages) {
     idx = remap[idx];
   }
   V.swap(nv);
-  if (I.empty()) return false;
+}
 
-  // Normals: accumulate face normals for the vertices whose normal is unusable.
+// For each vertex whose normal is unusable, the sum of its faces' normals
+// (zero for the others).
+std::vector<glm::vec3> FaceNormalSums(const MeshData& mesh, const std::vector<uint8_t>& needN) {
+  const auto& V = mesh.vertices;
+  const auto& I = mesh.indices;
   std::vector<glm::vec3> faceN(V.size(), glm::vec3(0.f));
-  std::vector<uint8_t> needN(V.size());
-  size_t fixedN = 0, fixedUV = 0, fixedT = 0;
-  for (size_t i = 0; i < V.size(); ++i) {
-    float l = glm::length(V[i].normal);
-    needN[i] = !Finite(V[i].normal) || !(l > 1e-6f);
-  }
   for (size_t t = 0; t < I.size(); t += 3) {
     glm::vec3 n = glm::cross(V[I[t + 1]].position - V[I[t]].position, V[I[t + 2]].position - V[I[t]].position);
     for (int k = 0; k < 3; ++k)
       if (needN[I[t + k]]) faceN[I[t + k]] += n;
   }
+  return faceN;
+}
+
+// Tangent frame: orthonormalised against the normal, rebuilt when unusable.
+void RepairTangentFrame(SceneVertex& v) {
+  glm::vec3 t = v.tangent - v.normal * glm::dot(v.normal, v.tangent);
+  float tl = glm::length(t);
+  if (!Finite(v.tangent) || !Finite(v.binormal) || !std::isfinite(tl) || tl < 1e-6f) {
+    OrthoBasis(v.normal, &v.tangent, &v.binormal);
+  } else {
+    t /= tl;
+    float hand = glm::dot(glm::cross(v.normal, t), v.binormal) < 0.f ? -1.f : 1.f;
+    v.tangent = t;
+    v.binormal = glm::cross(v.normal, t) * hand;
+  }
+}
+
+// Normals (rebuilt from the faces where missing), texture coordinates and
+// tangent frames made finite and unit length.
+void RepairVertexAttributes(MeshData* mesh, const std::string& who, std::vector<std::string>* messages) {
+  auto& V = mesh->vertices;
+  std::vector<uint8_t> needN(V.size());
+  size_t fixedN = 0, fixedUV = 0;
+  for (size_t i = 0; i < V.size(); ++i) {
+    float l = glm::length(V[i].normal);
+    needN[i] = !Finite(V[i].normal) || !(l > 1e-6f);
+  }
+  const std::vector<glm::vec3> faceN = FaceNormalSums(*mesh, needN);
   for (size_t i = 0; i < V.size(); ++i) {
     SceneVertex& v = V[i];
     if (needN[i]) {
@@ -200,23 +232,14 @@ bool RepairMesh(MeshData* mesh, std::vector<std::string>* messages) {
       v.normal = glm::normalize(v.normal);
     }
     if (!Finite(v.texcoord)) { v.texcoord = glm::vec2(0.f); ++fixedUV; }
-    // Tangent frame: orthonormalise against the normal, rebuild when unusable.
-    glm::vec3 t = v.tangent - v.normal * glm::dot(v.normal, v.tangent);
-    float tl = glm::length(t);
-    if (!Finite(v.tangent) || !Finite(v.binormal) || !std::isfinite(tl) || tl < 1e-6f) {
-      OrthoBasis(v.normal, &v.tangent, &v.binormal);
-      ++fixedT;
-    } else {
-      t /= tl;
-      float hand = glm::dot(glm::cross(v.normal, t), v.binormal) < 0.f ? -1.f : 1.f;
-      v.tangent = t;
-      v.binormal = glm::cross(v.normal, t) * hand;
-    }
+    RepairTangentFrame(v);  // silently: many files have no UVs, so no tangents
   }
   if (fixedN) messages->push_back(who + ": rebuilt " + std::to_string(fixedN) + " missing or non-finite normals");
   if (fixedUV) messages->push_back(who + ": replaced " + std::to_string(fixedUV) + " non-finite texture coordinates by 0");
-  (void)fixedT;  // tangents are rebuilt silently: many files have no UVs, so no tangents
+}
 
+void ComputeBounds(MeshData* mesh) {
+  const auto& V = mesh->vertices;
   glm::vec3 mn(std::numeric_limits<float>::max()), mx(-std::numeric_limits<float>::max());
   for (const auto& v : V) {
     mn = glm::min(mn, v.position);
@@ -228,6 +251,343 @@ bool RepairMesh(MeshData* mesh, std::vector<std::string>* messages) {
   float r2 = 0;
   for (const auto& v : V) r2 = std::max(r2, glm::dot(v.position - mesh->sphereCenter, v.position - mesh->sphereCenter));
   mesh->sphereRadius = std::sqrt(r2);
+}
+
+// Zeroes the non-finite positions and collapses the faces that use them, so
+// that the FindDegenerates step removes them. Returns how many faces it
+// collapsed. (Assimp's own FindInvalidData would drop a whole mesh for one NaN;
+// this drops only the faces using it.)
+size_t CollapseNonFiniteFaces(const aiScene* sc) {
+  size_t nanFaces = 0;
+  for (unsigned mi = 0; mi < sc->mNumMeshes; ++mi) {
+    aiMesh* am = sc->mMeshes[mi];
+    if (!am || !am->mVertices) continue;
+    std::vector<uint8_t> bad(am->mNumVertices, 0);
+    bool any = false;
+    for (unsigned v = 0; v < am->mNumVertices; ++v) {
+      aiVector3D& p = am->mVertices[v];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
+        bad[v] = 1;
+        any = true;
+        p = aiVector3D(0.f);
+      }
+    }
+    if (!any) continue;
+    for (unsigned f = 0; f < am->mNumFaces; ++f) {
+      aiFace& face = am->mFaces[f];
+      bool hit = false;
+      for (unsigned k = 0; k < face.mNumIndices; ++k) hit |= face.mIndices[k] < bad.size() && bad[face.mIndices[k]];
+      if (hit && face.mNumIndices > 0) {  // made degenerate: FindDegenerates removes it
+        for (unsigned k = 1; k < face.mNumIndices; ++k) face.mIndices[k] = face.mIndices[0];
+        ++nanFaces;
+      }
+    }
+  }
+  return nanFaces;
+}
+
+unsigned PostProcessFlags(const ModelLoadOptions& opts) {
+  if (opts.animationsOnly) return aiProcess_ValidateDataStructure;
+  return aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType |
+         aiProcess_FindDegenerates | aiProcess_GenSmoothNormals |
+         aiProcess_GenUVCoords | aiProcess_TransformUVCoords | aiProcess_CalcTangentSpace |
+         aiProcess_JoinIdenticalVertices | aiProcess_ImproveCacheLocality |
+         aiProcess_RemoveRedundantMaterials | aiProcess_FlipUVs;
+}
+
+// Reads the file and post-processes it; null (with *error set) when Assimp
+// cannot import it or it has no node hierarchy.
+const aiScene* ImportScene(Assimp::Importer& importer, const std::string& path, const ModelLoadOptions& opts,
+                           size_t* nanFaces, std::string* error) {
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  importer.SetPropertyBool(AI_CONFIG_PP_FD_REMOVE, true);
+  importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.f);
+  const aiScene* sc = nullptr;
+  try {
+    // Read without post-processing first: non-finite positions must go before
+    // the steps that sort vertices spatially.
+    sc = importer.ReadFile(path, 0);
+    if (sc && !opts.animationsOnly) *nanFaces = CollapseNonFiniteFaces(sc);
+    if (sc) sc = importer.ApplyPostProcessing(PostProcessFlags(opts));
+  } catch (const std::exception& e) {
+    *error = path + ": import failed (" + e.what() + ")";
+    return nullptr;
+  } catch (...) {
+    *error = path + ": import failed (unknown exception)";
+    return nullptr;
+  }
+  if (!sc) {
+    std::string e = importer.GetErrorString();
+    *error = path + ": Assimp could not import the file" + (e.empty() ? std::string() : " (" + e + ")");
+    return nullptr;
+  }
+  if (!sc->mRootNode) {
+    *error = path + ": the file has no node hierarchy";
+    return nullptr;
+  }
+  return sc;
+}
+
+// The mesh's vertices and triangles as they are in the file (not yet repaired).
+MeshData ConvertMesh(const aiScene* sc, const aiMesh* am, const std::string& name) {
+  MeshData m;
+  m.name = name;
+  m.material = am->mMaterialIndex < sc->mNumMaterials ? am->mMaterialIndex : 0;
+  m.vertices.resize(am->mNumVertices);
+  const bool hasUV = am->HasTextureCoords(0);
+  const bool hasTB = am->HasTangentsAndBitangents();
+  for (unsigned v = 0; v < am->mNumVertices; ++v) {
+    SceneVertex& sv = m.vertices[v];
+    sv.position = ToGlm(am->mVertices[v]);
+    sv.normal = am->HasNormals() ? ToGlm(am->mNormals[v]) : glm::vec3(std::nanf(""));
+    sv.texcoord = hasUV ? glm::vec2(am->mTextureCoords[0][v].x, am->mTextureCoords[0][v].y) : glm::vec2(0.f);
+    sv.tangent = hasTB ? ToGlm(am->mTangents[v]) : glm::vec3(0.f);
+    sv.binormal = hasTB ? ToGlm(am->mBitangents[v]) : glm::vec3(0.f);
+  }
+  m.indices.reserve(size_t(am->mNumFaces) * 3);
+  for (unsigned f = 0; f < am->mNumFaces; ++f) {
+    const aiFace& face = am->mFaces[f];
+    if (face.mNumIndices != 3) continue;
+    m.indices.insert(m.indices.end(), {face.mIndices[0], face.mIndices[1], face.mIndices[2]});
+  }
+  return m;
+}
+
+// Converts and repairs the triangle meshes; meshMap[i] becomes the index in
+// out->meshes of the file's mesh i, or -1 where it was skipped. False (with
+// *error set) when the model is over the size limits.
+bool ConvertMeshes(const aiScene* sc, const std::string& path, const ModelLoadOptions& opts, ModelData* out,
+                   std::vector<int>* meshMap, std::string* error) {
+  uint64_t totalV = 0, totalT = 0;
+  for (unsigned mi = 0; mi < sc->mNumMeshes; ++mi) {
+    const aiMesh* am = sc->mMeshes[mi];
+    std::string name = am->mName.length ? am->mName.C_Str() : "mesh" + std::to_string(mi);
+    if (!(am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) || !am->HasPositions() || am->mNumVertices == 0 ||
+        am->mNumFaces == 0) {
+      continue;  // points and lines are not drawn by this renderer
+    }
+    totalV += am->mNumVertices;
+    totalT += am->mNumFaces;
+    if (totalV > opts.maxVertices || totalT > opts.maxTriangles) {
+      *error = path + ": too large (more than " + std::to_string(opts.maxVertices) + " vertices or " +
+               std::to_string(opts.maxTriangles) + " triangles)";
+      return false;
+    }
+    MeshData m = ConvertMesh(sc, am, name);
+    if (!RepairMesh(&m, &out->warnings)) {
+      out->warnings.push_back("mesh '" + name + "': no valid triangles left, skipped");
+      continue;
+    }
+    (*meshMap)[mi] = static_cast<int>(out->meshes.size());
+    out->meshes.push_back(std::move(m));
+  }
+  return true;
+}
+
+// Diffuse colour (with opacity), made finite and clamped to [0, 16] (alpha to [0, 1]).
+glm::vec4 DiffuseColor(const aiMaterial* am) {
+  glm::vec4 color = MaterialData{}.diffuseColor;
+  aiColor4D c;
+  if (am->Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS || am->Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS)
+    color = glm::vec4(c.r, c.g, c.b, c.a);
+  float opacity = 1.f;
+  if (am->Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && std::isfinite(opacity) && opacity < 1.f && opacity > 0.f) {
+    color.a *= opacity;
+  }
+  for (int k = 0; k < 4; ++k)
+    if (!std::isfinite(color[k])) color[k] = 1.f;
+  color = glm::clamp(color, 0.f, 16.f);
+  color.a = std::min(color.a, 1.f);
+  return color;
+}
+
+MaterialData ConvertMaterial(const aiScene* sc, const aiMaterial* am, const fs::path& folder) {
+  MaterialData md;
+  aiString n;
+  if (am->Get(AI_MATKEY_NAME, n) == AI_SUCCESS) md.name = n.C_Str();
+  md.diffuseTex = TexRef(sc, am, aiTextureType_DIFFUSE, folder);
+  if (md.diffuseTex.empty()) md.diffuseTex = TexRef(sc, am, aiTextureType_BASE_COLOR, folder);
+  md.normalTex = TexRef(sc, am, aiTextureType_NORMALS, folder);
+  md.specularTex = TexRef(sc, am, aiTextureType_SPECULAR, folder);
+  md.diffuseColor = DiffuseColor(am);
+  int two = 0;
+  if (am->Get(AI_MATKEY_TWOSIDED, two) == AI_SUCCESS) md.twoSided = two != 0;
+  aiString alphaMode;
+  if (am->Get("$mat.gltf.alphaMode", 0, 0, alphaMode) == AI_SUCCESS) md.alphaBlend = std::string(alphaMode.C_Str()) == "BLEND";
+  return md;
+}
+
+// The file's materials, at least one (a default when the file has none).
+void ConvertMaterials(const aiScene* sc, const fs::path& folder, ModelData* out) {
+  for (unsigned i = 0; i < std::max(1u, sc->mNumMaterials); ++i) {
+    MaterialData md = i < sc->mNumMaterials ? ConvertMaterial(sc, sc->mMaterials[i], folder) : MaterialData{};
+    if (md.name.empty()) md.name = "material" + std::to_string(i);
+    out->materials.push_back(std::move(md));
+  }
+}
+
+// A compressed texture keeps its file bytes; an uncompressed one becomes RGBA8
+// (left empty when over 2^28 texels).
+EmbeddedTexture ConvertEmbeddedTexture(const aiTexture* t) {
+  EmbeddedTexture et;
+  if (!t || !t->pcData) return et;
+  if (t->mHeight == 0) {
+    et.hint = t->achFormatHint;
+    et.bytes.assign(reinterpret_cast<const uint8_t*>(t->pcData), reinterpret_cast<const uint8_t*>(t->pcData) + t->mWidth);
+  } else if (uint64_t(t->mWidth) * t->mHeight <= (1ull << 28)) {
+    et.width = t->mWidth;
+    et.height = t->mHeight;
+    et.bytes.resize(size_t(t->mWidth) * t->mHeight * 4);
+    for (size_t p = 0; p < size_t(t->mWidth) * t->mHeight; ++p) {
+      const aiTexel& x = t->pcData[p];
+      et.bytes[p * 4 + 0] = x.r; et.bytes[p * 4 + 1] = x.g; et.bytes[p * 4 + 2] = x.b; et.bytes[p * 4 + 3] = x.a;
+    }
+  }
+  return et;
+}
+
+NodeData ConvertNode(const aiNode* n, int parent, const std::vector<int>& meshMap, std::vector<std::string>* warnings) {
+  NodeData nd;
+  nd.name = n->mName.C_Str();
+  nd.parent = parent;
+  nd.local = ToGlm(n->mTransformation);
+  for (int k = 0; k < 16; ++k)
+    if (!std::isfinite(glm::value_ptr(nd.local)[k])) {
+      warnings->push_back("node '" + nd.name + "': non-finite transform replaced by identity");
+      nd.local = glm::mat4(1.f);
+      break;
+    }
+  aiVector3D s, p;
+  aiQuaternion r;
+  n->mTransformation.Decompose(s, r, p);
+  nd.baseT = ToGlm(p);
+  nd.baseS = ToGlm(s);
+  nd.baseR = glm::quat(r.w, r.x, r.y, r.z);
+  if (!Finite(nd.baseT) || !Finite(nd.baseS) || !std::isfinite(nd.baseR.w)) {
+    nd.baseT = glm::vec3(0.f); nd.baseS = glm::vec3(1.f); nd.baseR = glm::quat(1, 0, 0, 0);
+  }
+  for (unsigned k = 0; k < n->mNumMeshes; ++k)
+    if (n->mMeshes[k] < meshMap.size() && meshMap[n->mMeshes[k]] >= 0) nd.meshes.push_back(meshMap[n->mMeshes[k]]);
+  return nd;
+}
+
+// Node hierarchy, depth first (parents before children).
+void AddNodes(const aiNode* n, int parent, int depth, const std::vector<int>& meshMap, ModelData* out) {
+  if (depth > 256) {
+    out->warnings.push_back("node hierarchy deeper than 256 levels, truncated");
+    return;
+  }
+  int self = static_cast<int>(out->nodes.size());
+  out->nodes.push_back(ConvertNode(n, parent, meshMap, &out->warnings));
+  for (unsigned c = 0; c < n->mNumChildren; ++c)
+    if (n->mChildren[c]) AddNodes(n->mChildren[c], self, depth + 1, meshMap, out);
+}
+
+// Appends the finite, time-ordered keys (times in seconds); *maxKey grows to the latest.
+void AddVectorKeys(const aiVectorKey* keys, unsigned n, double tps, std::vector<VecKey>* dst, double* maxKey) {
+  for (unsigned k = 0; k < n; ++k) {
+    double t = keys[k].mTime / tps;
+    glm::vec3 v = ToGlm(keys[k].mValue);
+    if (!std::isfinite(t) || !Finite(v)) continue;
+    if (!dst->empty() && t < dst->back().time) continue;  // keys must be sorted
+    dst->push_back({t, v});
+    *maxKey = std::max(*maxKey, t);
+  }
+}
+
+// The same for rotations, normalised; zero-length ones are dropped.
+void AddRotationKeys(const aiQuatKey* keys, unsigned n, double tps, std::vector<QuatKey>* dst, double* maxKey) {
+  for (unsigned k = 0; k < n; ++k) {
+    double t = keys[k].mTime / tps;
+    const aiQuaternion& q = keys[k].mValue;
+    glm::quat g(q.w, q.x, q.y, q.z);
+    float l = glm::length(g);
+    if (!std::isfinite(t) || !std::isfinite(l) || l < 1e-6f) continue;
+    if (!dst->empty() && t < dst->back().time) continue;
+    dst->push_back({t, g / l});
+    *maxKey = std::max(*maxKey, t);
+  }
+}
+
+// The channels whose node the model has; the duration in seconds.
+AnimationData ConvertAnimation(const aiAnimation* an, const ModelData& model) {
+  AnimationData ad;
+  ad.name = an->mName.C_Str();
+  double tps = an->mTicksPerSecond > 0 && std::isfinite(an->mTicksPerSecond) ? an->mTicksPerSecond : 25.0;
+  double maxKey = 0;
+  for (unsigned c = 0; c < an->mNumChannels; ++c) {
+    const aiNodeAnim* na = an->mChannels[c];
+    NodeChannel ch;
+    ch.node = model.FindNode(na->mNodeName.C_Str());
+    if (ch.node < 0) continue;
+    AddVectorKeys(na->mPositionKeys, na->mNumPositionKeys, tps, &ch.positions, &maxKey);
+    AddVectorKeys(na->mScalingKeys, na->mNumScalingKeys, tps, &ch.scalings, &maxKey);
+    AddRotationKeys(na->mRotationKeys, na->mNumRotationKeys, tps, &ch.rotations, &maxKey);
+    ad.channels.push_back(std::move(ch));
+  }
+  double dur = an->mDuration / tps;
+  ad.duration = std::isfinite(dur) && dur > 0 ? std::max(dur, maxKey) : maxKey;
+  return ad;
+}
+
+CameraData ConvertCamera(const aiCamera* c, const ModelData& model, bool isGltf) {
+  CameraData cd;
+  cd.name = c->mName.C_Str();
+  cd.node = model.FindNode(cd.name);
+  cd.position = ToGlm(c->mPosition);
+  cd.lookAt = ToGlm(c->mLookAt);
+  cd.up = ToGlm(c->mUp);
+  if (!Finite(cd.position)) cd.position = glm::vec3(0.f);
+  // A glTF camera sits at its node's origin looking down -Z (spec); Assimp 5.2
+  // copies the node's translation into mPosition as well, which would apply it twice.
+  if (isGltf && cd.node >= 0) cd.position = glm::vec3(0.f);
+  if (!Finite(cd.lookAt) || glm::length(cd.lookAt) < 1e-6f) cd.lookAt = glm::vec3(0, 0, -1);
+  if (!Finite(cd.up) || glm::length(cd.up) < 1e-6f) cd.up = glm::vec3(0, 1, 0);
+  float hfov = c->mHorizontalFOV, aspect = c->mAspect;
+  if (std::isfinite(hfov) && hfov > 0.01f && hfov < 3.1f) {
+    if (isGltf && std::isfinite(aspect) && aspect > 0.01f)
+      cd.fovY = hfov / aspect;  // Assimp 5.2's glTF importer stores yfov * aspectRatio as the horizontal FOV
+    else
+      cd.fovY = (std::isfinite(aspect) && aspect > 0.01f) ? 2.f * std::atan(std::tan(hfov * 0.5f) / aspect) : hfov;
+  }
+  return cd;
+}
+
+bool IsGltfFile(const std::string& path) {
+  std::string lowerExt = fs::path(path).extension().string();
+  for (auto& c : lowerExt) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return lowerExt == ".gltf" || lowerExt == ".glb";
+}
+
+// Everything but the import itself: meshes, materials, embedded textures
+// (unless only the animations are wanted), nodes, animations, cameras.
+bool ConvertScene(const aiScene* sc, const std::string& path, const ModelLoadOptions& opts, ModelData* out,
+                  std::string* error) {
+  std::vector<int> meshMap(sc->mNumMeshes, -1);
+  if (!opts.animationsOnly) {
+    if (!ConvertMeshes(sc, path, opts, out, &meshMap, error)) return false;
+    ConvertMaterials(sc, fs::path(path).parent_path(), out);
+    for (unsigned i = 0; i < sc->mNumTextures; ++i) out->embedded.push_back(ConvertEmbeddedTexture(sc->mTextures[i]));
+  }
+  AddNodes(sc->mRootNode, -1, 0, meshMap, out);
+  for (unsigned ai = 0; ai < sc->mNumAnimations; ++ai) {
+    AnimationData ad = ConvertAnimation(sc->mAnimations[ai], *out);
+    if (!ad.channels.empty()) out->animations.push_back(std::move(ad));
+  }
+  const bool isGltf = IsGltfFile(path);
+  for (unsigned ci = 0; ci < sc->mNumCameras; ++ci) out->cameras.push_back(ConvertCamera(sc->mCameras[ci], *out, isGltf));
+  return true;
+}
+
+}  // namespace
+
+bool RepairMesh(MeshData* mesh, std::vector<std::string>* messages) {
+  const std::string who = "mesh '" + mesh->name + "'";
+  DropBadTriangles(mesh, who, messages);
+  CompactVertices(mesh);
+  if (mesh->indices.empty()) return false;
+  RepairVertexAttributes(mesh, who, messages);
+  ComputeBounds(mesh);
   return true;
 }
 
@@ -240,274 +600,17 @@ bool LoadModel(const std::string& path, const ModelLoadOptions& opts, ModelData*
     return false;
   }
   Assimp::Importer importer;
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  importer.SetPropertyBool(AI_CONFIG_PP_FD_REMOVE, true);
-  importer.SetPropertyFloat(AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.f);
-  unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_SortByPType |
-                   aiProcess_FindDegenerates | aiProcess_GenSmoothNormals |
-                   aiProcess_GenUVCoords | aiProcess_TransformUVCoords | aiProcess_CalcTangentSpace |
-                   aiProcess_JoinIdenticalVertices | aiProcess_ImproveCacheLocality |
-                   aiProcess_RemoveRedundantMaterials | aiProcess_FlipUVs;
-  if (opts.animationsOnly) flags = aiProcess_ValidateDataStructure;
-  const aiScene* sc = nullptr;
   size_t nanFaces = 0;
-  try {
-    // Read without post-processing first: non-finite positions must go before
-    // the steps that sort vertices spatially (Assimp's own FindInvalidData
-    // would drop a whole mesh for one NaN; we drop only the faces using it).
-    sc = importer.ReadFile(path, 0);
-    if (sc && !opts.animationsOnly) {
-      for (unsigned mi = 0; mi < sc->mNumMeshes; ++mi) {
-        aiMesh* am = sc->mMeshes[mi];
-        if (!am || !am->mVertices) continue;
-        std::vector<uint8_t> bad(am->mNumVertices, 0);
-        bool any = false;
-        for (unsigned v = 0; v < am->mNumVertices; ++v) {
-          aiVector3D& p = am->mVertices[v];
-          if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-            bad[v] = 1;
-            any = true;
-            p = aiVector3D(0.f);
-          }
-        }
-        if (!any) continue;
-        for (unsigned f = 0; f < am->mNumFaces; ++f) {
-          aiFace& face = am->mFaces[f];
-          bool hit = false;
-          for (unsigned k = 0; k < face.mNumIndices; ++k) hit |= face.mIndices[k] < bad.size() && bad[face.mIndices[k]];
-          if (hit && face.mNumIndices > 0) {  // made degenerate: FindDegenerates removes it
-            for (unsigned k = 1; k < face.mNumIndices; ++k) face.mIndices[k] = face.mIndices[0];
-            ++nanFaces;
-          }
-        }
-      }
-    }
-    if (sc) sc = importer.ApplyPostProcessing(flags);
-  } catch (const std::exception& e) {
-    *error = path + ": import failed (" + e.what() + ")";
-    return false;
-  } catch (...) {
-    *error = path + ": import failed (unknown exception)";
-    return false;
-  }
-  if (!sc) {
-    std::string e = importer.GetErrorString();
-    *error = path + ": Assimp could not import the file" + (e.empty() ? std::string() : " (" + e + ")");
-    return false;
-  }
-  if (!sc->mRootNode) {
-    *error = path + ": the file has no node hierarchy";
-    return false;
-  }
-  const fs::path folder = fs::path(path).parent_path();
+  const aiScene* sc = ImportScene(importer, path, opts, &nanFaces, error);
+  if (!sc) return false;
   if (nanFaces)
     out->warnings.push_back("dropped " + std::to_string(nanFaces) + " faces with non-finite (NaN/Inf) vertex positions");
-  std::string lowerExt = fs::path(path).extension().string();
-  for (auto& c : lowerExt) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  const bool isGltf = lowerExt == ".gltf" || lowerExt == ".glb";
-
   try {
-    // Meshes.
-    std::vector<int> meshMap(sc->mNumMeshes, -1);
-    uint64_t totalV = 0, totalT = 0;
-    if (!opts.animationsOnly) {
-      for (unsigned mi = 0; mi < sc->mNumMeshes; ++mi) {
-        const aiMesh* am = sc->mMeshes[mi];
-        std::string name = am->mName.length ? am->mName.C_Str() : "mesh" + std::to_string(mi);
-        if (!(am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE) || !am->HasPositions() || am->mNumVertices == 0 ||
-            am->mNumFaces == 0) {
-          continue;  // points and lines are not drawn by this renderer
-        }
-        totalV += am->mNumVertices;
-        totalT += am->mNumFaces;
-        if (totalV > opts.maxVertices || totalT > opts.maxTriangles) {
-          *error = path + ": too large (more than " + std::to_string(opts.maxVertices) + " vertices or " +
-                   std::to_string(opts.maxTriangles) + " triangles)";
-          return false;
-        }
-        MeshData m;
-        m.name = name;
-        m.material = am->mMaterialIndex < sc->mNumMaterials ? am->mMaterialIndex : 0;
-        m.vertices.resize(am->mNumVertices);
-        const bool hasUV = am->HasTextureCoords(0);
-        const bool hasTB = am->HasTangentsAndBitangents();
-        for (unsigned v = 0; v < am->mNumVertices; ++v) {
-          SceneVertex& sv = m.vertices[v];
-          sv.position = ToGlm(am->mVertices[v]);
-          sv.normal = am->HasNormals() ? ToGlm(am->mNormals[v]) : glm::vec3(std::nanf(""));
-          sv.texcoord = hasUV ? glm::vec2(am->mTextureCoords[0][v].x, am->mTextureCoords[0][v].y) : glm::vec2(0.f);
-          sv.tangent = hasTB ? ToGlm(am->mTangents[v]) : glm::vec3(0.f);
-          sv.binormal = hasTB ? ToGlm(am->mBitangents[v]) : glm::vec3(0.f);
-        }
-        m.indices.reserve(size_t(am->mNumFaces) * 3);
-        for (unsigned f = 0; f < am->mNumFaces; ++f) {
-          const aiFace& face = am->mFaces[f];
-          if (face.mNumIndices != 3) continue;
-          m.indices.insert(m.indices.end(), {face.mIndices[0], face.mIndices[1], face.mIndices[2]});
-        }
-        if (!RepairMesh(&m, &out->warnings)) {
-          out->warnings.push_back("mesh '" + name + "': no valid triangles left, skipped");
-          continue;
-        }
-        meshMap[mi] = static_cast<int>(out->meshes.size());
-        out->meshes.push_back(std::move(m));
-      }
-      // Materials.
-      for (unsigned i = 0; i < std::max(1u, sc->mNumMaterials); ++i) {
-        MaterialData md;
-        if (i < sc->mNumMaterials) {
-          const aiMaterial* am = sc->mMaterials[i];
-          aiString n;
-          if (am->Get(AI_MATKEY_NAME, n) == AI_SUCCESS) md.name = n.C_Str();
-          md.diffuseTex = TexRef(sc, am, aiTextureType_DIFFUSE, folder);
-          if (md.diffuseTex.empty()) md.diffuseTex = TexRef(sc, am, aiTextureType_BASE_COLOR, folder);
-          md.normalTex = TexRef(sc, am, aiTextureType_NORMALS, folder);
-          md.specularTex = TexRef(sc, am, aiTextureType_SPECULAR, folder);
-          aiColor4D c;
-          if (am->Get(AI_MATKEY_BASE_COLOR, c) == AI_SUCCESS || am->Get(AI_MATKEY_COLOR_DIFFUSE, c) == AI_SUCCESS)
-            md.diffuseColor = glm::vec4(c.r, c.g, c.b, c.a);
-          float opacity = 1.f;
-          if (am->Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && std::isfinite(opacity) && opacity < 1.f && opacity > 0.f) {
-            md.diffuseColor.a *= opacity;
-          }
-          for (int k = 0; k < 4; ++k)
-            if (!std::isfinite(md.diffuseColor[k])) md.diffuseColor[k] = 1.f;
-          md.diffuseColor = glm::clamp(md.diffuseColor, 0.f, 16.f);
-          md.diffuseColor.a = std::min(md.diffuseColor.a, 1.f);
-          int two = 0;
-          if (am->Get(AI_MATKEY_TWOSIDED, two) == AI_SUCCESS) md.twoSided = two != 0;
-          aiString alphaMode;
-          if (am->Get("$mat.gltf.alphaMode", 0, 0, alphaMode) == AI_SUCCESS) md.alphaBlend = std::string(alphaMode.C_Str()) == "BLEND";
-        }
-        if (md.name.empty()) md.name = "material" + std::to_string(i);
-        out->materials.push_back(std::move(md));
-      }
-      // Embedded textures.
-      for (unsigned i = 0; i < sc->mNumTextures; ++i) {
-        const aiTexture* t = sc->mTextures[i];
-        EmbeddedTexture et;
-        if (t && t->pcData) {
-          if (t->mHeight == 0) {
-            et.hint = t->achFormatHint;
-            et.bytes.assign(reinterpret_cast<const uint8_t*>(t->pcData), reinterpret_cast<const uint8_t*>(t->pcData) + t->mWidth);
-          } else if (uint64_t(t->mWidth) * t->mHeight <= (1ull << 28)) {
-            et.width = t->mWidth;
-            et.height = t->mHeight;
-            et.bytes.resize(size_t(t->mWidth) * t->mHeight * 4);
-            for (size_t p = 0; p < size_t(t->mWidth) * t->mHeight; ++p) {
-              const aiTexel& x = t->pcData[p];
-              et.bytes[p * 4 + 0] = x.r; et.bytes[p * 4 + 1] = x.g; et.bytes[p * 4 + 2] = x.b; et.bytes[p * 4 + 3] = x.a;
-            }
-          }
-        }
-        out->embedded.push_back(std::move(et));
-      }
-    }
-
-    // Node hierarchy (depth first, parents before children).
-    std::function<void(const aiNode*, int, int)> walk = [&](const aiNode* n, int parent, int depth) {
-      if (depth > 256) {
-        out->warnings.push_back("node hierarchy deeper than 256 levels, truncated");
-        return;
-      }
-      NodeData nd;
-      nd.name = n->mName.C_Str();
-      nd.parent = parent;
-      nd.local = ToGlm(n->mTransformation);
-      for (int k = 0; k < 16; ++k)
-        if (!std::isfinite(glm::value_ptr(nd.local)[k])) {
-          out->warnings.push_back("node '" + nd.name + "': non-finite transform replaced by identity");
-          nd.local = glm::mat4(1.f);
-          break;
-        }
-      aiVector3D s, p;
-      aiQuaternion r;
-      n->mTransformation.Decompose(s, r, p);
-      nd.baseT = ToGlm(p);
-      nd.baseS = ToGlm(s);
-      nd.baseR = glm::quat(r.w, r.x, r.y, r.z);
-      if (!Finite(nd.baseT) || !Finite(nd.baseS) || !std::isfinite(nd.baseR.w)) {
-        nd.baseT = glm::vec3(0.f); nd.baseS = glm::vec3(1.f); nd.baseR = glm::quat(1, 0, 0, 0);
-      }
-      for (unsigned k = 0; k < n->mNumMeshes; ++k)
-        if (n->mMeshes[k] < meshMap.size() && meshMap[n->mMeshes[k]] >= 0) nd.meshes.push_back(meshMap[n->mMeshes[k]]);
-      int self = static_cast<int>(out->nodes.size());
-      out->nodes.push_back(std::move(nd));
-      for (unsigned c = 0; c < n->mNumChildren; ++c)
-        if (n->mChildren[c]) walk(n->mChildren[c], self, depth + 1);
-    };
-    walk(sc->mRootNode, -1, 0);
-
-    // Animations.
-    for (unsigned ai = 0; ai < sc->mNumAnimations; ++ai) {
-      const aiAnimation* an = sc->mAnimations[ai];
-      AnimationData ad;
-      ad.name = an->mName.C_Str();
-      double tps = an->mTicksPerSecond > 0 && std::isfinite(an->mTicksPerSecond) ? an->mTicksPerSecond : 25.0;
-      double maxKey = 0;
-      for (unsigned c = 0; c < an->mNumChannels; ++c) {
-        const aiNodeAnim* na = an->mChannels[c];
-        NodeChannel ch;
-        ch.node = out->FindNode(na->mNodeName.C_Str());
-        if (ch.node < 0) continue;
-        auto addV = [&](const aiVectorKey* keys, unsigned n, std::vector<VecKey>* dst) {
-          for (unsigned k = 0; k < n; ++k) {
-            double t = keys[k].mTime / tps;
-            glm::vec3 v = ToGlm(keys[k].mValue);
-            if (!std::isfinite(t) || !Finite(v)) continue;
-            if (!dst->empty() && t < dst->back().time) continue;  // keys must be sorted
-            dst->push_back({t, v});
-            maxKey = std::max(maxKey, t);
-          }
-        };
-        addV(na->mPositionKeys, na->mNumPositionKeys, &ch.positions);
-        addV(na->mScalingKeys, na->mNumScalingKeys, &ch.scalings);
-        for (unsigned k = 0; k < na->mNumRotationKeys; ++k) {
-          double t = na->mRotationKeys[k].mTime / tps;
-          const aiQuaternion& q = na->mRotationKeys[k].mValue;
-          glm::quat g(q.w, q.x, q.y, q.z);
-          float l = glm::length(g);
-          if (!std::isfinite(t) || !std::isfinite(l) || l < 1e-6f) continue;
-          if (!ch.rotations.empty() && t < ch.rotations.back().time) continue;
-          ch.rotations.push_back({t, g / l});
-          maxKey = std::max(maxKey, t);
-        }
-        ad.channels.push_back(std::move(ch));
-      }
-      double dur = an->mDuration / tps;
-      ad.duration = std::isfinite(dur) && dur > 0 ? std::max(dur, maxKey) : maxKey;
-      if (!ad.channels.empty()) out->animations.push_back(std::move(ad));
-    }
-
-    // Cameras.
-    for (unsigned ci = 0; ci < sc->mNumCameras; ++ci) {
-      const aiCamera* c = sc->mCameras[ci];
-      CameraData cd;
-      cd.name = c->mName.C_Str();
-      cd.node = out->FindNode(cd.name);
-      cd.position = ToGlm(c->mPosition);
-      cd.lookAt = ToGlm(c->mLookAt);
-      cd.up = ToGlm(c->mUp);
-      if (!Finite(cd.position)) cd.position = glm::vec3(0.f);
-      // A glTF camera sits at its node's origin looking down -Z (spec); Assimp 5.2
-      // copies the node's translation into mPosition as well, which would apply it twice.
-      if (isGltf && cd.node >= 0) cd.position = glm::vec3(0.f);
-      if (!Finite(cd.lookAt) || glm::length(cd.lookAt) < 1e-6f) cd.lookAt = glm::vec3(0, 0, -1);
-      if (!Finite(cd.up) || glm::length(cd.up) < 1e-6f) cd.up = glm::vec3(0, 1, 0);
-      float hfov = c->mHorizontalFOV, aspect = c->mAspect;
-      if (std::isfinite(hfov) && hfov > 0.01f && hfov < 3.1f) {
-        if (isGltf && std::isfinite(aspect) && aspect > 0.01f)
-          cd.fovY = hfov / aspect;  // Assimp 5.2's glTF importer stores yfov * aspectRatio as the horizontal FOV
-        else
-          cd.fovY = (std::isfinite(aspect) && aspect > 0.01f) ? 2.f * std::atan(std::tan(hfov * 0.5f) / aspect) : hfov;
-      }
-      out->cameras.push_back(cd);
-    }
+    if (!ConvertScene(sc, path, opts, out, error)) return false;
   } catch (const std::bad_alloc&) {
     *error = path + ": out of memory while converting the model";
     return false;
   }
-
   if (!opts.animationsOnly && out->meshes.empty() && out->cameras.empty()) {
     *error = path + ": no triangle meshes in the file (nothing to draw)";
     return false;

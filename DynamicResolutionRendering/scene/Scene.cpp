@@ -137,7 +137,14 @@ struct SceneImpl {
     if (opts.verbose) std::printf("scene: warning: %s\n", w.c_str());
   }
   bool CreateShaders(std::string* error);
+  bool ReadEntries(const std::string& path, bool single, std::string* error);
   bool LoadEntry(Entry& e, TextureCache& cache, std::string* error);
+  bool UploadMesh(const Entry& e, const MeshData& m, GpuMesh* g, std::string* error);
+  bool UploadMaterials(Entry& e, TextureCache& cache, std::string* error);
+  bool CreateConstantBuffers();
+  bool CreateStates();
+  void ListCamerasAndBounds();
+  CameraRef AutomaticCamera() const;
   ComPtr<d3dl::ShaderResourceView> Upload(const std::shared_ptr<const TextureData>& t, std::string* error);
   d3dl::PixelShader* Variant(int v);
   bool VertexStage(int v, d3dl::VertexShader** shader, d3dl::InputLayout** il);
@@ -240,60 +247,48 @@ ComPtr<d3dl::ShaderResourceView> SceneImpl::Upload(const std::shared_ptr<const T
   return srv;
 }
 
-bool SceneImpl::LoadEntry(Entry& e, TextureCache& cache, std::string* error) {
-  if (!LoadModel(e.desc.meshFile, {}, &e.model, error)) return false;
-  if (!e.desc.animFile.empty() && fs::path(e.desc.animFile) != fs::path(e.desc.meshFile)) {
-    ModelData anim;
-    ModelLoadOptions ao;
-    ao.animationsOnly = true;
-    if (!LoadModel(e.desc.animFile, ao, &anim, error)) return false;
-    if (AttachAnimations(&e.model, anim) == 0)
-      Warn(e.desc.animFile + ": no animation channel matches a node of " + e.desc.meshFile);
+bool SceneImpl::UploadMesh(const Entry& e, const MeshData& m, GpuMesh* g, std::string* error) {
+  d3dl::BUFFER_DESC bd;
+  bd.ByteWidth = UINT(m.vertices.size() * sizeof(SceneVertex));
+  bd.Usage = d3dl::USAGE_IMMUTABLE;
+  bd.BindFlags = d3dl::BIND_VERTEX_BUFFER;
+  d3dl::SUBRESOURCE_DATA vd;
+  vd.pSysMem = m.vertices.data();
+  if (FAILED(device->CreateBuffer(&bd, &vd, g->vb.GetAddressOf()))) {
+    *error = e.desc.meshFile + ": vertex buffer creation failed for mesh '" + m.name + "'";
+    return false;
   }
-  for (const auto& w : e.model.warnings) Warn(e.desc.meshFile + ": " + w);
-  e.transform = e.desc.Transform();
-  // Meshes.
-  for (const MeshData& m : e.model.meshes) {
-    GpuMesh g;
-    d3dl::BUFFER_DESC bd;
-    bd.ByteWidth = UINT(m.vertices.size() * sizeof(SceneVertex));
-    bd.Usage = d3dl::USAGE_IMMUTABLE;
-    bd.BindFlags = d3dl::BIND_VERTEX_BUFFER;
-    d3dl::SUBRESOURCE_DATA vd;
-    vd.pSysMem = m.vertices.data();
-    if (FAILED(device->CreateBuffer(&bd, &vd, g.vb.GetAddressOf()))) {
-      *error = e.desc.meshFile + ": vertex buffer creation failed for mesh '" + m.name + "'";
-      return false;
-    }
-    std::vector<uint16_t> i16;
-    d3dl::SUBRESOURCE_DATA id;
-    if (m.Use16BitIndices()) {
-      i16.assign(m.indices.begin(), m.indices.end());
-      id.pSysMem = i16.data();
-      bd.ByteWidth = UINT(i16.size() * 2);
-      g.indexFormat = d3dl::DXGI_FORMAT_R16_UINT;
-    } else {
-      id.pSysMem = m.indices.data();
-      bd.ByteWidth = UINT(m.indices.size() * 4);
-      g.indexFormat = d3dl::DXGI_FORMAT_R32_UINT;
-    }
-    bd.BindFlags = d3dl::BIND_INDEX_BUFFER;
-    if (FAILED(device->CreateBuffer(&bd, &id, g.ib.GetAddressOf()))) {
-      *error = e.desc.meshFile + ": index buffer creation failed for mesh '" + m.name + "'";
-      return false;
-    }
-    g.vb->SetDebugName((e.desc.name + "/" + m.name + " VB").c_str());
-    g.ib->SetDebugName((e.desc.name + "/" + m.name + " IB").c_str());
-    stats.vertexBytes += m.vertices.size() * sizeof(SceneVertex);
-    stats.indexBytes += bd.ByteWidth;
-    stats.triangles += m.indices.size() / 3;
-    g.indexCount = UINT(m.indices.size());
-    g.material = m.material;
-    g.center = m.sphereCenter;
-    g.radius = m.sphereRadius;
-    e.meshes.push_back(std::move(g));
+  std::vector<uint16_t> i16;
+  d3dl::SUBRESOURCE_DATA id;
+  if (m.Use16BitIndices()) {
+    i16.assign(m.indices.begin(), m.indices.end());
+    id.pSysMem = i16.data();
+    bd.ByteWidth = UINT(i16.size() * 2);
+    g->indexFormat = d3dl::DXGI_FORMAT_R16_UINT;
+  } else {
+    id.pSysMem = m.indices.data();
+    bd.ByteWidth = UINT(m.indices.size() * 4);
+    g->indexFormat = d3dl::DXGI_FORMAT_R32_UINT;
   }
-  // Materials: only the textures that materials of drawn meshes use.
+  bd.BindFlags = d3dl::BIND_INDEX_BUFFER;
+  if (FAILED(device->CreateBuffer(&bd, &id, g->ib.GetAddressOf()))) {
+    *error = e.desc.meshFile + ": index buffer creation failed for mesh '" + m.name + "'";
+    return false;
+  }
+  g->vb->SetDebugName((e.desc.name + "/" + m.name + " VB").c_str());
+  g->ib->SetDebugName((e.desc.name + "/" + m.name + " IB").c_str());
+  stats.vertexBytes += m.vertices.size() * sizeof(SceneVertex);
+  stats.indexBytes += bd.ByteWidth;
+  stats.triangles += m.indices.size() / 3;
+  g->indexCount = UINT(m.indices.size());
+  g->material = m.material;
+  g->center = m.sphereCenter;
+  g->radius = m.sphereRadius;
+  return true;
+}
+
+// Only the textures that materials of drawn meshes use are uploaded.
+bool SceneImpl::UploadMaterials(Entry& e, TextureCache& cache, std::string* error) {
   std::vector<bool> used(e.model.materials.size(), false);
   for (const auto& m : e.model.meshes)
     if (m.material < used.size()) used[m.material] = true;
@@ -315,11 +310,148 @@ bool SceneImpl::LoadEntry(Entry& e, TextureCache& cache, std::string* error) {
     gm.tint = md.diffuseColor;
     psWanted[VariantIndex(gm.hasNormal, gm.hasSpecular, true)] = true;
   }
+  return true;
+}
+
+bool SceneImpl::LoadEntry(Entry& e, TextureCache& cache, std::string* error) {
+  if (!LoadModel(e.desc.meshFile, {}, &e.model, error)) return false;
+  if (!e.desc.animFile.empty() && fs::path(e.desc.animFile) != fs::path(e.desc.meshFile)) {
+    ModelData anim;
+    ModelLoadOptions ao;
+    ao.animationsOnly = true;
+    if (!LoadModel(e.desc.animFile, ao, &anim, error)) return false;
+    if (AttachAnimations(&e.model, anim) == 0)
+      Warn(e.desc.animFile + ": no animation channel matches a node of " + e.desc.meshFile);
+  }
+  for (const auto& w : e.model.warnings) Warn(e.desc.meshFile + ": " + w);
+  e.transform = e.desc.Transform();
+  for (const MeshData& m : e.model.meshes) {
+    GpuMesh g;
+    if (!UploadMesh(e, m, &g, error)) return false;
+    e.meshes.push_back(std::move(g));
+  }
+  if (!UploadMaterials(e, cache, error)) return false;
   // Draw items: every (node, mesh) pair.
   for (size_t n = 0; n < e.model.nodes.size(); ++n)
     for (uint32_t m : e.model.nodes[n].meshes) e.items.push_back({int(n), int(m), glm::mat4(1.f), false});
   e.model.Evaluate(0.0, &e.globals, e.desc.loopSeconds);
   return true;
+}
+
+// Entries: from a description, or one LIT entry for a single model file.
+bool SceneImpl::ReadEntries(const std::string& path, bool single, std::string* error) {
+  if (single) {
+    Entry e;
+    e.desc.meshPath = path;
+    e.desc.meshFile = path;
+    e.desc.type = EntryType::Lit;
+    e.desc.name = fs::path(path).stem().string();
+    entries.push_back(std::move(e));
+    return true;
+  }
+  SceneDescription desc;
+  if (!LoadSceneDescription(path, {}, &desc, error)) return false;
+  for (auto& d : desc.entries) {
+    Entry e;
+    e.desc = d;
+    entries.push_back(std::move(e));
+  }
+  return true;
+}
+
+bool SceneImpl::CreateConstantBuffers() {
+  d3dl::BUFFER_DESC cb;
+  cb.ByteWidth = sizeof(ObjectConstants);
+  cb.Usage = d3dl::USAGE_DYNAMIC;
+  cb.BindFlags = d3dl::BIND_CONSTANT_BUFFER;
+  cb.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
+  bool ok = SUCCEEDED(device->CreateBuffer(&cb, nullptr, objectCB.GetAddressOf()));
+  LightingConstants lit{{1.58f, 1.36f, 0.74f, 0.f}, {0.42f, 0.44f, 0.46f, 0.f}, {1.30f, 1.18f, 0.78f, 16.f},
+                        {0.89f, -0.45f, 0.089f, 0.f}};
+  LightingConstants unlit{{0.f, 0.f, 0.f, 0.f}, {1.f, 1.f, 1.f, 0.f}, {0.f, 0.f, 0.f, 16.f}, {0.89f, -0.45f, 0.089f, 0.f}};
+  cb.ByteWidth = sizeof(LightingConstants);
+  cb.Usage = d3dl::USAGE_IMMUTABLE;
+  cb.CPUAccessFlags = 0;
+  d3dl::SUBRESOURCE_DATA init;
+  init.pSysMem = &lit;
+  ok = ok && SUCCEEDED(device->CreateBuffer(&cb, &init, litCB.GetAddressOf()));
+  init.pSysMem = &unlit;
+  ok = ok && SUCCEEDED(device->CreateBuffer(&cb, &init, unlitCB.GetAddressOf()));
+  return ok;
+}
+
+// Samplers, rasterizer, depth and blend states.
+bool SceneImpl::CreateStates() {
+  d3dl::SAMPLER_DESC sd;
+  const uint32_t anisotropy = opts.maxAnisotropy;
+  sd.Filter = anisotropy > 1 ? d3dl::FILTER_ANISOTROPIC : d3dl::FILTER_MIN_MAG_MIP_LINEAR;
+  sd.AddressU = sd.AddressV = sd.AddressW = d3dl::TEXTURE_ADDRESS_WRAP;
+  sd.MaxAnisotropy = std::clamp<uint32_t>(anisotropy, 1, 16);
+  sd.MinLOD = 0.f;
+  bool ok = SUCCEEDED(device->CreateSamplerState(&sd, samplerAniso.GetAddressOf()));
+  sd.MipLODBias = -0.5f;
+  ok = ok && SUCCEEDED(device->CreateSamplerState(&sd, samplerBias.GetAddressOf()));
+  d3dl::RASTERIZER_DESC rd;
+  rd.CullMode = d3dl::CULL_BACK;
+  rd.FrontCounterClockwise = 1;  // glTF / right-handed models: counter-clockwise front faces
+  ok = ok && SUCCEEDED(device->CreateRasterizerState(&rd, rsBack.GetAddressOf()));
+  rd.CullMode = d3dl::CULL_NONE;
+  ok = ok && SUCCEEDED(device->CreateRasterizerState(&rd, rsNone.GetAddressOf()));
+  d3dl::DEPTH_STENCIL_DESC dd;  // depth test LESS with writes
+  ok = ok && SUCCEEDED(device->CreateDepthStencilState(&dd, dsOpaque.GetAddressOf()));
+  dd.DepthWriteMask = d3dl::DEPTH_WRITE_MASK_ZERO;
+  ok = ok && SUCCEEDED(device->CreateDepthStencilState(&dd, dsDecal.GetAddressOf()));
+  d3dl::BLEND_DESC bd;
+  bd.IndependentBlendEnable = 1;
+  bd.RenderTarget[0].BlendEnable = 1;
+  bd.RenderTarget[0].SrcBlend = d3dl::BLEND_SRC_ALPHA;
+  bd.RenderTarget[0].DestBlend = d3dl::BLEND_INV_SRC_ALPHA;
+  bd.RenderTarget[0].SrcBlendAlpha = d3dl::BLEND_ZERO;
+  bd.RenderTarget[0].DestBlendAlpha = d3dl::BLEND_ONE;
+  bd.RenderTarget[1].RenderTargetWriteMask = 0;  // decals keep the surface's velocity
+  ok = ok && SUCCEEDED(device->CreateBlendState(&bd, bsDecal.GetAddressOf()));
+  return ok;
+}
+
+// CAMERA entries' cameras (each camera of the file, or the model's root), and
+// the world bounds of the entries that are drawn (the sky dome does not frame anything).
+void SceneImpl::ListCamerasAndBounds() {
+  glm::vec3 mn(1e30f), mx(-1e30f);
+  for (size_t i = 0; i < entries.size(); ++i) {
+    Entry& e = entries[i];
+    if (e.desc.type == EntryType::Camera) {
+      if (e.model.cameras.empty())
+        cameras.push_back({e.desc.name, int(i), -1, {}});
+      for (size_t c = 0; c < e.model.cameras.size(); ++c)
+        cameras.push_back({e.model.cameras[c].name.empty() ? e.desc.name : e.model.cameras[c].name, int(i), int(c), {}});
+    } else if (e.desc.type != EntryType::Unlit) {
+      glm::vec3 a, b;
+      e.model.Bounds(&a, &b);
+      for (int k = 0; k < 8; ++k) {
+        glm::vec3 p((k & 1) ? b.x : a.x, (k & 2) ? b.y : a.y, (k & 4) ? b.z : a.z);
+        glm::vec3 w = glm::vec3(e.transform * glm::vec4(p, 1.f));
+        mn = glm::min(mn, w);
+        mx = glm::max(mx, w);
+      }
+    }
+  }
+  if (mn.x > mx.x) mn = mx = glm::vec3(0.f);
+  boundsMin = mn;
+  boundsMax = mx;
+}
+
+// A camera that frames the scene's bounds from above and to the side.
+CameraRef SceneImpl::AutomaticCamera() const {
+  glm::vec3 center = (boundsMin + boundsMax) * 0.5f;
+  float radius = std::max(glm::length(boundsMax - boundsMin) * 0.5f, 1e-3f);
+  float dist = radius / std::sin(glm::radians(45.f) * 0.5f) * 1.1f;
+  CameraRef a;
+  a.name = "Automatic";
+  a.fixed.position = center + glm::normalize(glm::vec3(0.6f, 0.45f, 1.f)) * dist;
+  a.fixed.view = glm::lookAtRH(a.fixed.position, center, glm::vec3(0, 1, 0));
+  a.fixed.nearZ = std::max(dist - radius * 1.5f, dist * 0.01f);
+  a.fixed.farZ = std::max(dist + radius * 4.f, a.fixed.nearZ * 10.f);
+  return a;
 }
 
 // ---------------------------------------------------------------------------
@@ -341,121 +473,25 @@ std::unique_ptr<Scene> Scene::Load(d3dl::Device* device, const std::string& path
   if (opts.shaders) s.shaders = *opts.shaders;
   else s.shaders.Open(ShaderLibrary::DefaultSpvDir({}), ShaderLibrary::DefaultSourceDir());
 
-  // Entries: from a description, or one LIT entry for a single model file.
   const bool single = !IsSceneDescriptionPath(path);
-  if (single) {
-    Entry e;
-    e.desc.meshPath = path;
-    e.desc.meshFile = path;
-    e.desc.type = EntryType::Lit;
-    e.desc.name = fs::path(path).stem().string();
-    s.entries.push_back(std::move(e));
-  } else {
-    SceneDescription desc;
-    if (!LoadSceneDescription(path, {}, &desc, error)) return nullptr;
-    for (auto& d : desc.entries) {
-      Entry e;
-      e.desc = d;
-      s.entries.push_back(std::move(e));
-    }
-  }
+  if (!s.ReadEntries(path, single, error)) return nullptr;
   TextureCache cache;
   for (auto& e : s.entries)
     if (!s.LoadEntry(e, cache, error)) return nullptr;
   s.stats.texturesLoaded = uint32_t(cache.LoadedCount());
   if (!s.CreateShaders(error)) return nullptr;
-
-  // Constant buffers, samplers and states.
-  d3dl::BUFFER_DESC cb;
-  cb.ByteWidth = sizeof(ObjectConstants);
-  cb.Usage = d3dl::USAGE_DYNAMIC;
-  cb.BindFlags = d3dl::BIND_CONSTANT_BUFFER;
-  cb.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
-  bool ok = SUCCEEDED(device->CreateBuffer(&cb, nullptr, s.objectCB.GetAddressOf()));
-  LightingConstants lit{{1.58f, 1.36f, 0.74f, 0.f}, {0.42f, 0.44f, 0.46f, 0.f}, {1.30f, 1.18f, 0.78f, 16.f},
-                        {0.89f, -0.45f, 0.089f, 0.f}};
-  LightingConstants unlit{{0.f, 0.f, 0.f, 0.f}, {1.f, 1.f, 1.f, 0.f}, {0.f, 0.f, 0.f, 16.f}, {0.89f, -0.45f, 0.089f, 0.f}};
-  cb.ByteWidth = sizeof(LightingConstants);
-  cb.Usage = d3dl::USAGE_IMMUTABLE;
-  cb.CPUAccessFlags = 0;
-  d3dl::SUBRESOURCE_DATA init;
-  init.pSysMem = &lit;
-  ok = ok && SUCCEEDED(device->CreateBuffer(&cb, &init, s.litCB.GetAddressOf()));
-  init.pSysMem = &unlit;
-  ok = ok && SUCCEEDED(device->CreateBuffer(&cb, &init, s.unlitCB.GetAddressOf()));
-  d3dl::SAMPLER_DESC sd;
-  const uint32_t anisotropy = opts.maxAnisotropy;
-  sd.Filter = anisotropy > 1 ? d3dl::FILTER_ANISOTROPIC : d3dl::FILTER_MIN_MAG_MIP_LINEAR;
-  sd.AddressU = sd.AddressV = sd.AddressW = d3dl::TEXTURE_ADDRESS_WRAP;
-  sd.MaxAnisotropy = std::clamp<uint32_t>(anisotropy, 1, 16);
-  sd.MinLOD = 0.f;
-  ok = ok && SUCCEEDED(device->CreateSamplerState(&sd, s.samplerAniso.GetAddressOf()));
-  sd.MipLODBias = -0.5f;
-  ok = ok && SUCCEEDED(device->CreateSamplerState(&sd, s.samplerBias.GetAddressOf()));
-  d3dl::RASTERIZER_DESC rd;
-  rd.CullMode = d3dl::CULL_BACK;
-  rd.FrontCounterClockwise = 1;  // glTF / right-handed models: counter-clockwise front faces
-  ok = ok && SUCCEEDED(device->CreateRasterizerState(&rd, s.rsBack.GetAddressOf()));
-  rd.CullMode = d3dl::CULL_NONE;
-  ok = ok && SUCCEEDED(device->CreateRasterizerState(&rd, s.rsNone.GetAddressOf()));
-  d3dl::DEPTH_STENCIL_DESC dd;  // depth test LESS with writes
-  ok = ok && SUCCEEDED(device->CreateDepthStencilState(&dd, s.dsOpaque.GetAddressOf()));
-  dd.DepthWriteMask = d3dl::DEPTH_WRITE_MASK_ZERO;
-  ok = ok && SUCCEEDED(device->CreateDepthStencilState(&dd, s.dsDecal.GetAddressOf()));
-  d3dl::BLEND_DESC bd;
-  bd.IndependentBlendEnable = 1;
-  bd.RenderTarget[0].BlendEnable = 1;
-  bd.RenderTarget[0].SrcBlend = d3dl::BLEND_SRC_ALPHA;
-  bd.RenderTarget[0].DestBlend = d3dl::BLEND_INV_SRC_ALPHA;
-  bd.RenderTarget[0].SrcBlendAlpha = d3dl::BLEND_ZERO;
-  bd.RenderTarget[0].DestBlendAlpha = d3dl::BLEND_ONE;
-  bd.RenderTarget[1].RenderTargetWriteMask = 0;  // decals keep the surface's velocity
-  ok = ok && SUCCEEDED(device->CreateBlendState(&bd, s.bsDecal.GetAddressOf()));
-  if (!ok) {
+  if (!s.CreateConstantBuffers() || !s.CreateStates()) {
     *error = "scene: creating constant buffers or states failed";
     return nullptr;
   }
 
-  // Cameras: CAMERA entries (each camera of the file, or the model's root), then an automatic one if none.
-  glm::vec3 mn(1e30f), mx(-1e30f);
-  for (size_t i = 0; i < s.entries.size(); ++i) {
-    Entry& e = s.entries[i];
-    if (e.desc.type == EntryType::Camera) {
-      if (e.model.cameras.empty())
-        s.cameras.push_back({e.desc.name, int(i), -1, {}});
-      for (size_t c = 0; c < e.model.cameras.size(); ++c)
-        s.cameras.push_back({e.model.cameras[c].name.empty() ? e.desc.name : e.model.cameras[c].name, int(i), int(c), {}});
-    } else if (e.desc.type != EntryType::Unlit) {  // the sky dome does not frame anything
-      glm::vec3 a, b;
-      e.model.Bounds(&a, &b);
-      for (int k = 0; k < 8; ++k) {
-        glm::vec3 p((k & 1) ? b.x : a.x, (k & 2) ? b.y : a.y, (k & 4) ? b.z : a.z);
-        glm::vec3 w = glm::vec3(e.transform * glm::vec4(p, 1.f));
-        mn = glm::min(mn, w);
-        mx = glm::max(mx, w);
-      }
-    }
-  }
-  if (mn.x > mx.x) mn = mx = glm::vec3(0.f);
-  s.boundsMin = mn;
-  s.boundsMax = mx;
+  s.ListCamerasAndBounds();
   if (single) {
     // Files' own cameras are listed after an automatic camera that frames the model.
     for (size_t c = 0; c < s.entries[0].model.cameras.size(); ++c)
       s.cameras.push_back({s.entries[0].model.cameras[c].name, 0, int(c), {}});
   }
-  if (single || s.cameras.empty()) {
-    glm::vec3 center = (mn + mx) * 0.5f;
-    float radius = std::max(glm::length(mx - mn) * 0.5f, 1e-3f);
-    float dist = radius / std::sin(glm::radians(45.f) * 0.5f) * 1.1f;
-    CameraRef a;
-    a.name = "Automatic";
-    a.fixed.position = center + glm::normalize(glm::vec3(0.6f, 0.45f, 1.f)) * dist;
-    a.fixed.view = glm::lookAtRH(a.fixed.position, center, glm::vec3(0, 1, 0));
-    a.fixed.nearZ = std::max(dist - radius * 1.5f, dist * 0.01f);
-    a.fixed.farZ = std::max(dist + radius * 4.f, a.fixed.nearZ * 10.f);
-    s.cameras.insert(s.cameras.begin(), a);
-  }
+  if (single || s.cameras.empty()) s.cameras.insert(s.cameras.begin(), s.AutomaticCamera());
   s.defaultCamera = (!single && s.cameras.size() > 1) ? 1 : 0;
   if (opts.verbose) std::printf("scene: %s: %s\n", path.c_str(), s.stats.ToString().c_str());
   scene->Update(0.0);

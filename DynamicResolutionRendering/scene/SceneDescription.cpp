@@ -131,20 +131,57 @@ bool IsNoAnim(const std::string& s) {
   return u == "NO_ANIM";
 }
 
-}  // namespace
+// Why parsing stopped: the line (0 = the file as a whole) and the message.
+struct ParseFailure {
+  int line = 0;
+  std::string message;
+};
 
-bool ParseSceneDescription(const std::string& text, const std::string& file, const ParseOptions& opts,
-                           SceneDescription* out, std::string* error) {
-  auto fail = [&](int line, const std::string& msg) {
-    if (error) *error = line > 0 ? Loc(file, line) + msg : file + ": " + msg;
-    return false;
-  };
-  *out = SceneDescription{};
-  out->file = file;
-  out->folder = fs::path(file).parent_path().string();
+bool Fail(ParseFailure* why, int line, const std::string& message) {
+  why->line = line;
+  why->message = message;
+  return false;
+}
 
-  // 1. Tokenise, line by line, with the line numbers kept.
-  std::vector<Token> tokens;
+std::string HexByte(unsigned char c) {
+  char b[4];
+  snprintf(b, sizeof b, "%02x", c);
+  return b;
+}
+
+// Appends the tokens of one line (CR and newline already removed): words
+// separated by blanks, "quoted paths", up to a '#' comment.
+bool TokeniseLine(const std::string& l, int line, std::vector<Token>* tokens, ParseFailure* why) {
+  for (size_t i = 0; i < l.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(l[i]);
+    if ((c < 32 && c != '\t') || c == 127)
+      return Fail(why, line, "unexpected binary data (byte 0x" + HexByte(c) + " in column " + std::to_string(i + 1) +
+                                 "); expected a text file of 'mesh animation|NO_ANIM LIT|UNLIT|CAMERA|DECAL' entries");
+  }
+  size_t i = 0;
+  while (i < l.size()) {
+    while (i < l.size() && (l[i] == ' ' || l[i] == '\t')) ++i;
+    if (i >= l.size() || l[i] == '#') break;
+    Token t;
+    t.line = line;
+    if (l[i] == '"') {
+      size_t close = l.find('"', i + 1);
+      if (close == std::string::npos) return Fail(why, line, "unterminated quoted path (expected a closing '\"')");
+      t.text = l.substr(i + 1, close - i - 1);
+      t.quoted = true;
+      i = close + 1;
+    } else {
+      size_t s = i;
+      while (i < l.size() && l[i] != ' ' && l[i] != '\t' && l[i] != '#') ++i;
+      t.text = l.substr(s, i - s);
+    }
+    tokens->push_back(std::move(t));
+  }
+  return true;
+}
+
+// Tokenises the whole text line by line, with the line numbers kept.
+bool Tokenise(const std::string& text, const ParseOptions& opts, std::vector<Token>* tokens, ParseFailure* why) {
   size_t pos = 0;
   int line = 0;
   if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF &&
@@ -158,105 +195,117 @@ bool ParseSceneDescription(const std::string& text, const std::string& file, con
     pos = end + 1;
     if (!l.empty() && l.back() == '\r') l.pop_back();  // CRLF
     if (l.size() > opts.maxLineLength)
-      return fail(line, "line too long (" + std::to_string(l.size()) + " characters, at most " +
-                            std::to_string(opts.maxLineLength) + " expected)");
-    for (size_t i = 0; i < l.size(); ++i) {
-      unsigned char c = static_cast<unsigned char>(l[i]);
-      if ((c < 32 && c != '\t') || c == 127)
-        return fail(line, "unexpected binary data (byte 0x" +
-                              [&] { char b[4]; snprintf(b, sizeof b, "%02x", c); return std::string(b); }() +
-                              " in column " + std::to_string(i + 1) +
-                              "); expected a text file of 'mesh animation|NO_ANIM LIT|UNLIT|CAMERA|DECAL' entries");
-    }
-    size_t i = 0;
-    while (i < l.size()) {
-      while (i < l.size() && (l[i] == ' ' || l[i] == '\t')) ++i;
-      if (i >= l.size() || l[i] == '#') break;
-      Token t;
-      t.line = line;
-      if (l[i] == '"') {
-        size_t close = l.find('"', i + 1);
-        if (close == std::string::npos) return fail(line, "unterminated quoted path (expected a closing '\"')");
-        t.text = l.substr(i + 1, close - i - 1);
-        t.quoted = true;
-        i = close + 1;
-      } else {
-        size_t s = i;
-        while (i < l.size() && l[i] != ' ' && l[i] != '\t' && l[i] != '#') ++i;
-        t.text = l.substr(s, i - s);
-      }
-      tokens.push_back(std::move(t));
-    }
+      return Fail(why, line, "line too long (" + std::to_string(l.size()) + " characters, at most " +
+                                 std::to_string(opts.maxLineLength) + " expected)");
+    if (!TokeniseLine(l, line, tokens, why)) return false;
   }
-  if (tokens.empty())
-    return fail(0, "no entries (empty file, or only comments); expected lines of 'mesh animation|NO_ANIM LIT|UNLIT|CAMERA|DECAL'");
+  return true;
+}
 
-  // 2. Group: mesh, anim, type, then key=value options.
-  auto isOption = [](const Token& t) { return !t.quoted && t.text.find('=') != std::string::npos; };
+bool IsOption(const Token& t) { return !t.quoted && t.text.find('=') != std::string::npos; }
+
+bool ReadMeshToken(const Token& mesh, SceneEntry* e, ParseFailure* why) {
+  e->line = mesh.line;
+  if (IsOption(mesh))
+    return Fail(why, mesh.line, "option '" + Printable(mesh.text) + "' where a mesh path was expected (options follow the type)");
+  EntryType dummy;
+  if (ParseType(mesh.text, &dummy) && !mesh.quoted)
+    return Fail(why, mesh.line, "type '" + mesh.text + "' where a mesh path was expected (entry: mesh animation|NO_ANIM type)");
+  e->meshPath = mesh.text;
+  std::replace(e->meshPath.begin(), e->meshPath.end(), '\\', '/');
+  if (e->meshPath.empty()) return Fail(why, mesh.line, "empty mesh path");
+  return true;
+}
+
+bool ReadAnimToken(const Token& anim, SceneEntry* e, ParseFailure* why) {
+  EntryType dummy;
+  if (!anim.quoted && ParseType(anim.text, &dummy))
+    return Fail(why, anim.line, "found type '" + anim.text + "' where the animation path or NO_ANIM was expected");
+  if (IsOption(anim))
+    return Fail(why, anim.line, "option '" + Printable(anim.text) + "' where the animation path or NO_ANIM was expected");
+  if (!IsNoAnim(anim.text) || anim.quoted) {
+    e->animPath = anim.text;
+    std::replace(e->animPath.begin(), e->animPath.end(), '\\', '/');
+    if (e->animPath.empty()) return Fail(why, anim.line, "empty animation path (write NO_ANIM for none)");
+  }
+  return true;
+}
+
+// Reads one entry from tokens[*k]: mesh, animation, type, then key=value
+// options; *k moves past it. *animLine: the line of its animation token.
+bool ReadEntry(const std::vector<Token>& tokens, size_t* k, SceneEntry* e, int* animLine, ParseFailure* why) {
+  const Token& mesh = tokens[*k];
+  if (!ReadMeshToken(mesh, e, why)) return false;
+  if (*k + 1 >= tokens.size())
+    return Fail(why, mesh.line, "entry '" + Printable(mesh.text) + "' is missing its animation path (or NO_ANIM) and type (LIT|UNLIT|CAMERA|DECAL)");
+  const Token& anim = tokens[*k + 1];
+  *animLine = anim.line;
+  if (!ReadAnimToken(anim, e, why)) return false;
+  if (*k + 2 >= tokens.size())
+    return Fail(why, anim.line, "entry '" + Printable(mesh.text) + "' is missing its type (expected LIT, UNLIT, CAMERA or DECAL)");
+  const Token& type = tokens[*k + 2];
+  if (type.quoted || !ParseType(type.text, &e->type))
+    return Fail(why, type.line, "unknown type '" + Printable(type.text) + "' (expected LIT, UNLIT, CAMERA or DECAL)");
+  *k += 3;
+  while (*k < tokens.size() && IsOption(tokens[*k])) {
+    const Token& o = tokens[*k];
+    size_t eq = o.text.find('=');
+    std::string message;
+    if (!ApplyOption(*e, o.text.substr(0, eq), o.text.substr(eq + 1), &message)) return Fail(why, o.line, message);
+    ++*k;
+  }
+  return true;
+}
+
+// The entry's files, relative to the description's folder unless absolute;
+// checked to exist when opts.checkFiles.
+bool ResolveFiles(const std::string& folder, const ParseOptions& opts, int animLine, SceneEntry* e, ParseFailure* why) {
   auto resolve = [&](const std::string& p) {
     fs::path rp(p);
     if (rp.is_absolute()) return rp.lexically_normal().string();
-    return (fs::path(out->folder) / rp).lexically_normal().string();
+    return (fs::path(folder) / rp).lexically_normal().string();
   };
+  e->meshFile = resolve(e->meshPath);
+  if (!e->animPath.empty()) e->animFile = resolve(e->animPath);
+  if (!opts.checkFiles) return true;
+  std::error_code ec;
+  if (!fs::is_regular_file(e->meshFile, ec))
+    return Fail(why, e->line, "mesh file '" + Printable(e->meshPath, 200) + "' not found (looked for " + e->meshFile + ")");
+  if (!e->animFile.empty() && !fs::is_regular_file(e->animFile, ec))
+    return Fail(why, animLine, "animation file '" + Printable(e->animPath, 200) + "' not found (looked for " + e->animFile +
+                                   "; write NO_ANIM for none)");
+  return true;
+}
+
+bool ParseEntries(const std::string& text, const ParseOptions& opts, SceneDescription* out, ParseFailure* why) {
+  std::vector<Token> tokens;
+  if (!Tokenise(text, opts, &tokens, why)) return false;
+  if (tokens.empty())
+    return Fail(why, 0, "no entries (empty file, or only comments); expected lines of 'mesh animation|NO_ANIM LIT|UNLIT|CAMERA|DECAL'");
   size_t k = 0;
   while (k < tokens.size()) {
     if (out->entries.size() >= opts.maxEntries)
-      return fail(tokens[k].line, "too many entries (more than " + std::to_string(opts.maxEntries) + ")");
+      return Fail(why, tokens[k].line, "too many entries (more than " + std::to_string(opts.maxEntries) + ")");
     SceneEntry e;
-    const Token& mesh = tokens[k];
-    e.line = mesh.line;
-    if (isOption(mesh))
-      return fail(mesh.line, "option '" + Printable(mesh.text) + "' where a mesh path was expected (options follow the type)");
-    {
-      EntryType dummy;
-      if (ParseType(mesh.text, &dummy) && !mesh.quoted)
-        return fail(mesh.line, "type '" + mesh.text + "' where a mesh path was expected (entry: mesh animation|NO_ANIM type)");
-    }
-    e.meshPath = mesh.text;
-    std::replace(e.meshPath.begin(), e.meshPath.end(), '\\', '/');
-    if (e.meshPath.empty()) return fail(mesh.line, "empty mesh path");
-    if (k + 1 >= tokens.size())
-      return fail(mesh.line, "entry '" + Printable(mesh.text) + "' is missing its animation path (or NO_ANIM) and type (LIT|UNLIT|CAMERA|DECAL)");
-    const Token& anim = tokens[k + 1];
-    {
-      EntryType dummy;
-      if (!anim.quoted && ParseType(anim.text, &dummy))
-        return fail(anim.line, "found type '" + anim.text + "' where the animation path or NO_ANIM was expected");
-      if (isOption(anim))
-        return fail(anim.line, "option '" + Printable(anim.text) + "' where the animation path or NO_ANIM was expected");
-    }
-    if (!IsNoAnim(anim.text) || anim.quoted) {
-      e.animPath = anim.text;
-      std::replace(e.animPath.begin(), e.animPath.end(), '\\', '/');
-      if (e.animPath.empty()) return fail(anim.line, "empty animation path (write NO_ANIM for none)");
-    }
-    if (k + 2 >= tokens.size())
-      return fail(anim.line, "entry '" + Printable(mesh.text) + "' is missing its type (expected LIT, UNLIT, CAMERA or DECAL)");
-    const Token& type = tokens[k + 2];
-    if (type.quoted || !ParseType(type.text, &e.type))
-      return fail(type.line, "unknown type '" + Printable(type.text) + "' (expected LIT, UNLIT, CAMERA or DECAL)");
-    k += 3;
-    while (k < tokens.size() && isOption(tokens[k])) {
-      const Token& o = tokens[k];
-      size_t eq = o.text.find('=');
-      std::string why;
-      if (!ApplyOption(e, o.text.substr(0, eq), o.text.substr(eq + 1), &why)) return fail(o.line, why);
-      ++k;
-    }
-    e.meshFile = resolve(e.meshPath);
-    if (!e.animPath.empty()) e.animFile = resolve(e.animPath);
-    if (opts.checkFiles) {
-      std::error_code ec;
-      if (!fs::is_regular_file(e.meshFile, ec))
-        return fail(e.line, "mesh file '" + Printable(e.meshPath, 200) + "' not found (looked for " + e.meshFile + ")");
-      if (!e.animFile.empty() && !fs::is_regular_file(e.animFile, ec))
-        return fail(anim.line, "animation file '" + Printable(e.animPath, 200) + "' not found (looked for " + e.animFile +
-                                   "; write NO_ANIM for none)");
-    }
+    int animLine = 0;
+    if (!ReadEntry(tokens, &k, &e, &animLine, why) || !ResolveFiles(out->folder, opts, animLine, &e, why)) return false;
     if (e.name.empty()) e.name = fs::path(e.meshPath).stem().string();
     out->entries.push_back(std::move(e));
   }
   return true;
+}
+
+}  // namespace
+
+bool ParseSceneDescription(const std::string& text, const std::string& file, const ParseOptions& opts,
+                           SceneDescription* out, std::string* error) {
+  *out = SceneDescription{};
+  out->file = file;
+  out->folder = fs::path(file).parent_path().string();
+  ParseFailure why;
+  if (ParseEntries(text, opts, out, &why)) return true;
+  if (error) *error = why.line > 0 ? Loc(file, why.line) + why.message : file + ": " + why.message;
+  return false;
 }
 
 bool LoadSceneDescription(const std::string& file, const ParseOptions& opts, SceneDescription* out,

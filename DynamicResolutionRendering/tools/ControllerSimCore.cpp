@@ -123,6 +123,63 @@ SimConfig ConfigFor(Scenario scenario, const SimConfig& base) {
   return c;
 }
 
+namespace {
+
+// The disturbance of frame n (d: the disturbance frame); u: this frame's
+// uniform draw, for the CPU-bound frame times.
+Conditions ConditionsAt(const SimConfig& c, int n, int d, double u) {
+  static const double kCorrupt[] = {std::numeric_limits<double>::quiet_NaN(),
+                                    std::numeric_limits<double>::infinity(),
+                                    -std::numeric_limits<double>::infinity(),
+                                    0.0,
+                                    1e-9,
+                                    -0.004};
+  Conditions cond;
+  cond.load = LoadAt(c.scenario, n, d);
+  cond.cpuSeconds = c.plant.cpuSeconds;
+  if (n < d) return cond;
+  if (c.scenario == Scenario::CpuBound && n < d + kCpuBoundFrames) cond.cpuSeconds = 0.020 + 0.025 * u;
+  if (c.scenario == Scenario::Spikes && (n - d) % kSpikePeriod == 0) cond.spike = 100.0;
+  if (c.scenario == Scenario::NaN && (n - d) % kCorruptPeriod == 0) {
+    const int i = ((n - d) / kCorruptPeriod) % 6;
+    cond.corrupt = true;
+    cond.corruptGpu = kCorrupt[i];
+    // Some corrupt samples also carry a corrupt frame time.
+    cond.corruptFrame = (i % 2 == 0) ? kCorrupt[(i + 1) % 6] : -1.0;
+  }
+  return cond;
+}
+
+// Whether frame n counts as still (load settled) for the still-changes count.
+bool IsStill(const SimConfig& c, int n, int d, int lastLoadChange) {
+  return c.scenario != Scenario::Periodic && c.scenario != Scenario::Ramp
+             ? n - lastLoadChange >= c.stillAfterFrames
+             : (c.scenario == Scenario::Ramp && n - (d + kRampFrames) >= c.stillAfterFrames);
+}
+
+// Settling time, overshoot and steady-state error from the per-frame
+// relative error of the model time against the aim.
+void ScoreResponse(const SimConfig& c, const std::vector<double>& err, int d, SimResult* r) {
+  const int frames = static_cast<int>(err.size());
+  // Settling: first frame from which the model time stays in the band to the end.
+  const int from = SettleFrom(c.scenario, d);
+  int lastOut = -1;
+  for (int n = from; n < frames; ++n)
+    if (std::abs(err[n]) > c.settleBand) lastOut = n;
+  r->settleFrames = lastOut < 0 ? 0 : (lastOut + 1 < frames - kTailFrames / 2 ? lastOut + 1 - from : -1);
+
+  const double e0 = err[from];
+  const bool stepLike = std::abs(e0) > c.settleBand && r->settleApplies;
+  double over = 0.0;
+  for (int n = from; n < frames; ++n) over = std::max(over, stepLike ? -(e0 > 0 ? 1.0 : -1.0) * err[n] : std::abs(err[n]));
+  r->overshootPct = 100.0 * over;
+  double tail = 0.0;
+  for (int n = frames - kTailFrames; n < frames; ++n) tail += err[n];
+  r->steadyErrorPct = 100.0 * tail / kTailFrames;
+}
+
+}  // namespace
+
 SimResult RunScenario(ResolutionController& controller, const SimConfig& config, bool keepTrace) {
   const SimConfig& c = config;
   const ControlTarget target = SanitizeTarget(c.target);
@@ -146,32 +203,11 @@ SimResult RunScenario(ResolutionController& controller, const SimConfig& config,
   r.settleApplies = c.scenario != Scenario::Periodic;
 
   std::vector<double> err(frames, 0.0);
-  std::vector<double> scales(frames, 0.0);
   int lastLoadChange = 0;
   double previousLoad = LoadAt(c.scenario, 0, d);
-  static const double kCorrupt[] = {std::numeric_limits<double>::quiet_NaN(),
-                                    std::numeric_limits<double>::infinity(),
-                                    -std::numeric_limits<double>::infinity(),
-                                    0.0,
-                                    1e-9,
-                                    -0.004};
-
   for (int n = 0; n < frames; ++n) {
-    Conditions cond;
-    cond.load = LoadAt(c.scenario, n, d);
-    cond.cpuSeconds = c.plant.cpuSeconds;
     const double u = gauss.Uniform();  // drawn every frame so all scenarios share the noise sequence
-    if (n >= d) {
-      if (c.scenario == Scenario::CpuBound && n < d + kCpuBoundFrames) cond.cpuSeconds = 0.020 + 0.025 * u;
-      if (c.scenario == Scenario::Spikes && (n - d) % kSpikePeriod == 0) cond.spike = 100.0;
-      if (c.scenario == Scenario::NaN && (n - d) % kCorruptPeriod == 0) {
-        const int i = ((n - d) / kCorruptPeriod) % 6;
-        cond.corrupt = true;
-        cond.corruptGpu = kCorrupt[i];
-        // Some corrupt samples also carry a corrupt frame time.
-        cond.corruptFrame = (i % 2 == 0) ? kCorrupt[(i + 1) % 6] : -1.0;
-      }
-    }
+    const Conditions cond = ConditionsAt(c, n, d, u);
     if (cond.load != previousLoad) lastLoadChange = n;
     previousLoad = cond.load;
 
@@ -197,33 +233,14 @@ SimResult RunScenario(ResolutionController& controller, const SimConfig& config,
     const bool changed = dr.GetViewportWidth() != w0 || dr.GetViewportHeight() != h0;
 
     err[n] = model / aim - 1.0;
-    scales[n] = sx;
     if (n >= d) {
       if (actual > budget && cond.spike == 1.0) ++r.overBudget;
       if (changed) ++r.changes;
-      const bool still = c.scenario != Scenario::Periodic && c.scenario != Scenario::Ramp
-                             ? n - lastLoadChange >= c.stillAfterFrames
-                             : (c.scenario == Scenario::Ramp && n - (d + kRampFrames) >= c.stillAfterFrames);
-      if (still && changed) ++r.stillChanges;
+      if (IsStill(c, n, d, lastLoadChange) && changed) ++r.stillChanges;
     }
     if (keepTrace) r.trace.push_back({n, cond.load, sx, model, timing.gpuInnerSeconds, timing.frameSeconds, changed});
   }
-
-  // Settling: first frame from which the model time stays in the band to the end.
-  const int from = SettleFrom(c.scenario, d);
-  int lastOut = -1;
-  for (int n = from; n < frames; ++n)
-    if (std::abs(err[n]) > c.settleBand) lastOut = n;
-  r.settleFrames = lastOut < 0 ? 0 : (lastOut + 1 < frames - kTailFrames / 2 ? lastOut + 1 - from : -1);
-
-  const double e0 = err[from];
-  const bool stepLike = std::abs(e0) > c.settleBand && r.settleApplies;
-  double over = 0.0;
-  for (int n = from; n < frames; ++n) over = std::max(over, stepLike ? -(e0 > 0 ? 1.0 : -1.0) * err[n] : std::abs(err[n]));
-  r.overshootPct = 100.0 * over;
-  double tail = 0.0;
-  for (int n = frames - kTailFrames; n < frames; ++n) tail += err[n];
-  r.steadyErrorPct = 100.0 * tail / kTailFrames;
+  ScoreResponse(c, err, d, &r);
   r.finalScale = dr.GetScaleX();
   return r;
 }

@@ -70,104 +70,132 @@ std::vector<std::string_view> SplitCommas(std::string_view s) {
   return parts;
 }
 
-}  // namespace
+// Appends the laws of a comma list ("all" = every law).
+void AddLaws(std::string_view list, std::vector<ControlLaw>* laws) {
+  for (std::string_view name : SplitCommas(list)) {
+    if (name == "all") {
+      *laws = drr::sim::AllLaws();
+      continue;
+    }
+    ControlLaw law;
+    if (!drr::ParseControlLaw(name, &law)) Fail("unknown controller '" + std::string(name) + "'");
+    laws->push_back(law);
+  }
+}
 
-int main(int argc, char** argv) {
-  std::vector<ControlLaw> laws;
-  std::vector<Scenario> scenarios;
+// Appends the scenarios of a comma list ("all" = every scenario).
+void AddScenarios(std::string_view list, std::vector<Scenario>* scenarios) {
+  for (std::string_view name : SplitCommas(list)) {
+    if (name == "all") {
+      *scenarios = drr::sim::AllScenarios();
+      continue;
+    }
+    Scenario s;
+    if (!drr::sim::ParseScenario(name, &s)) Fail("unknown scenario '" + std::string(name) + "'");
+    scenarios->push_back(s);
+  }
+}
+
+struct SimArgs {
+  std::vector<ControlLaw> laws;  // empty: all
+  std::vector<Scenario> scenarios;  // empty: all
   drr::sim::SimConfig config;
   double gain = drr::ArticleController::kDefaultGain;
   bool gainSet = false;
   std::string csvPath;
   bool sweep = false;
+};
 
+// Reads the option at argv[*i] and its value (moving *i past it); exits with
+// the usage on a bad one.
+void ParseOption(int argc, char** argv, int* i, SimArgs* args) {
+  const std::string_view arg = argv[*i];
+  auto value = [&](std::string_view name) -> std::string_view {
+    if (*i + 1 >= argc) Fail("missing value after " + std::string(name));
+    return argv[++*i];
+  };
+  drr::sim::SimConfig& config = args->config;
+  long long n;
+  double x;
+  if (arg == "--controller") {
+    AddLaws(value(arg), &args->laws);
+  } else if (arg == "--scenario") {
+    AddScenarios(value(arg), &args->scenarios);
+  } else if (arg == "--frames") {
+    if (!ParseInt(value(arg), drr::sim::kMinFrames, 1000000, &n)) Fail("--frames needs an integer in range");
+    config.frames = static_cast<int>(n);
+  } else if (arg == "--seed") {
+    if (!ParseInt(value(arg), 0, 4294967295LL, &n)) Fail("--seed needs an integer 0..4294967295");
+    config.seed = static_cast<std::uint32_t>(n);
+  } else if (arg == "--noise") {
+    if (!ParseDouble(value(arg), &x) || x < 0.0 || x > 0.5) Fail("--noise needs a number 0..0.5");
+    config.plant.noise = x;
+  } else if (arg == "--latency") {
+    if (!ParseInt(value(arg), 0, 16, &n)) Fail("--latency needs an integer 0..16");
+    config.plant.latencyFrames = static_cast<int>(n);
+  } else if (arg == "--gain") {
+    if (!ParseDouble(value(arg), &args->gain) || args->gain < drr::ArticleController::kMinGain ||
+        args->gain > drr::ArticleController::kMaxGain)
+      Fail("--gain needs a number 0.001..10");
+    args->gainSet = true;
+  } else if (arg == "--csv") {
+    args->csvPath = std::string(value(arg));
+    if (args->csvPath.empty()) Fail("--csv needs a path");
+  } else if (arg == "--sweep-k") {
+    args->sweep = true;
+  } else {
+    Fail("unknown argument '" + std::string(arg) + "'");
+  }
+}
+
+// Every law on every scenario; the article law with --gain when given.
+std::vector<drr::sim::SimResult> RunLawsOnScenarios(const SimArgs& args) {
+  const drr::sim::SimConfig& config = args.config;
+  std::vector<drr::sim::SimResult> results;
+  for (ControlLaw law : args.laws) {
+    for (Scenario s : args.scenarios) {
+      std::unique_ptr<drr::ResolutionController> controller =
+          (law == ControlLaw::Article && args.gainSet) ? std::make_unique<drr::ArticleController>(args.gain)
+                                                       : drr::MakeController(law, config.plant.latencyFrames);
+      results.push_back(drr::sim::RunScenario(*controller, drr::sim::ConfigFor(s, config)));
+    }
+  }
+  return results;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  SimArgs args;
   for (int i = 1; i < argc; ++i) {
     const std::string_view arg = argv[i];
-    auto value = [&](std::string_view name) -> std::string_view {
-      if (i + 1 >= argc) Fail("missing value after " + std::string(name));
-      return argv[++i];
-    };
     if (arg == "--help" || arg == "-h") {
       Usage(std::cout);
       return 0;
-    } else if (arg == "--controller") {
-      for (std::string_view name : SplitCommas(value(arg))) {
-        if (name == "all") {
-          laws = drr::sim::AllLaws();
-          continue;
-        }
-        ControlLaw law;
-        if (!drr::ParseControlLaw(name, &law)) Fail("unknown controller '" + std::string(name) + "'");
-        laws.push_back(law);
-      }
-    } else if (arg == "--scenario") {
-      for (std::string_view name : SplitCommas(value(arg))) {
-        if (name == "all") {
-          scenarios = drr::sim::AllScenarios();
-          continue;
-        }
-        Scenario s;
-        if (!drr::sim::ParseScenario(name, &s)) Fail("unknown scenario '" + std::string(name) + "'");
-        scenarios.push_back(s);
-      }
-    } else if (arg == "--frames") {
-      long long v;
-      if (!ParseInt(value(arg), drr::sim::kMinFrames, 1000000, &v)) Fail("--frames needs an integer in range");
-      config.frames = static_cast<int>(v);
-    } else if (arg == "--seed") {
-      long long v;
-      if (!ParseInt(value(arg), 0, 4294967295LL, &v)) Fail("--seed needs an integer 0..4294967295");
-      config.seed = static_cast<std::uint32_t>(v);
-    } else if (arg == "--noise") {
-      double v;
-      if (!ParseDouble(value(arg), &v) || v < 0.0 || v > 0.5) Fail("--noise needs a number 0..0.5");
-      config.plant.noise = v;
-    } else if (arg == "--latency") {
-      long long v;
-      if (!ParseInt(value(arg), 0, 16, &v)) Fail("--latency needs an integer 0..16");
-      config.plant.latencyFrames = static_cast<int>(v);
-    } else if (arg == "--gain") {
-      if (!ParseDouble(value(arg), &gain) || gain < drr::ArticleController::kMinGain ||
-          gain > drr::ArticleController::kMaxGain)
-        Fail("--gain needs a number 0.001..10");
-      gainSet = true;
-    } else if (arg == "--csv") {
-      csvPath = std::string(value(arg));
-      if (csvPath.empty()) Fail("--csv needs a path");
-    } else if (arg == "--sweep-k") {
-      sweep = true;
-    } else {
-      Fail("unknown argument '" + std::string(arg) + "'");
     }
+    ParseOption(argc, argv, &i, &args);
   }
-  if (laws.empty()) laws = drr::sim::AllLaws();
-  if (scenarios.empty()) scenarios = drr::sim::AllScenarios();
+  if (args.laws.empty()) args.laws = drr::sim::AllLaws();
+  if (args.scenarios.empty()) args.scenarios = drr::sim::AllScenarios();
+  const drr::sim::SimConfig& config = args.config;
 
   std::ofstream csv;
-  if (!csvPath.empty()) {
-    csv.open(csvPath);
+  if (!args.csvPath.empty()) {
+    csv.open(args.csvPath);
     if (!csv) {
-      std::cerr << "drr_controller_sim: cannot write '" << csvPath << "'\n";
+      std::cerr << "drr_controller_sim: cannot write '" << args.csvPath << "'\n";
       return 1;
     }
   }
 
-  if (sweep) {
+  if (args.sweep) {
     const auto rows = drr::sim::SweepArticleGain(config);
     drr::sim::PrintSweep(std::cout, rows, config);
     if (csv.is_open()) drr::sim::WriteSweepCsv(csv, rows);
     return 0;
   }
 
-  std::vector<drr::sim::SimResult> results;
-  for (ControlLaw law : laws) {
-    for (Scenario s : scenarios) {
-      std::unique_ptr<drr::ResolutionController> controller =
-          (law == ControlLaw::Article && gainSet) ? std::make_unique<drr::ArticleController>(gain)
-                                                  : drr::MakeController(law, config.plant.latencyFrames);
-      results.push_back(drr::sim::RunScenario(*controller, drr::sim::ConfigFor(s, config)));
-    }
-  }
+  const std::vector<drr::sim::SimResult> results = RunLawsOnScenarios(args);
   std::cout << "Plant: gpu = (2 ms + 30 ms * sx * sy * load) * (1 + " << config.plant.noise
             << " N(0,1)), budget 16.67 ms, aim 15.0 ms (article: 16.67 ms), latency "
             << config.plant.latencyFrames << ", seed " << config.seed << ", " << config.frames

@@ -1,0 +1,190 @@
+// --bench's command line: its own options, the sample's options, and the
+// sweep (views, filters, scales) that follows from them.
+#include "bench/Bench.h"
+
+#include <cstdlib>
+#include <cstring>
+
+namespace drr {
+namespace {
+
+const char* kBenchUsage =
+    "DynamicResolutionRendering --bench [--quick] --out DIR [sample options]\n"
+    "\n"
+    "Renders every (camera view, filter, scale) after a warm-up and records image\n"
+    "error (PSNR, SSIM, max error) against a 4x4 super-sampled reference, GPU time\n"
+    "per pass (median and quartiles) and wall time. Writes results.csv,\n"
+    "results.json, summary.md and plots (PNG) into DIR.\n"
+    "Also measured: a 'blit-floor' row per view and scale (a linear vkCmdBlitImage of\n"
+    "the viewport region to a back-buffer-sized target: the physical floor of the\n"
+    "scale pass, with each filter's cost as a ratio to it and to point); claim rows\n"
+    "on the first view at 0.71 (pixel-shader vs API clear, super sampling allowed at\n"
+    "1.0, fast vs velocity-reading TAA) and motion blur at 0.71 vs native on the\n"
+    "moving cinematic camera; ghosting ('ghost <filter>': point, taa, taa-basic,\n"
+    "taa-noise-offset at 0.71, motion blur off) on the cinematic camera moving by a\n"
+    "fixed step per frame: PSNR against the reference rendered at the captured\n"
+    "frame's animation time, ghost fraction = pixels > 0.1 away from the same\n"
+    "filter's still image of that time. summary.md judges the article's claims\n"
+    "from these numbers.\n"
+    "\n"
+    "  --quick              short preset for CI: one static camera, point / bilinear /\n"
+    "                       bicubic / TAA at scales 0.3 0.5 0.71 1.0, 320x180, with\n"
+    "                       the blit-floor, claim and ghosting rows\n"
+    "  --out DIR            output folder (default: bench_out)\n"
+    "  --bench-warmup N     frames rendered before measuring (default 8, quick 4)\n"
+    "  --bench-warmup-ms T  and warm up for at least T ms (default 500, quick 0): GPU\n"
+    "                       clocks drop while the CPU compares images, and a few\n"
+    "                       frames do not bring them back\n"
+    "  --bench-frames N     frames measured per configuration (default 24, quick 6)\n"
+    "  --camera N           only this camera (a static view at its default time)\n"
+    "  --filter F           only this filter\n"
+    "  --scale S            only this scale\n"
+    "  --no-claims          skip the claim rows\n"
+    "  --no-ghosting        skip the ghosting rows\n"
+    "  --ghost-frames N     moving frames before the ghosting capture (default 24,\n"
+    "                       quick 6); the camera steps 1/30 s per frame and the\n"
+    "                       capture is at animation time 12 s\n"
+    "  --width/--height, --scene, --no-motion-blur, --symmetric-taa, --no-ps-clear,\n"
+    "  --validation         as for the sample (see DynamicResolutionRendering --help)\n";
+
+bool ParseInt(const std::string& s, int lo, int hi, int* out) {
+  char* end = nullptr;
+  const long v = std::strtol(s.c_str(), &end, 10);
+  if (s.empty() || !end || *end || v < lo || v > hi) return false;
+  *out = int(v);
+  return true;
+}
+
+// What the command line said beyond the plan's own fields: which sweep axes
+// it narrowed, the counts it set (-1 = the preset's), the sample's options.
+struct BenchArgs {
+  bool cameraGiven = false, filterGiven = false, scaleGiven = false, sizeGiven = false;
+  int warmup = -1, warmupMs = -1, frames = -1, ghostFrames = -1;
+  std::vector<std::string> sampleArgs;
+};
+
+// The value after args[*i] (moving *i onto it); false with the usage in
+// *message when there is none.
+bool TakeValue(const std::vector<std::string>& args, size_t* i, std::string* out, std::string* message) {
+  if (*i + 1 >= args.size()) {
+    *message = args[*i] + ": missing value\n\n" + kBenchUsage;
+    return false;
+  }
+  *out = args[++*i];
+  return true;
+}
+
+// The integer in [lo, hi] after args[*i].
+bool TakeInt(const std::vector<std::string>& args, size_t* i, int lo, int hi, int* out, std::string* message) {
+  const std::string name = args[*i];
+  std::string v;
+  if (!TakeValue(args, i, &v, message)) return false;
+  if (!ParseInt(v, lo, hi, out)) {
+    *message = name + ": expected an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got '" + v + "'";
+    return false;
+  }
+  return true;
+}
+
+// Reads the bench's own options into plan and parsed, and passes the others
+// on in parsed->sampleArgs. Returns 0, 1 (help) or 2 (error, *message set).
+int ParseBenchArgs(const std::vector<std::string>& args, BenchPlan* plan, BenchArgs* parsed, std::string* message) {
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--bench") continue;
+    if (a == "--help" || a == "-h") {
+      *message = kBenchUsage;
+      return 1;
+    }
+    bool ok = true;
+    if (a == "--quick") plan->quick = true;
+    else if (a == "--out") ok = TakeValue(args, &i, &plan->outDir, message);
+    else if (a == "--no-claims") plan->claims = false;
+    else if (a == "--no-ghosting") plan->ghosting = false;
+    else if (a == "--ghost-frames") ok = TakeInt(args, &i, 2, 300, &parsed->ghostFrames, message);
+    else if (a == "--bench-warmup-ms") ok = TakeInt(args, &i, 0, 60000, &parsed->warmupMs, message);
+    else if (a == "--bench-warmup") ok = TakeInt(args, &i, 0, 10000, &parsed->warmup, message);
+    else if (a == "--bench-frames") ok = TakeInt(args, &i, 1, 10000, &parsed->frames, message);
+    else {
+      parsed->cameraGiven |= a == "--camera";
+      parsed->filterGiven |= a == "--filter";
+      parsed->scaleGiven |= a == "--scale" || a == "--scale-x" || a == "--scale-y";
+      parsed->sizeGiven |= a == "--width" || a == "--height";
+      parsed->sampleArgs.push_back(a);
+    }
+    if (!ok) return 2;
+  }
+  return 0;
+}
+
+// Views, filters and scales: the one given on the command line, else the
+// quick or the full preset.
+void ChooseSweep(const BenchArgs& parsed, BenchPlan* plan) {
+  if (parsed.cameraGiven) {
+    plan->views = {{plan->base.camera, plan->base.time >= 0 ? plan->base.time : 0.0,
+                    "camera " + std::to_string(plan->base.camera)}};
+  } else if (plan->quick) {
+    plan->views = {{1, 0.0, "static 1"}};
+  } else {
+    plan->views = {{1, 0.0, "static 1"},
+                   {2, 0.0, "static 2"},
+                   {0, 4.0, "cinematic t=4"},
+                   {0, 12.0, "cinematic t=12"}};
+  }
+  if (parsed.filterGiven) {
+    plan->filters = {plan->base.filter};
+  } else if (plan->quick) {
+    plan->filters = {Filter::Point, Filter::Bilinear, Filter::Bicubic, Filter::TAA};
+  } else {
+    for (int f = int(Filter::Point); f < int(Filter::Count); ++f) plan->filters.push_back(Filter(f));
+  }
+  if (parsed.scaleGiven) {
+    plan->scales = {plan->base.scaleX};
+  } else if (plan->quick) {
+    plan->scales = {0.3f, 0.5f, 0.71f, 1.0f};
+  } else {
+    plan->scales = {0.3f, 0.4f, 0.5f, 0.6f, 0.71f, 0.8f, 0.9f, 1.0f, 1.25f, 1.5f, 2.0f};
+  }
+}
+
+}  // namespace
+
+bool HasBenchFlag(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--bench") == 0) return true;
+  }
+  return false;
+}
+
+int ParseBenchCommandLine(const std::vector<std::string>& args, BenchPlan* plan,
+                          std::string* message) {
+  BenchArgs parsed;
+  plan->outDir = "bench_out";
+  if (const int rc = ParseBenchArgs(args, plan, &parsed, message); rc != 0) return rc;
+  std::string parseMessage;
+  const ParseStatus status = ParseCommandLine(parsed.sampleArgs, &plan->base, &parseMessage);
+  if (status == ParseStatus::Error) {
+    *message = parseMessage;
+    return 2;
+  }
+  if (status == ParseStatus::Help) {
+    *message = kBenchUsage;
+    return 1;
+  }
+  if (plan->outDir.empty()) {
+    *message = "--out: the output folder must not be empty";
+    return 2;
+  }
+  if (plan->quick && !parsed.sizeGiven) {
+    plan->base.width = 320;
+    plan->base.height = 180;
+  }
+  plan->warmupFrames = parsed.warmup >= 0 ? parsed.warmup : (plan->quick ? 4 : 8);
+  plan->warmupMs = parsed.warmupMs >= 0 ? parsed.warmupMs : (plan->quick ? 0 : 500);
+  plan->measuredFrames = parsed.frames >= 0 ? parsed.frames : (plan->quick ? 6 : 24);
+  plan->ghostFrames = parsed.ghostFrames >= 0 ? parsed.ghostFrames : (plan->quick ? 6 : 24);
+  ChooseSweep(parsed, plan);
+  return 0;
+}
+
+}  // namespace drr
