@@ -2,6 +2,7 @@
 // "N draws with changing constants" — one pipeline, one descriptor set with a
 // dynamic uniform buffer, constants written into a mapped ring, one
 // vkCmdBindDescriptorSets (new dynamic offset) + vkCmdDraw per draw.
+#include "d3dl/ShaderCompiler.h"
 #include <vulkan/vulkan.h>
 
 #include <cstdio>
@@ -22,15 +23,6 @@ namespace {
       return false;                                             \
     }                                                           \
   } while (0)
-
-std::vector<uint32_t> ReadSpirv(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return {};
-  std::vector<uint32_t> words(static_cast<size_t>(in.tellg()) / 4);
-  in.seekg(0);
-  in.read(reinterpret_cast<char*>(words.data()), static_cast<std::streamsize>(words.size() * 4));
-  return words;
-}
 
 uint64_t g_rawValidationMessages = 0;
 
@@ -294,12 +286,10 @@ class RawVulkanRecorder final : public Recorder {
 
   bool CreatePipeline(std::string* error) {
     const std::string dir = BenchShaderDir();
-    std::vector<uint32_t> vs = ReadSpirv(dir + "/BenchDraw.vs.spv");
-    std::vector<uint32_t> ps = ReadSpirv(dir + "/BenchDraw.ps.spv");
-    if (vs.empty() || ps.empty()) {
-      *error = "cannot read the benchmark shaders in " + dir;
+    std::vector<uint32_t> vs, ps;  // file reading only: the recording itself is raw Vulkan
+    if (d3dl::FAILED(d3dl::ReadSpirvFile(dir + "/BenchDraw.vs.spv", &vs, error)) ||
+        d3dl::FAILED(d3dl::ReadSpirvFile(dir + "/BenchDraw.ps.spv", &ps, error)))
       return false;
-    }
     VkShaderModuleCreateInfo smi{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     smi.codeSize = vs.size() * 4;
     smi.pCode = vs.data();

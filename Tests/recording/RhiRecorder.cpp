@@ -1,5 +1,6 @@
 // The same frame as RawVulkanRecorder, written as a D3D11 programmer would:
 // Map(WRITE_DISCARD) of one constant buffer + Draw, 'n' times.
+#include "d3dl/ShaderCompiler.h"
 #include <cstring>
 #include <fstream>
 #include <vector>
@@ -11,15 +12,6 @@ namespace drrbench {
 namespace {
 
 using d3dl::ComPtr;
-
-std::vector<char> ReadFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) return {};
-  std::vector<char> bytes(static_cast<size_t>(in.tellg()));
-  in.seekg(0);
-  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  return bytes;
-}
 
 uint64_t g_rhiMessages = 0;
 
@@ -59,16 +51,18 @@ class RhiRecorder final : public Recorder {
     bd.BindFlags = d3dl::BIND_CONSTANT_BUFFER;
     bd.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
     const std::string dir = BenchShaderDir();
-    std::vector<char> vs = ReadFile(dir + "/BenchDraw.vs.spv");
-    std::vector<char> ps = ReadFile(dir + "/BenchDraw.ps.spv");
+    std::vector<uint32_t> vs, ps;
+    if (d3dl::FAILED(d3dl::ReadSpirvFile(dir + "/BenchDraw.vs.spv", &vs, error)) ||
+        d3dl::FAILED(d3dl::ReadSpirvFile(dir + "/BenchDraw.ps.spv", &ps, error)))
+      return false;
     d3dl::RASTERIZER_DESC rd;
     rd.CullMode = d3dl::CULL_NONE;
     if (d3dl::FAILED(device_->CreateTexture2D(&td, nullptr, target_.GetAddressOf())) ||
         d3dl::FAILED(device_->CreateRenderTargetView(target_.Get(), nullptr, rtv_.GetAddressOf())) ||
         d3dl::FAILED(device_->CreateTexture2D(&sd, nullptr, staging_.GetAddressOf())) ||
         d3dl::FAILED(device_->CreateBuffer(&bd, nullptr, constants_.GetAddressOf())) ||
-        d3dl::FAILED(device_->CreateVertexShader(vs.data(), vs.size(), vs_.GetAddressOf())) ||
-        d3dl::FAILED(device_->CreatePixelShader(ps.data(), ps.size(), ps_.GetAddressOf())) ||
+        d3dl::FAILED(device_->CreateVertexShader(vs.data(), vs.size() * 4, vs_.GetAddressOf())) ||
+        d3dl::FAILED(device_->CreatePixelShader(ps.data(), ps.size() * 4, ps_.GetAddressOf())) ||
         d3dl::FAILED(device_->CreateRasterizerState(&rd, rs_.GetAddressOf()))) {
       *error = "creating the benchmark resources failed (shaders in " + dir + ")";
       return false;
