@@ -186,7 +186,7 @@ void Sample::ApplySettings(const Options& o) {
   if (o.camera >= 0 && o.camera < m_Cameras.Count() && o.camera != m_Cameras.Current() && m_Cameras.Select(o.camera))
     m_ResetVelocityHistory = true;  // camera cut
   m_Options.camera = m_Cameras.Current();
-  if (!m_Targets.Allocated() || !(Plan() == m_Targets.Plan())) InitDynamicResolution();
+  if (!(Plan() == m_Targets.Plan())) InitDynamicResolution();
   if (scaleChanged || m_Options.control == ControlMode::Manual)
     m_DynamicResolution.SetScale(m_Options.scaleX, m_Options.scaleY);
 }

@@ -55,7 +55,6 @@ struct ReportInfo {
 
 class FrameLog {
  public:
-  void Add(const FrameRecord& r) { m_Frames.push_back(r); }
   // A rendered frame: scales, viewport, sizes and the latest GPU results.
   void AddRendered(int64_t frame, const DynamicResolution& dr, bool dynamic, const BackBuffer& bb, bool fullscreen,
                    double elapsedSeconds, const FrameTimers& timers);

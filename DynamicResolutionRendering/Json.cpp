@@ -90,11 +90,6 @@ JsonWriter& JsonWriter::Value(std::string_view key, std::string_view v) {
   out_ << JsonQuote(v);
   return *this;
 }
-JsonWriter& JsonWriter::Null(std::string_view key) {
-  Member(key);
-  out_ << "null";
-  return *this;
-}
 JsonWriter& JsonWriter::Raw(std::string_view key, std::string_view json) {
   Member(key);
   out_ << json;

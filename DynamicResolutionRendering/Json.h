@@ -32,7 +32,6 @@ class JsonWriter {
   JsonWriter& Value(std::string_view key, bool v);
   JsonWriter& Value(std::string_view key, std::string_view v);
   JsonWriter& Value(std::string_view key, const char* v) { return Value(key, std::string_view(v)); }
-  JsonWriter& Null(std::string_view key);
   // Already-formatted JSON (an object written by another writer).
   JsonWriter& Raw(std::string_view key, std::string_view json);
   // Small arrays of numbers on one line: "size": [640, 360].

@@ -96,14 +96,12 @@ bool RenderTargetSet::Allocate(d3dl::Device* device, const RenderTargetPlan& pla
                                                    dyn ? dynH : plan.backBufferH, Format(rt), Name(rt)));
   }
   m_Plan = plan;
-  m_Allocated = true;
   return ok;
 }
 
 void RenderTargetSet::Release() {
   for (RenderTarget& t : m_Targets) t.Release();
   m_Plan = {};
-  m_Allocated = false;
 }
 
 uint64_t RenderTargetSet::Bytes() const {

@@ -53,8 +53,7 @@ class RenderTargetSet {
   // oversized RT of DynamicResolution), full ones at the back-buffer size.
   bool Allocate(d3dl::Device* device, const RenderTargetPlan& plan, uint32_t dynW, uint32_t dynH);
   void Release();
-  const RenderTargetPlan& Plan() const { return m_Plan; }
-  bool Allocated() const { return m_Allocated; }
+  const RenderTargetPlan& Plan() const { return m_Plan; }  // {} once released
 
   RenderTarget& operator[](RT rt) { return m_Targets[int(rt)]; }
   const RenderTarget& operator[](RT rt) const { return m_Targets[int(rt)]; }
@@ -70,7 +69,6 @@ class RenderTargetSet {
  private:
   RenderTarget m_Targets[int(RT::Count)];
   RenderTargetPlan m_Plan;
-  bool m_Allocated = false;
 };
 
 }  // namespace drr

@@ -13,8 +13,7 @@
 
 namespace drr {
 
-namespace {
-std::vector<std::string> Split(const std::string& s, char sep) {
+std::vector<std::string> SplitFields(const std::string& s, char sep) {
   std::vector<std::string> parts;
   std::string part;
   std::istringstream in(s);
@@ -22,7 +21,6 @@ std::vector<std::string> Split(const std::string& s, char sep) {
   if (!s.empty() && s.back() == sep) parts.emplace_back();
   return parts;
 }
-}  // namespace
 
 void ShaderLibrary::Open(const std::string& spvDir, const std::string& sourceDir) {
   m_SpvDir = spvDir;
@@ -32,10 +30,10 @@ void ShaderLibrary::Open(const std::string& spvDir, const std::string& sourceDir
   std::ifstream in(spvDir + "/shaders.txt");
   std::string line;
   while (std::getline(in, line)) {
-    const std::vector<std::string> f = Split(line, '|');
+    const std::vector<std::string> f = SplitFields(line, '|');
     if (f.size() != 5 || f[0].empty()) continue;
     Entry e{f[1], f[2], f[3], {}};
-    if (!f[4].empty()) e.defines = Split(f[4], ',');
+    if (!f[4].empty()) e.defines = SplitFields(f[4], ',');
     m_Entries[f[0]] = std::move(e);
   }
 }
@@ -57,7 +55,7 @@ bool ShaderLibrary::Load(const std::string& name, bool fromSource, std::vector<u
     }
     std::string errs;
     if (d3dl::FAILED(d3dl::CompileHLSL(d, code, &errs))) {
-      *error = e.source + " (" + e.entry + (e.defines.empty() ? "" : ", " + Split(e.defines[0], '=')[0]) +
+      *error = e.source + " (" + e.entry + (e.defines.empty() ? "" : ", " + SplitFields(e.defines[0], '=')[0]) +
                ") did not compile:\n" + errs;
       return false;
     }

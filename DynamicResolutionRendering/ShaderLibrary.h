@@ -13,6 +13,9 @@
 
 namespace drr {
 
+// The fields of one line of a build manifest ("a|b||c" -> a, b, "", c).
+std::vector<std::string> SplitFields(const std::string& line, char separator);
+
 class ShaderLibrary {
  public:
   // spvDir holds the .spv files and shaders.txt; sourceDir the HLSL. A folder

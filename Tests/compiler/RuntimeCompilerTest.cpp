@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "RenderTest.h"
+#include "ShaderLibrary.h"
 #include "d3dl/ShaderCompiler.h"
 
 namespace {
@@ -19,25 +20,16 @@ struct ManifestEntry {
   std::vector<std::pair<std::string, std::string>> defines;
 };
 
-std::vector<std::string> Split(const std::string& s, char sep) {
-  std::vector<std::string> parts;
-  std::string part;
-  std::istringstream in(s);
-  while (std::getline(in, part, sep)) parts.push_back(part);
-  if (!s.empty() && s.back() == sep) parts.emplace_back();
-  return parts;
-}
-
 std::vector<ManifestEntry> ReadManifest() {
   std::vector<ManifestEntry> entries;
   std::ifstream in(DRR_SHADER_MANIFEST);
   std::string line;
   while (std::getline(in, line)) {
     if (line.empty()) continue;
-    const auto f = Split(line, '|');
+    const auto f = drr::SplitFields(line, '|');
     if (f.size() != 6) continue;
     ManifestEntry e{f[0], f[1], f[2], f[4], f[5], {}};
-    for (const auto& d : Split(f[3], ',')) {
+    for (const auto& d : drr::SplitFields(f[3], ',')) {
       if (d.empty()) continue;
       const auto eq = d.find('=');
       e.defines.emplace_back(d.substr(0, eq), eq == std::string::npos ? "" : d.substr(eq + 1));
