@@ -158,6 +158,7 @@ bool Sample::InitDynamicResolution() {
                                                      maxScaling);
   const bool ok = m_Targets.Allocate(m_Device.Device(), Plan(), m_DynamicResolution.GetDynamicBufferWidth(),
                                      m_DynamicResolution.GetDynamicBufferHeight());
+  if (ok) m_Targets.ZeroContents(m_Device.Context());
   m_History.current = 0;
   m_History.valid = false;
   m_ResetVelocityHistory = true;
@@ -306,7 +307,7 @@ FrameSetup Sample::MakeFrameSetup() {
   m_History.Advance(s, s.dynamic ? glm::vec2(dr.GetRTScaleX(), dr.GetRTScaleY()) : glm::vec2(1.f),
                     m_Options.symmetricTAA);
   FillConstants(s, m_History, glm::vec2(dr.GetDynamicBufferWidth(), dr.GetDynamicBufferHeight()),
-                glm::vec2(m_Device.Width(), m_Device.Height()));
+                glm::vec2(m_Device.Width(), m_Device.Height()), m_Options.fixes);
   return s;
 }
 

@@ -29,14 +29,17 @@ struct DynamicConstants {
   float dynSize[2], invDynSize[2];
   float noiseOffset[2], backBufferSize[2];
   float clearColor[4];
+  uint32_t fixes;  // FixSet bits (Shaders/FixList.hlsli)
+  uint32_t pad[3];
 };
-static_assert(sizeof(DynamicConstants) == 80);
+static_assert(sizeof(DynamicConstants) == 96);
 
 // Constants of PostProcess.hlsl (cbPostProcess), the full-resolution path.
 struct FullConstants {
   float size[2], invSize[2];
   float clearColor[4];
-  float pad[8];
+  uint32_t fixes;  // FixSet bits (Shaders/FixList.hlsli)
+  float pad[7];
 };
 static_assert(sizeof(FullConstants) == 64);
 
@@ -78,7 +81,8 @@ struct TemporalHistory {
   void Advance(FrameSetup& s, glm::vec2 ratio, bool symmetric);
 };
 // The constants of both post-processing paths for this frame.
-void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dynamicRT, glm::vec2 backBuffer);
+void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dynamicRT, glm::vec2 backBuffer,
+                   FixSet fixes);
 
 SceneTargets ChooseSceneTargets(RenderTargetSet& targets, const FrameSetup& setup, const BackBuffer& bb);
 

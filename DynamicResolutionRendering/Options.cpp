@@ -29,6 +29,7 @@ enum class Kind {
   Scale,    // number, range checked once --supersampling is known; writes scaleX and/or scaleY
   Path,     // non-empty text
   Choice,   // one of an enum's command-line values
+  Fixes,    // all | none | NAME[,NAME...] (Fixes.h)
 };
 
 // The values of an enum option, read from the enum's own name table.
@@ -44,7 +45,8 @@ constexpr Choices ChoicesOf(const char* noun) {
 
 using Field = std::variant<std::monostate, bool Options::*, uint32_t Options::*, int Options::*,
                            int64_t Options::*, double Options::*, std::string Options::*,
-                           Filter Options::*, ControlMode Options::*, ControlLaw Options::*>;
+                           Filter Options::*, ControlMode Options::*, ControlLaw Options::*,
+                           FixSet Options::*>;
 
 struct Spec {
   const char* name;
@@ -138,6 +140,10 @@ constexpr Spec kSpecs[] = {
     Flag("--window-test", &Options::windowTest, true,
          "test aid: resize to 1x1, minimise, full screen while minimised,\n"
          "restore, windowed, full screen and back"),
+    {.name = "--fix", .metavar = "LIST", .kind = Kind::Fixes,
+     .help = "port fixes of the original's defects: all, none or names\n"
+             "separated by commas (default none: the original; see below)",
+     .field = &Options::fixes},
 };
 
 constexpr double kMinScale = 0.01;
@@ -218,6 +224,7 @@ void Store(Options* r, const Field& field, double number, const std::string& tex
         if constexpr (!std::is_same_v<decltype(member), std::monostate>) {
           using T = std::remove_reference_t<decltype(r->*member)>;
           if constexpr (std::is_same_v<T, std::string>) r->*member = text;
+          else if constexpr (std::is_same_v<T, FixSet>) return;  // Apply parses the list
           else if constexpr (std::is_enum_v<T>) r->*member = static_cast<T>(static_cast<int>(number));
           else r->*member = static_cast<T>(number);
         }
@@ -250,6 +257,12 @@ std::string Apply(const Spec& s, const std::string& name, const std::optional<st
     return {};
   }
   if (!value) return "option " + name + " needs a value" + (s.kind == Kind::Choice ? Allowed(s) : "");
+  if (s.kind == Kind::Fixes) {
+    std::string error;
+    if (!ParseFixes(*value, &(r->*std::get<FixSet Options::*>(s.field)), &error))
+      return "option " + name + ": " + error;
+    return {};
+  }
   if (s.kind == Kind::Choice) {
     for (int i = 0; i < s.choices.count; ++i)
       if (*value == s.choices.option(i)) {
@@ -308,6 +321,12 @@ std::string Usage() {
     u << "  " << label << std::string(pad, ' ');
     AppendHelp(u, *s);
   }
+  u << "\nFixes (--fix), each off by default so that the default frame is the original's\n"
+       "(Docs/Port-Notes.md gives each one's measured effect):\n";
+  for (const FixInfo& f : FixTable()) {
+    const std::size_t used = 2 + std::string_view(f.name).size();
+    u << "  " << f.name << std::string(used + 2 <= kHelpColumn ? kHelpColumn - used : 1, ' ') << f.help << '\n';
+  }
   u << "\n"
        "  --bench [--quick] --out DIR   measure image error against run time instead of running\n"
        "                           the sample (see --bench --help)\n";
@@ -364,7 +383,8 @@ std::string OptionsToJson(const Options& o) {
     << ", \"zoom\": " << (o.zoom ? "true" : "false") << ", \"gui\": " << (o.gui ? "true" : "false")
     << ", \"anisotropy\": " << o.anisotropy
     << ", \"time\": " << o.time << ", \"fixed_dt\": " << o.fixedDt
-    << ", \"validation\": " << (o.validation ? "true" : "false") << "}";
+    << ", \"validation\": " << (o.validation ? "true" : "false")
+    << ", \"fixes\": " << JsonQuote(FixNames(o.fixes)) << "}";
   return j.str();
 }
 

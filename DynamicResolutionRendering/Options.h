@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "Fixes.h"
 #include "ResolveFilters.h"
 
 namespace drr {
@@ -58,6 +59,8 @@ struct Options {
   bool debugMarkerOutside = false;
   // Test aid (windowed): resize to 1x1, minimise, restore, fullscreen and back while running.
   bool windowTest = false;
+  // The port's fixes of the original's defects (--fix); none by default.
+  FixSet fixes;
 
   int64_t EffectiveFrames() const { return frames >= 0 ? frames : (headless ? 300 : -1); }
   float MaxScale() const { return superSampling ? 2.0f : 1.0f; }

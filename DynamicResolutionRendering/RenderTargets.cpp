@@ -99,6 +99,14 @@ bool RenderTargetSet::Allocate(d3dl::Device* device, const RenderTargetPlan& pla
   return ok;
 }
 
+void RenderTargetSet::ZeroContents(d3dl::DeviceContext* ctx) {
+  constexpr float kZero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  for (RenderTarget& t : m_Targets) {
+    if (t.rtv) ctx->ClearRenderTargetView(t.rtv.Get(), kZero);
+    if (t.dsv) ctx->ClearDepthStencilView(t.dsv.Get(), d3dl::CLEAR_DEPTH, 1.0f, 0);
+  }
+}
+
 void RenderTargetSet::Release() {
   for (RenderTarget& t : m_Targets) t.Release();
   m_Plan = {};

@@ -53,6 +53,10 @@ class RenderTargetSet {
   // oversized RT of DynamicResolution), full ones at the back-buffer size.
   bool Allocate(d3dl::Device* device, const RenderTargetPlan& plan, uint32_t dynW, uint32_t dynH);
   void Release();
+  // Zeroes every allocated target (depth to 1). D3D11 on Windows hands out
+  // zeroed memory, and the original's resolves read past the viewport into
+  // texels no pass has written; a Vulkan image starts undefined.
+  void ZeroContents(d3dl::DeviceContext* ctx);
   const RenderTargetPlan& Plan() const { return m_Plan; }  // {} once released
 
   RenderTarget& operator[](RT rt) { return m_Targets[int(rt)]; }

@@ -3,6 +3,8 @@
 #ifndef COMMON_POST_HLSLI
 #define COMMON_POST_HLSLI
 
+#include "Fixes.hlsli"
+
 struct PostVSOut {
   float4 pos : SV_Position;
   float2 uv : TEXCOORD0;  // 0..1 across the current viewport

@@ -6,6 +6,7 @@ cbuffer cbPostProcess : register(b0) {
   float2 g_Size;          // render-target size in pixels
   float2 g_InvSize;
   float4 g_ClearColor;    // (0, 0.1, 0.1, 1)
+  uint g_Fixes;           // FIX_* bits (Fixes.hlsli)
 };
 
 Texture2D<float4> g_Color : register(t0);

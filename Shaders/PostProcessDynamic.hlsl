@@ -13,6 +13,8 @@ cbuffer cbPostProcessDynamic : register(b0) {
   float2 g_NoiseOffset;            // random offset of the noise texture, in noise texels
   float2 g_BackBufferSize;
   float4 g_ClearColor;
+  uint g_Fixes;                    // FIX_* bits (Fixes.hlsli)
+  uint3 g_Pad;
 };
 
 Texture2D<float4> g_ColorCurr : register(t0);
@@ -34,6 +36,7 @@ static const float kNoiseSize = 128.0;
 // The used part of the RT, inset by half a texel so that bilinear taps never
 // reach a texel outside the viewport (the article's figure 4 edge bleeding).
 float2 ClampToUsed(float2 uv, float2 ratio) {
+  if ((g_Fixes & FIX_UvInset) == 0) return uv;
   return clamp(uv, 0.5 * g_InvDynSize, ratio - 0.5 * g_InvDynSize);
 }
 

@@ -224,7 +224,8 @@ TEST(SampleOptions, HelpAndParserShareOneTable) {
       EXPECT_EQ(m.find("unknown option"), std::string::npos) << word << ": " << m;
     }
   }
-  EXPECT_EQ(shown, 36);  // every option of the sample once (-h is --help's other name)
+  EXPECT_EQ(shown, 37);  // every option of the sample once (-h is --help's other name)
+  for (const FixInfo& f : FixTable()) EXPECT_NE(help.find(std::string("  ") + f.name + " "), std::string::npos);
   for (int f = 0; f < static_cast<int>(Filter::Count); ++f)
     EXPECT_NE(help.find(FilterOption(static_cast<Filter>(f))), std::string::npos);
   EXPECT_NE(help.find("manual|half-vsync|vsync (default vsync)"), std::string::npos) << help;
@@ -304,4 +305,26 @@ TEST(SampleOptions, ControlLaw) {
   EXPECT_NE(m.find("--law LAW"), std::string::npos);
   EXPECT_NE(m.find("article|robust|ue-style"), std::string::npos);
   EXPECT_NE(m.find("default article"), std::string::npos);
+}
+
+TEST(SampleOptions, FixListParsesAndRoundTrips) {
+  Options o;
+  std::string m;
+  EXPECT_EQ(o.fixes, FixSet{});  // the original by default
+  ASSERT_EQ(ParseCommandLine(std::vector<std::string>{"--fix", "all"}, &o, &m), ParseStatus::Ok) << m;
+  EXPECT_EQ(o.fixes, FixSet::All());
+  EXPECT_EQ(FixNames(o.fixes), "all");
+  for (const FixInfo& f : FixTable()) {
+    ASSERT_EQ(ParseCommandLine(std::vector<std::string>{std::string("--fix=") + f.name}, &o, &m), ParseStatus::Ok);
+    EXPECT_TRUE(o.fixes.Has(f.fix));
+    FixSet back;
+    ASSERT_TRUE(ParseFixes(FixNames(o.fixes), &back, &m)) << m;
+    EXPECT_EQ(back, o.fixes);
+  }
+  ASSERT_EQ(ParseCommandLine(std::vector<std::string>{"--fix", "none"}, &o, &m), ParseStatus::Ok);
+  EXPECT_EQ(o.fixes, FixSet{});
+  for (const char* bad : {"", "bogus", "uv-inset,", ",uv-inset", "all,uv-inset", "UV-INSET"}) {
+    EXPECT_EQ(ParseCommandLine(std::vector<std::string>{"--fix", bad}, &o, &m), ParseStatus::Error) << bad;
+    EXPECT_NE(m.find("--fix"), std::string::npos) << m;
+  }
 }

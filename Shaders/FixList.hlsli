@@ -1,0 +1,9 @@
+// The port's fixes of the original's defects: one list, read by the C++ side
+// (DynamicResolutionRendering/Fixes.h: names, help, --fix) and by the shaders
+// (FIX_<Id> bits tested against the constant buffers' g_Fixes). Every fix is
+// off by default, so the default frame is the original's; Docs/Port-Notes.md
+// gives each one's measured effect.
+//
+// DRR_FIX(Id, bit, "command-line-name", "one line of help")
+// Bits are stable (reports and scripts record them); never reuse one.
+DRR_FIX(UvInset, 0, "uv-inset", "resolves clamp UVs half a texel inside the dynamic viewport")
