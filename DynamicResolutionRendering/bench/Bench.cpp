@@ -243,14 +243,20 @@ BenchRow Measure(Sample& sample, const BenchPlan& plan, const Options& settings,
   row.filter = filterName;
   row.scale = scale;
   std::vector<double> f, c, sc, p, scl, wall;
+  // GPU times: only results that arrived during the measured frames and
+  // belong to one of them (a result lags gpuFrameDelay frames); a record
+  // without a new result repeats an older one and is not a sample.
+  const int64_t firstMeasured = records.empty() ? 0 : records.front().frame;
   for (const FrameRecord& r : records) {
+    wall.push_back(r.cpuFrameMs);
+    if (!r.gpuFrameNew || r.frame - int64_t(r.gpuFrameDelay) < firstMeasured) continue;
     f.push_back(r.gpuFrame);
     c.push_back(r.gpuClear);
     sc.push_back(r.gpuScene);
     p.push_back(r.gpuPostP);
     scl.push_back(r.gpuScale);
-    wall.push_back(r.cpuFrameMs);
   }
+  row.gpuSamples = int(f.size());
   row.gpuFrame = Summarise(f);
   row.gpuClear = Summarise(c);
   row.gpuScene = Summarise(sc);
@@ -413,6 +419,7 @@ bool AddBlitFloorRow(ViewRun& run, BlitFloor& blit, float scale, std::string* er
                 run.sample.BackBufferHeight(), run.plan.measuredFrames, &ms, &image, error))
     return false;
   row.gpuScale = Summarise(ms);
+  row.gpuSamples = int(ms.size());
   row.error = CompareImages(ToImage(image), run.reference);
   run.results->rows.push_back(row);
   run.progress->Step(run.view.name + " blit-floor " + Num2(scale));

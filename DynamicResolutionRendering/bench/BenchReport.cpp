@@ -76,7 +76,7 @@ bool WriteCsv(const BenchResults& res, const std::string& path, std::string* err
   out << "view,filter,scale,viewport_w,viewport_h,psnr_db,ssim,max_abs_error,mse,valid,"
          "gpu_frame_ms,gpu_frame_p25,gpu_frame_p75,gpu_clear_ms,gpu_scene_ms,gpu_post_ms,"
          "gpu_scale_ms,gpu_scale_p25,gpu_scale_p75,wall_ms,wall_p25,wall_p75,anim_time,"
-         "ghost_fraction,psnr_vs_native_db\n";
+         "ghost_fraction,psnr_vs_native_db,gpu_samples\n";
   for (const auto& r : res.rows) {
     out << '"' << r.view << "\"," << r.filter << ',' << Num(r.scale, 3) << ',' << r.viewportW
         << ',' << r.viewportH << ',' << Num(r.error.psnr, 3) << ',' << Num(r.error.ssim, 5)
@@ -87,7 +87,7 @@ bool WriteCsv(const BenchResults& res, const std::string& path, std::string* err
         << Num(r.gpuScale.median) << ',' << Num(r.gpuScale.p25) << ',' << Num(r.gpuScale.p75)
         << ',' << Num(r.wall.median) << ',' << Num(r.wall.p25) << ',' << Num(r.wall.p75) << ','
         << Num(r.animTime, 6) << ',' << Num(r.ghostFraction, 6) << ',' << Num(r.psnrVsNative, 3)
-        << '\n';
+        << ',' << r.gpuSamples << '\n';
   }
   return bool(out);
 }
@@ -124,7 +124,8 @@ bool WriteJson(const BenchResults& res, const std::string& path, std::string* er
         << ", \"gpu_ms\": {\"frame\": " << StatJson(r.gpuFrame)
         << ", \"clear\": " << StatJson(r.gpuClear) << ", \"scene\": " << StatJson(r.gpuScene)
         << ", \"post\": " << StatJson(r.gpuPost) << ", \"scale\": " << StatJson(r.gpuScale)
-        << "}, \"wall_ms\": " << StatJson(r.wall) << ", \"anim_time\": " << JsonNum(r.animTime)
+        << "}, \"gpu_samples\": " << r.gpuSamples
+        << ", \"wall_ms\": " << StatJson(r.wall) << ", \"anim_time\": " << JsonNum(r.animTime)
         << ", \"ghost_fraction\": " << JsonNum(r.ghostFraction)
         << ", \"psnr_vs_native_db\": " << JsonNum(r.psnrVsNative) << "}" << (i + 1 < res.rows.size() ? "," : "")
         << "\n";

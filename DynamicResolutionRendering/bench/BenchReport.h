@@ -25,6 +25,7 @@ struct BenchRow {
   float viewportW = 0, viewportH = 0;
   ImageError error;
   Stat gpuFrame, gpuClear, gpuScene, gpuPost, gpuScale, wall;  // milliseconds
+  int gpuSamples = 0;  // distinct GPU results behind the gpu* statistics
   // Ghosting / moving-camera rows: animation time of the captured frame, the
   // fraction of pixels whose largest RGB difference from the same filter's
   // settled image of that animation time (camera held still) is above 0.1
