@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <thread>
 #include <unistd.h>
@@ -141,9 +142,9 @@ double FractionAbove(const ImageF& a, const ImageF& b, float threshold) {
 // vkCmdBlitImage) of the viewport region of a dynamic-RT-sized texture holding
 // the captured scene colour to a back-buffer-sized target, timed with its own
 // timestamp queries on the sample's device (outside the sample's frames).
-class BlitFloor {
+class FixedFunctionBlit {
  public:
-  explicit BlitFloor(d3dl::Device* device) : device_(device) {
+  explicit FixedFunctionBlit(d3dl::Device* device) : device_(device) {
     device_->GetImmediateContext(ctx_.GetAddressOf());
     blit_ = d3dl::GetBlitExtension(ctx_.Get());  // null: a context without the Vulkan blit
     d3dl::QUERY_DESC d;
@@ -159,7 +160,7 @@ class BlitFloor {
   bool Run(const Image& scene, uint32_t vpW, uint32_t vpH, uint32_t bbW, uint32_t bbH, int frames,
            std::vector<double>* ms, Image* image, std::string* error) {
     if (!ok_ || scene.Empty() || vpW == 0 || vpH == 0 || vpW > scene.width || vpH > scene.height) {
-      *error = "blit floor: no queries or no scene colour";
+      *error = "fixed-function blit: no queries or no scene colour";
       return false;
     }
     d3dl::TEXTURE2D_DESC d;
@@ -170,13 +171,13 @@ class BlitFloor {
     d3dl::SUBRESOURCE_DATA init{scene.pixels.data(), scene.width * 4, 0};
     d3dl::ComPtr<d3dl::Texture2D> src, dst;
     if (d3dl::FAILED(device_->CreateTexture2D(&d, &init, src.GetAddressOf()))) {
-      *error = "blit floor: cannot create the source texture";
+      *error = "fixed-function blit: cannot create the source texture";
       return false;
     }
     d.Width = bbW;
     d.Height = bbH;
     if (d3dl::FAILED(device_->CreateTexture2D(&d, nullptr, dst.GetAddressOf()))) {
-      *error = "blit floor: cannot create the destination texture";
+      *error = "fixed-function blit: cannot create the destination texture";
       return false;
     }
     const d3dl::RECT srcRect{0, 0, int32_t(vpW), int32_t(vpH)};
@@ -192,7 +193,7 @@ class BlitFloor {
       uint64_t t0 = 0, t1 = 0;
       if (!Wait(disjoint_.Get(), &dj, sizeof(dj)) || !Wait(begin_.Get(), &t0, sizeof(t0)) ||
           !Wait(end_.Get(), &t1, sizeof(t1))) {
-        *error = "blit floor: the timestamp queries did not complete";
+        *error = "fixed-function blit: the timestamp queries did not complete";
         return false;
       }
       if (i > 0) {
@@ -203,7 +204,7 @@ class BlitFloor {
     }
     std::string readError;
     if (!ReadBack(device_, ctx_.Get(), dst.Get(), 0, image, &readError)) {
-      *error = "blit floor: cannot read the image back: " + readError;
+      *error = "fixed-function blit: cannot read the image back: " + readError;
       return false;
     }
     return true;
@@ -402,14 +403,14 @@ struct ViewRun {
   }
 };
 
-// Blit floor of one scale, from the scene colour of the row just measured:
-// same source region, same back-buffer size, linear filter.
-bool AddBlitFloorRow(ViewRun& run, BlitFloor& blit, float scale, std::string* error) {
+// The fixed-function blit of one scale, from the scene colour of the row just
+// measured: same source region, same back-buffer size, linear filter.
+bool AddFixedBlitRow(ViewRun& run, FixedFunctionBlit& blit, float scale, std::string* error) {
   const Image scene = run.sample.CapturedSceneColor();
   const BenchRow& last = run.results->rows.back();
   BenchRow row;
   row.view = run.view.name;
-  row.filter = kBlitFloor;
+  row.filter = kFixedBlit;
   row.scale = scale;
   row.viewportW = last.viewportW;
   row.viewportH = last.viewportH;
@@ -422,19 +423,19 @@ bool AddBlitFloorRow(ViewRun& run, BlitFloor& blit, float scale, std::string* er
   row.gpuSamples = int(ms.size());
   row.error = CompareImages(ToImage(image), run.reference);
   run.results->rows.push_back(row);
-  run.progress->Step(run.view.name + " blit-floor " + Num2(scale));
+  run.progress->Step(run.view.name + " " + kFixedBlit + " " + Num2(scale));
   return true;
 }
 
 // Native (dynamic resolution off, the full-resolution path of the original),
-// then every filter at every scale, with the blit floor after the first
+// then every filter at every scale, with the fixed-function blit after the first
 // filter (point in the default plans).
 bool MeasureSweep(ViewRun& run, const Options& o, std::string* error) {
   Options native = o;
   native.dynamicResolution = false;
   native.filter = Filter::Point;
   run.AddRow(native, "native", 1.0);
-  BlitFloor blit(run.sample.GetDevice());
+  FixedFunctionBlit blit(run.sample.GetDevice());
   const BenchPlan& plan = run.plan;
   for (size_t fi = 0; fi < plan.filters.size(); ++fi) {
     for (float scale : plan.scales) {
@@ -443,7 +444,7 @@ bool MeasureSweep(ViewRun& run, const Options& o, std::string* error) {
       s.filter = plan.filters[fi];
       s.scaleX = s.scaleY = scale;
       run.AddRow(s, FilterOption(plan.filters[fi]), scale);
-      if (fi == 0 && !AddBlitFloorRow(run, blit, scale, error)) return false;
+      if (fi == 0 && !AddFixedBlitRow(run, blit, scale, error)) return false;
     }
   }
   return true;
@@ -477,6 +478,7 @@ bool MeasureView(const BenchPlan& plan, const BenchView& view, bool firstView, B
     sample.GetDevice()->GetAdapterDesc(&adapter);
     results->adapter = adapter.Description;
     results->driver = adapter.Driver;
+    results->softwareAdapter = adapter.IsSoftware;
   }
   ViewRun run{plan, view, reference, sample, results, progress};
   if (!MeasureSweep(run, o, &error)) {
@@ -490,12 +492,40 @@ bool MeasureView(const BenchPlan& plan, const BenchView& view, bool firstView, B
 }
 
 // Progress steps: per view the reference, native, the sweep and one
-// blit-floor row per scale; claims on the first view; the moving camera
+// fixed-function-blit row per scale; claims on the first view; the moving camera
 // (reference, ghosting with its still captures, motion blur).
 size_t ProgressSteps(const BenchPlan& plan) {
   const size_t perView = 2 + plan.filters.size() * plan.scales.size() + plan.scales.size();
   const size_t moving = (plan.ghosting || plan.claims ? 1 : 0) + (plan.ghosting ? 8 : 0) + (plan.claims ? 2 : 0);
   return plan.views.size() * perView + (plan.claims ? 8 : 0) + moving;
+}
+
+// Host memory bandwidth: the best of five 256 MiB memcpy copies, counting the
+// bytes read and written. For a CPU rasteriser this is its device memory.
+double MeasureHostCopyGBs() {
+  constexpr size_t kBytes = size_t(256) << 20;
+  std::vector<char> a(kBytes, 1), b(kBytes, 2);
+  double best = 0;
+  for (int i = 0; i < 5; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::memcpy(b.data(), a.data(), kBytes);
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (s > 0) best = std::max(best, 2.0 * double(kBytes) / s / 1e9);
+    std::swap(a, b);
+  }
+  return best;
+}
+
+void ChooseBandwidth(const BenchPlan& plan, BenchResults* results) {
+  if (plan.memoryBandwidthGBs > 0) {
+    results->bandwidthGBs = plan.memoryBandwidthGBs;
+    results->bandwidthSource = "given (--memory-bandwidth)";
+  } else if (results->softwareAdapter) {
+    results->bandwidthGBs = MeasureHostCopyGBs();
+    results->bandwidthSource = "measured: host memcpy, 256 MiB, best of 5, read + written";
+  } else {
+    results->bandwidthSource = "unknown: give the device's figure with --memory-bandwidth";
+  }
 }
 
 }  // namespace
@@ -522,6 +552,7 @@ int RunBench(const BenchPlan& plan) {
       return 1;
     }
   }
+  ChooseBandwidth(plan, &results);
   results.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 

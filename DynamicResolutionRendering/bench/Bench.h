@@ -8,10 +8,12 @@
 // It writes results.csv, results.json, summary.md and PNG plots into --out.
 //
 // Besides the sweep it records:
-//  - "blit-floor" rows per view and scale: a linear vkCmdBlitImage
+//  - "fixed-function-blit" rows per view and scale: a linear vkCmdBlitImage
 //    (BlitExtension::BlitRegion) of the viewport region of the captured scene
 //    colour to a back-buffer-sized target, timed with its own timestamp
-//    queries: the physical floor of the scale pass;
+//    queries: another driver path, not a floor. The physical bound of the
+//    scale pass is the bandwidth bound (bytes read + written / memory
+//    bandwidth), in summary.md with the bandwidth figure and its source;
 //  - claim rows on the first view (pixel-shader vs API clear, super sampling,
 //    fast vs velocity-reading TAA) and on the cinematic camera (motion blur
 //    at 0.71 vs native), judged in summary.md's "Claims" section;
@@ -51,6 +53,7 @@ struct BenchPlan {
   double ghostTime = 12.0;     // animation time of the captured ghosting frame (s)
   double ghostStep = 1.0 / 30.0;  // animation step per frame (Options::fixedDt)
   int ghostFrames = 24;        // frames rendered (moving) before the capture
+  double memoryBandwidthGBs = 0;  // --memory-bandwidth; 0: measured on the host for CPU rasterisers
   Options base;  // size, scene, motion blur, symmetric TAA ... from the command line
 };
 

@@ -15,8 +15,10 @@ const char* kBenchUsage =
     "error (PSNR, SSIM, max error) against a 4x4 super-sampled reference, GPU time\n"
     "per pass (median and quartiles) and wall time. Writes results.csv,\n"
     "results.json, summary.md and plots (PNG) into DIR.\n"
-    "Also measured: a 'blit-floor' row per view and scale (a linear vkCmdBlitImage of\n"
-    "the viewport region to a back-buffer-sized target: the physical floor of the\n"
+    "Also measured: a 'fixed-function-blit' row per view and scale (a linear\n"
+    "vkCmdBlitImage of the viewport region to a back-buffer-sized target: another\n"
+    "driver path, not a floor; the bandwidth bound, bytes read + written / memory\n"
+    "bandwidth, is the physical limit of the\n"
     "scale pass, with each filter's cost as a ratio to it and to point); claim rows\n"
     "on the first view at 0.71 (pixel-shader vs API clear, super sampling allowed at\n"
     "1.0, fast vs velocity-reading TAA) and motion blur at 0.71 vs native on the\n"
@@ -29,7 +31,7 @@ const char* kBenchUsage =
     "\n"
     "  --quick              short preset for CI: one static camera, point / bilinear /\n"
     "                       bicubic / TAA at scales 0.3 0.5 0.71 1.0, 320x180, with\n"
-    "                       the blit-floor, claim and ghosting rows\n"
+    "                       the fixed-function-blit, claim and ghosting rows\n"
     "  --out DIR            output folder (default: bench_out)\n"
     "  --bench-warmup N     frames rendered before measuring (default 8, quick 4)\n"
     "  --bench-warmup-ms T  and warm up for at least T ms (default 500, quick 0): GPU\n"
@@ -39,6 +41,9 @@ const char* kBenchUsage =
     "  --camera N           only this camera (a static view at its default time)\n"
     "  --filter F           only this filter\n"
     "  --scale S            only this scale\n"
+    "  --memory-bandwidth GBPS  device memory bandwidth for the bandwidth bound of the\n"
+    "                       scale pass (default: measured host memcpy on CPU\n"
+    "                       rasterisers, none on GPUs: give the device's figure)\n"
     "  --no-claims          skip the claim rows\n"
     "  --no-ghosting        skip the ghosting rows\n"
     "  --ghost-frames N     moving frames before the ghosting capture (default 24,\n"
@@ -105,6 +110,11 @@ int ParseBenchArgs(const std::vector<std::string>& args, BenchPlan* plan, BenchA
     else if (a == "--bench-warmup-ms") ok = TakeInt(args, &i, 0, 60000, &parsed->warmupMs, message);
     else if (a == "--bench-warmup") ok = TakeInt(args, &i, 0, 10000, &parsed->warmup, message);
     else if (a == "--bench-frames") ok = TakeInt(args, &i, 1, 10000, &parsed->frames, message);
+    else if (a == "--memory-bandwidth") {
+      int gbs = 0;
+      ok = TakeInt(args, &i, 1, 100000, &gbs, message);
+      plan->memoryBandwidthGBs = gbs;
+    }
     else {
       parsed->cameraGiven |= a == "--camera";
       parsed->filterGiven |= a == "--filter";

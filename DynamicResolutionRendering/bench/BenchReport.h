@@ -37,15 +37,22 @@ struct BenchRow {
 };
 
 // Filter names of the rows that are not part of the filter x scale sweep.
-inline constexpr const char* kBlitFloor = "blit-floor";
+// The fixed-function blit: another driver path for the scale pass (a linear
+// vkCmdBlitImage), not a lower bound; the bandwidth bound is the physical one.
+inline constexpr const char* kFixedBlit = "fixed-function-blit";
 inline constexpr const char* kReferenceRepeat = "reference-repeat";
 
 struct BenchResults {
   const BenchPlan* plan = nullptr;
   std::string adapter, driver;
   std::vector<BenchRow> rows;
+  bool softwareAdapter = false;  // a CPU rasteriser: its device memory is host memory
   double seconds = 0;
   uint64_t validationMessages = 0;
+  // Memory bandwidth behind the bandwidth bound of the scale pass (GB/s, NaN:
+  // unknown), and where the figure comes from.
+  double bandwidthGBs = std::numeric_limits<double>::quiet_NaN();
+  std::string bandwidthSource;
 };
 
 // The article's scale-pass cost ratios to point filtering at 0.71x (Japanese

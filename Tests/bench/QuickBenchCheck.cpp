@@ -3,7 +3,7 @@
 // PNG plots), every row is valid with finite GPU times (the reference-repeat
 // row has none and must be identical to the reference: PSNR inf in the CSV,
 // "identical": true in the JSON), point filtering on the static view gets
-// strictly better from scale 0.3 to 1.0, blit-floor rows exist, and the run
+// strictly better from scale 0.3 to 1.0, fixed-function-blit rows exist, and the run
 // logged zero validation messages. Timings are never compared (lavapipe's
 // are not monotonic in resolution).
 //
@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
       continue;
     }
     std::vector<const char*> times = {"gpu_scale_ms"};
-    if (filter == "blit-floor") ++blitRows;
+    if (filter == "fixed-function-blit") ++blitRows;
     else times = {"gpu_frame_ms", "gpu_clear_ms", "gpu_scene_ms", "gpu_post_ms", "gpu_scale_ms"};
     for (const char* c : times) {
       const double v = Parse(f[col[c]]);
@@ -130,7 +130,7 @@ int main(int argc, char** argv) {
   }
   if (rows == 0) Fail("results.csv has no rows");
   if (repeatRows == 0) Fail("no reference-repeat row");
-  if (blitRows == 0) Fail("no blit-floor rows");
+  if (blitRows == 0) Fail("no fixed-function-blit rows");
   if (ghostRows == 0) Fail("no ghosting rows");
 
   // Point filtering on the static view: strictly better from 0.3 to 1.0.
@@ -163,7 +163,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%d check(s) failed in %s\n", g_failures, dir.c_str());
     return 1;
   }
-  std::printf("quick bench outputs OK: %zu rows (%zu blit-floor, %zu ghosting), point PSNR increasing over %zu scales\n",
+  std::printf("quick bench outputs OK: %zu rows (%zu fixed-function-blit, %zu ghosting), point PSNR increasing over %zu scales\n",
               rows, blitRows, ghostRows, inRange);
   return 0;
 }
