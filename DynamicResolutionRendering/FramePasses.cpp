@@ -71,11 +71,13 @@ bool FramePasses::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::
   cb.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
   d3dl::SAMPLER_DESC point;
   point.Filter = d3dl::FILTER_MIN_LINEAR_MAG_MIP_POINT;
-  d3dl::SAMPLER_DESC linear;
+  point.MinLOD = 0.0f;  // the original's zeroed descriptions
+  point.ComparisonFunc = d3dl::COMPARISON_ALWAYS;
+  d3dl::SAMPLER_DESC linear = point;
   linear.Filter = d3dl::FILTER_MIN_MAG_MIP_LINEAR;
   // The original's three: point (which filters on minification), linear and
   // linear-wrap (noise and the cubic lookup).
-  d3dl::SAMPLER_DESC wrap;
+  d3dl::SAMPLER_DESC wrap = linear;
   wrap.AddressU = wrap.AddressV = wrap.AddressW = d3dl::TEXTURE_ADDRESS_WRAP;
   d3dl::DEPTH_STENCIL_DESC nd;
   nd.DepthEnable = 0;

@@ -19,9 +19,11 @@ SamplerState g_Linear : register(s1);  // MIN_MAG_MIP_LINEAR, clamp
 static const uint kBlurTaps = 11;
 static const float kMaxVelocity = 0.02;  // UV units
 
-// One step: the velocity at pos, clamped, over the tap count.
+// One step: the velocity at pos, clamped, over the tap count. The LOD is
+// rounded to 1/256 as fixed-point hardware does (PostProcessDynamic.hlsl).
 float2 BlurStep(float2 pos) {
-  return SanitizeVelocity(g_Velocity.Sample(g_Point, pos).xy, kMaxVelocity) / kBlurTaps;
+  float lod = round(g_Velocity.CalculateLevelOfDetailUnclamped(g_Point, pos) * 256.0) / 256.0;
+  return SanitizeVelocity(g_Velocity.SampleLevel(g_Point, pos, lod).xy, kMaxVelocity) / kBlurTaps;
 }
 
 float4 MotionBlurPS(PostVSOut i) : SV_Target0 {

@@ -1,7 +1,7 @@
 // Dynamic-resolution path: motion blur inside the dynamic viewport, the
 // pixel-shader clear, and every resolve (scaling) filter including the
 // temporal AA variants. Formulas, taps and samplers follow the original's
-// PostProcessDynamic.hlsl; Sample() keeps its implicit LOD because the point
+// PostProcessDynamic.hlsl; reads keep its implicit LOD because the point
 // sampler is MIN_LINEAR_MAG_MIP_POINT (it filters when the RT is minified).
 #include "CommonPost.hlsli"
 
@@ -43,6 +43,20 @@ float2 ClampToUsed(float2 uv, float2 ratio) {
   return clamp(uv, 0.5 * g_InvDynSize, ratio - 0.5 * g_InvDynSize);
 }
 
+// Reads through the resolve sampler at s0. Its point sampler uses its linear
+// minification filter when the LOD is above 0, i.e. when the RT is minified
+// (super sampling). At one texel per pixel the LOD is 0 give or take float
+// noise; hardware computes it in fixed point (8 fractional bits), so the
+// original magnifies (point) there. Rounding the LOD the same way keeps the
+// decision off the noise, which on lavapipe is often just above 0.
+float ResolveLod(Texture2D<float4> t, float2 uv) {
+  return round(t.CalculateLevelOfDetailUnclamped(g_Resolve, uv) * 256.0) / 256.0;
+}
+
+float4 SampleResolve(Texture2D<float4> t, float2 uv) {
+  return t.SampleLevel(g_Resolve, uv, ResolveLod(t, uv));
+}
+
 // Velocity (viewport fractions) to the units the TAA weight and the fast
 // alpha use: the original scales by the whole RT's size; the fix by the
 // viewport's, i.e. pixels.
@@ -55,7 +69,7 @@ float2 VelocityScale(float2 ratio) {
 // velocity / 11 re-read at the tap; the step is shortened so that the next
 // position stays below the used part's upper edge.
 float2 BlurStep(float2 pos, float2 ratio) {
-  float2 v = SanitizeVelocity(g_VelocityCurr.Sample(g_Resolve, ClampToUsed(pos, ratio)).xy, kMaxVelocity);
+  float2 v = SanitizeVelocity(SampleResolve(g_VelocityCurr, ClampToUsed(pos, ratio)).xy, kMaxVelocity);
   v = v / kBlurTaps * ratio;
   return pos - min(pos - v, ratio);
 }
@@ -63,7 +77,7 @@ float2 BlurStep(float2 pos, float2 ratio) {
 float4 MotionBlurPS(PostVSOut i) : SV_Target0 {
   float2 ratio = g_SubSampleRTCurrRatio;
   float2 pos = i.uv * ratio;
-  float2 v0 = FiniteOrZero(g_VelocityCurr.Sample(g_Resolve, ClampToUsed(pos, ratio)).xy);
+  float2 v0 = FiniteOrZero(SampleResolve(g_VelocityCurr, ClampToUsed(pos, ratio)).xy);
   float2 alphaVelocity = v0 * VelocityScale(ratio) / kVelocityToAlpha;
   // The first step is clamped before the division by the tap count.
   float2 v = clamp(v0, -kMaxVelocity, kMaxVelocity) * ratio;
@@ -90,7 +104,7 @@ float4 MotionBlurPS(PostVSOut i) : SV_Target0 {
 // ratio 1.
 float4 ResolvePS(PostVSOut i) : SV_Target0 {
   float2 ratio = g_SubSampleRTCurrRatio;
-  return g_ColorCurr.Sample(g_Resolve, ClampToUsed(i.uv * ratio, ratio));
+  return SampleResolve(g_ColorCurr, ClampToUsed(i.uv * ratio, ratio));
 }
 
 // The original's bicubic: a lookup of (h0, h1, g0, g1) at x = i/128, read
@@ -150,7 +164,7 @@ float4 BicubicBSplinePS(PostVSOut i) : SV_Target0 {
 float4 NoisePS(PostVSOut i) : SV_Target0 {
   float2 ratio = g_SubSampleRTCurrRatio;
   float2 uv = i.uv * ratio;
-  float4 c = g_ColorCurr.Sample(g_Resolve, ClampToUsed(uv, ratio));
+  float4 c = SampleResolve(g_ColorCurr, ClampToUsed(uv, ratio));
   float4 n = g_Noise.Sample(g_LinearWrap, uv * kNoiseRepeats + g_NoiseOffset);
   return c * (1.0 + (n - 0.5) * (2.0 - (ratio.x + ratio.y)));
 }
@@ -165,7 +179,7 @@ float2 NoiseOffset(float2 noiseUV) {
 float4 NoiseOffsetPS(PostVSOut i) : SV_Target0 {
   float2 ratio = g_SubSampleRTCurrRatio;
   float2 uv = i.uv * ratio;
-  return g_ColorCurr.Sample(g_Resolve, ClampToUsed(uv + NoiseOffset(uv), ratio));
+  return SampleResolve(g_ColorCurr, ClampToUsed(uv + NoiseOffset(uv), ratio));
 }
 
 // ---------------------------------------------------------------------------
@@ -182,15 +196,15 @@ float4 TAABlend(float2 uvC, float2 uvP, bool basic) {
   float2 ratioC = g_SubSampleRTCurrRatio, ratioP = g_SubSampleRTPrevRatio;
   uvC = ClampToUsed(uvC, ratioC);
   uvP = ClampToUsed(uvP, ratioP);
-  float4 cC = g_ColorCurr.Sample(g_Resolve, uvC);
-  float4 cP = g_ColorPrev.Sample(g_Resolve, uvP);
+  float4 cC = SampleResolve(g_ColorCurr, uvC);
+  float4 cP = SampleResolve(g_ColorPrev, uvP);
   float S = 1.0;
   if (!basic) {
 #ifdef TAA_FAST
     S = 1.0 / (1.0 + kVelocityToAlpha * kVelocityToAlpha * (cC.a + cP.a));
 #else
-    float2 vC = VelocityScale(ratioC) * FiniteOrZero(g_VelocityCurr.Sample(g_Resolve, uvC).xy);
-    float2 vP = VelocityScale(ratioP) * FiniteOrZero(g_VelocityPrev.Sample(g_Resolve, uvP).xy);
+    float2 vC = VelocityScale(ratioC) * FiniteOrZero(SampleResolve(g_VelocityCurr, uvC).xy);
+    float2 vP = VelocityScale(ratioP) * FiniteOrZero(SampleResolve(g_VelocityPrev, uvP).xy);
     S = 1.0 / (1.0 + dot(vC, vC) + dot(vP, vP));
 #endif
   }

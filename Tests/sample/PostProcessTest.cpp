@@ -105,6 +105,41 @@ TEST_F(PostFixture, PointEqualsBilinearWhenSuperSampledAtTwo) {
 }
 
 // ---------------------------------------------------------------------------
+// 1b. TAA jitter: the original's pair (0,0) / (0.5,0.5) px translates the
+// scene right and UP (+x, +y in clip space). Two consecutive frames of a
+// still scene differ by that shift; estimated from the image gradients
+// (B - A = -d . grad A, least squares), d in image coordinates (y down) has
+// x and y of opposite signs, each about half a pixel.
+TEST_F(PostFixture, TAAJitterMovesTheSceneRightAndUp) {
+  Options o = TinyOptions(320, 180);
+  o.motionBlur = false;  // the scene draws into the final targets, captured as scene colour
+  o.filter = Filter::TAA;
+  Start(o);
+  Render(sample, 3);
+  const Image a = sample.CapturedSceneColor();
+  Render(sample, 1);
+  const Image& b = sample.CapturedSceneColor();
+  double sxx = 0, sxy = 0, syy = 0, sx = 0, sy = 0;
+  for (uint32_t y = 1; y + 1 < a.height; ++y)
+    for (uint32_t x = 1; x + 1 < a.width; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const double gx = (a.RGBA8(x + 1, y)[c] - a.RGBA8(x - 1, y)[c]) / 2.0;
+        const double gy = (a.RGBA8(x, y + 1)[c] - a.RGBA8(x, y - 1)[c]) / 2.0;
+        const double dt = double(b.RGBA8(x, y)[c]) - a.RGBA8(x, y)[c];
+        sxx += gx * gx, sxy += gx * gy, syy += gy * gy, sx -= gx * dt, sy -= gy * dt;
+      }
+  const double det = sxx * syy - sxy * sxy;
+  ASSERT_GT(det, 0.0);
+  const double dx = (syy * sx - sxy * sy) / det, dy = (sxx * sy - sxy * sx) / det;
+  std::printf("[post] TAA jitter between consecutive frames: (%.3f, %.3f) px (x right, y down)\n", dx, dy);
+  EXPECT_GT(std::abs(dx), 0.25);
+  EXPECT_LT(std::abs(dx), 0.75);
+  EXPECT_GT(std::abs(dy), 0.25);
+  EXPECT_LT(std::abs(dy), 0.75);
+  EXPECT_LT(dx * dy, 0.0) << "the jittered frame must move right and up (or left and down)";
+}
+
+// ---------------------------------------------------------------------------
 // 2. Bicubic: the original's formula on the CPU, from the final RT read back.
 namespace {
 
