@@ -54,8 +54,8 @@ void CubicFilterLookupTable::Release() {
 std::vector<uint8_t> NoiseTexture::Generate(uint32_t size, uint32_t seed, MsvcRand* rng) {
   std::vector<uint8_t> data(size_t(size) * size * 4u);
   MsvcRand local(seed);
+  if (rng) *rng = MsvcRand(seed);  // the caller's generator continues after the texels
   MsvcRand& r = rng ? *rng : local;
-  if (rng) r = MsvcRand(seed);
   for (uint8_t& byte : data) {
     const float v = 256.0f * static_cast<float>(r.Next()) / static_cast<float>(MsvcRand::kMax);
     byte = static_cast<uint8_t>(static_cast<int>(v) & 0xff);
