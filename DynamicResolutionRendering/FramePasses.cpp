@@ -1,6 +1,5 @@
 #include "FramePasses.h"
 
-#include <cstdlib>
 #include <cstring>
 
 namespace drr {
@@ -72,10 +71,13 @@ bool FramePasses::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::
   cb.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
   d3dl::SAMPLER_DESC point;
   point.Filter = d3dl::FILTER_MIN_LINEAR_MAG_MIP_POINT;
-  d3dl::SAMPLER_DESC linear;
+  point.MinLOD = 0.0f;  // the original's zeroed descriptions
+  point.ComparisonFunc = d3dl::COMPARISON_ALWAYS;
+  d3dl::SAMPLER_DESC linear = point;
   linear.Filter = d3dl::FILTER_MIN_MAG_MIP_LINEAR;
-  d3dl::SAMPLER_DESC wrap;
-  wrap.Filter = d3dl::FILTER_MIN_MAG_MIP_POINT;
+  // The original's three: point (which filters on minification), linear and
+  // linear-wrap (noise and the cubic lookup).
+  d3dl::SAMPLER_DESC wrap = linear;
   wrap.AddressU = wrap.AddressV = wrap.AddressW = d3dl::TEXTURE_ADDRESS_WRAP;
   d3dl::DEPTH_STENCIL_DESC nd;
   nd.DepthEnable = 0;
@@ -85,7 +87,7 @@ bool FramePasses::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::
   if (d3dl::FAILED(device->CreateBuffer(&cb, nullptr, m_CB.GetAddressOf())) ||
       d3dl::FAILED(device->CreateSamplerState(&point, m_SamplerPoint.GetAddressOf())) ||
       d3dl::FAILED(device->CreateSamplerState(&linear, m_SamplerLinear.GetAddressOf())) ||
-      d3dl::FAILED(device->CreateSamplerState(&wrap, m_SamplerPointWrap.GetAddressOf())) ||
+      d3dl::FAILED(device->CreateSamplerState(&wrap, m_SamplerLinearWrap.GetAddressOf())) ||
       d3dl::FAILED(device->CreateDepthStencilState(&nd, m_NoDepth.GetAddressOf())) ||
       d3dl::FAILED(device->CreateRasterizerState(&rd, m_NoCull.GetAddressOf()))) {
     *error = "cannot create the post-processing states";
@@ -138,7 +140,7 @@ void FramePasses::Release() {
   m_Noise.Release();
   m_Shaders.reset();
   m_CB = nullptr;
-  m_SamplerPoint = m_SamplerLinear = m_SamplerPointWrap = nullptr;
+  m_SamplerPoint = m_SamplerLinear = m_SamplerLinearWrap = nullptr;
   m_NoDepth = nullptr;
   m_NoCull = nullptr;
 }
@@ -170,8 +172,10 @@ void TemporalHistory::Advance(FrameSetup& s, glm::vec2 ratio, bool symmetric) {
   ratioCurr = ratio;
   jitterCurr = glm::vec2(0.f);
   if (s.taa) {
-    static const glm::vec2 kAsymmetric[2] = {{0.0f, 0.0f}, {0.5f, 0.5f}};
-    static const glm::vec2 kSymmetric[2] = {{-0.25f, -0.25f}, {0.25f, 0.25f}};
+    // The original's pairs move the scene right and up (+x, +y in clip
+    // space); in this struct's y-down pixels the y component changes sign.
+    static const glm::vec2 kAsymmetric[2] = {{0.0f, 0.0f}, {0.5f, -0.5f}};
+    static const glm::vec2 kSymmetric[2] = {{-0.25f, 0.25f}, {0.25f, -0.25f}};
     const glm::vec2 px = (symmetric ? kSymmetric : kAsymmetric)[current];
     jitterCurr = px / glm::vec2(s.sceneViewport.Width, s.sceneViewport.Height);
   }
@@ -188,12 +192,11 @@ void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dyn, glm::
   DynamicConstants& dc = s.dc;
   dc = {{h.ratioCurr.x, h.ratioCurr.y}, {h.ratioPrev.x, h.ratioPrev.y}, {h.jitterCurr.x, h.jitterCurr.y},
         {h.jitterPrev.x, h.jitterPrev.y}, {dyn.x, dyn.y}, {1.0f / dyn.x, 1.0f / dyn.y}, {}, {bb.x, bb.y}, {}, 0, {}};
-  dc.noiseOffset[0] = float(std::rand() % 128);
-  dc.noiseOffset[1] = float(std::rand() % 128);
   std::memcpy(dc.clearColor, kClearColor, sizeof kClearColor);
   s.fc = {{bb.x, bb.y}, {1.0f / bb.x, 1.0f / bb.y}, {}, 0, {}};
   std::memcpy(s.fc.clearColor, kClearColor, sizeof kClearColor);
   dc.fixes = s.fc.fixes = fixes.bits;
+  s.fixes = fixes;
 }
 
 SceneTargets ChooseSceneTargets(RenderTargetSet& rts, const FrameSetup& s, const BackBuffer& bb) {
@@ -228,8 +231,9 @@ void FramePasses::Clear(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTar
     if (t.rtv[1]) ctx->ClearRenderTargetView(t.rtv[1], kMarkerVelocity);
     ctx->ClearRenderTargetView(rts.Final(s.cur).rtv.Get(), kMarkerColor);
   }
-  // None (debug) shows the whole RT: clear the final target to zero first.
-  if (s.dynamic && s.filter == Filter::None) {
+  // None (debug) shows the whole RT. With the fix its final target is zeroed
+  // before the scene; the original zeroes it after (MotionBlur).
+  if (s.dynamic && s.filter == Filter::None && s.fixes.Has(Fix::NoneShowsRT)) {
     ctx->ClearRenderTargetView(rts.Final(s.cur).rtv.Get(), kZero);
     CountPass("ClearFinalNone");
   }
@@ -252,11 +256,9 @@ void FramePasses::Clear(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTar
     }
     CountPass("ClearPS");
   } else {
-    d3dl::RECT r;
-    r.right = int32_t(s.sceneViewport.Width);
-    r.bottom = int32_t(s.sceneViewport.Height);
-    ctx->ClearView(t.rtv[0], s.dc.clearColor, &r, 1);
-    if (t.rtv[1]) ctx->ClearView(t.rtv[1], kZero, &r, 1);
+    // The API clear covers the whole views, not just the viewport.
+    if (t.rtv[1]) ctx->ClearRenderTargetView(t.rtv[1], kZero);
+    ctx->ClearRenderTargetView(t.rtv[0], s.dc.clearColor);
     CountPass("ClearAPI");
   }
   m_Timers.clear.Stop(ctx);
@@ -278,6 +280,12 @@ void FramePasses::Scene(d3dl::DeviceContext* ctx, const FrameSetup& s, const Sce
 void FramePasses::MotionBlur(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
                              const BackBuffer& bb) {
   m_Timers.postP.Start(ctx);
+  // None (debug): the original zeroes the final target here, after the scene
+  // drew into it (so without motion blur None shows black; fix none-shows-rt).
+  if (s.dynamic && s.filter == Filter::None && !s.fixes.Has(Fix::NoneShowsRT)) {
+    ctx->ClearRenderTargetView(rts.Final(s.cur).rtv.Get(), kZero);
+    CountPass("ClearFinalNone");
+  }
   if (s.motionBlur) {
     ctx->BeginEvent("MotionBlur");
     // Into the final target (dynamic) or the back buffer (full resolution).
@@ -290,7 +298,8 @@ void FramePasses::MotionBlur(d3dl::DeviceContext* ctx, const FrameSetup& s, Rend
     const RenderTarget& velocity = rts[s.dynamic ? RT::VelocityDynamic0 : RT::VelocityFull];
     d3dl::ShaderResourceView* srv[3] = {colour.srv.Get(), nullptr, velocity.srv.Get()};
     ctx->PSSetShaderResources(0, 3, srv);
-    ctx->PSSetSamplers(1, 1, m_SamplerLinear.GetAddressOf());
+    d3dl::SamplerState* samplers[2] = {m_SamplerPoint.Get(), m_SamplerLinear.Get()};
+    ctx->PSSetSamplers(0, 2, samplers);
     if (s.dynamic) DrawFullScreen(ctx, m_Shaders->dynamicVS.Get(), m_Shaders->motionBlur.Get());
     else DrawFullScreen(ctx, m_Shaders->fullVS.Get(), m_Shaders->fullMotionBlur.Get());
     CountPass(s.dynamic ? "MotionBlurDynamic" : "MotionBlurFull");
@@ -318,6 +327,12 @@ void FramePasses::Scale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTar
     ctx->RSSetViewports(1, &s.backBufferViewport);
     DynamicConstants rc = s.dc;
     if (s.filter == Filter::None) rc.ratioCurr[0] = rc.ratioCurr[1] = rc.ratioPrev[0] = rc.ratioPrev[1] = 1.0f;
+    if (s.filter == Filter::Noise) {
+      // The original draws a new offset (two rand() calls) each Noise frame.
+      const auto offset = m_Noise.NextOffset();
+      rc.noiseOffset[0] = offset[0];
+      rc.noiseOffset[1] = offset[1];
+    }
     SetConstants(ctx, &rc, sizeof rc);
     const bool velocityTAA = s.taa && !s.motionBlur;
     d3dl::ShaderResourceView* srv[6] = {rts.Final(s.cur).srv.Get(),
@@ -329,7 +344,7 @@ void FramePasses::Scale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTar
     ctx->PSSetShaderResources(0, 6, srv);
     d3dl::SamplerState* samplers[3] = {
         GetFilterInfo(s.filter).linearSampler ? m_SamplerLinear.Get() : m_SamplerPoint.Get(), m_SamplerLinear.Get(),
-        m_SamplerPointWrap.Get()};
+        m_SamplerLinearWrap.Get()};
     ctx->PSSetSamplers(0, 3, samplers);
     const char* pass = nullptr;
     d3dl::PixelShader* ps = ResolveShader(s, &pass);

@@ -55,6 +55,7 @@ struct FrameTimers {
 struct FrameSetup {
   bool dynamic = true, taa = false, motionBlur = true, psClear = true, markOutside = false;
   Filter filter = Filter::TAA;
+  FixSet fixes;
   int cur = 0, prev = 0;  // final/velocity targets written and read as history
   d3dl::VIEWPORT sceneViewport{}, backBufferViewport{};
   DynamicConstants dc{};
@@ -76,8 +77,9 @@ struct TemporalHistory {
   int current = 0;
   bool valid = false;
   glm::vec2 jitterCurr{0.f}, jitterPrev{0.f}, ratioCurr{1.f}, ratioPrev{1.f};
-  // This frame's jitter (the original's pair: 0/0.5 px, or -0.25/+0.25 px
-  // symmetric) and ratios; s.cur and s.prev; the viewport is already in s.
+  // This frame's jitter (the original's pair: (0,0)/(0.5,0.5) px, or
+  // -0.25/+0.25 px symmetric, in clip-space directions: x right, y up) and
+  // ratios; s.cur and s.prev; the viewport is already in s.
   void Advance(FrameSetup& s, glm::vec2 ratio, bool symmetric);
 };
 // The constants of both post-processing paths for this frame.
@@ -118,7 +120,7 @@ class FramePasses {
   d3dl::Device* m_Device = nullptr;
   std::unique_ptr<Shaders> m_Shaders;
   d3dl::ComPtr<d3dl::Buffer> m_CB;
-  d3dl::ComPtr<d3dl::SamplerState> m_SamplerPoint, m_SamplerLinear, m_SamplerPointWrap;
+  d3dl::ComPtr<d3dl::SamplerState> m_SamplerPoint, m_SamplerLinear, m_SamplerLinearWrap;
   d3dl::ComPtr<d3dl::DepthStencilState> m_NoDepth;
   d3dl::ComPtr<d3dl::RasterizerState> m_NoCull;
   CubicFilterLookupTable m_CubicLookup;

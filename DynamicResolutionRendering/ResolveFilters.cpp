@@ -11,7 +11,7 @@ constexpr FilterInfo kFilters[] = {
     {"None", "none", kPoint, nullptr, "ResolveNone", "ResolveNone", false, false},
     {"Point", "point", kPoint, nullptr, "ResolvePoint", "ResolvePoint", false, false},
     {"Bilinear", "bilinear", kPoint, nullptr, "ResolveBilinear", "ResolveBilinear", true, false},
-    {"Bicubic", "bicubic", "PostProcessDynamic_BicubicPS", nullptr, "ResolveBicubic", "ResolveBicubic", false, false},
+    {"Bicubic", "bicubic", "PostProcessDynamic_BicubicPS", nullptr, "ResolveBicubic", "ResolveBicubic", true, false},
     {"Noise", "noise", "PostProcessDynamic_NoisePS", nullptr, "ResolveNoise", "ResolveNoise", false, false},
     {"Noise Offset", "noise-offset", "PostProcessDynamic_NoiseOffsetPS", nullptr, "ResolveNoiseOffset",
      "ResolveNoiseOffset", false, false},
@@ -21,6 +21,8 @@ constexpr FilterInfo kFilters[] = {
      "PostProcessDynamic_TAANoiseOffsetFastPS", "ResolveTAANoiseOffset", "ResolveTAANoiseOffsetFast", false, true},
     {"TAA Basic", "taa-basic", "PostProcessDynamic_TAABasicPS", nullptr, "ResolveTAABasic", "ResolveTAABasic", false,
      true},
+    {"Bicubic B-spline", "bicubic-bspline", "PostProcessDynamic_BicubicBSplinePS", nullptr, "ResolveBicubicBSpline",
+     "ResolveBicubicBSpline", false, false},
 };
 static_assert(std::size(kFilters) == size_t(Filter::Count));
 constexpr FilterInfo kUnknown{"?", "?", kPoint, nullptr, "ResolvePoint", "ResolvePoint", false, false};

@@ -9,7 +9,7 @@
 
 namespace drr {
 
-// In the order of the original's combo box.
+// In the order of the original's combo box; port additions after it.
 enum class Filter : int {
   None = 0,  // debug: the raw dynamic RT
   Point,
@@ -20,6 +20,7 @@ enum class Filter : int {
   TAA,
   TAANoiseOffset,
   TAABasic,
+  BicubicBSpline,  // port addition: a true cubic B-spline (the original's Bicubic is not one)
   Count
 };
 
@@ -30,7 +31,7 @@ struct FilterInfo {
   const char* fastShader;  // with motion blur on (null: the same shader)
   const char* pass;        // in the report's passes_run
   const char* fastPass;
-  bool linearSampler;      // s0 bilinear instead of the original's point sampler
+  bool linearSampler;      // s0 linear instead of point, as the original binds for Bilinear and Bicubic
   bool temporal;           // reads the previous frame (two final targets, jitter)
 };
 

@@ -1,15 +1,14 @@
 #include "TexGenUtils.h"
 
-#include <random>
-
 namespace drr {
 
 std::array<float, 4> CubicFilterLookupTable::Entry(float a) {
   const float a2 = a * a, a3 = a2 * a;
-  const float w0 = (-a3 + 3.f * a2 - 3.f * a + 1.f) / 6.f;
-  const float w1 = (3.f * a3 - 6.f * a2 + 4.f) / 6.f;
-  const float w2 = (-3.f * a3 + 3.f * a2 + 3.f * a + 1.f) / 6.f;
-  const float w3 = a3 / 6.f;
+  const float sixth = 1.f / 6.f;
+  const float w0 = (-a3 + 3.f * a2 - 3.f * a + 1.f) * sixth;
+  const float w1 = (3.f * a3 - 6.f * a2 + 4.f) * sixth;
+  const float w2 = (-3.f * a3 + 3.f * a2 + 3.f * a + 1.f) * sixth;
+  const float w3 = a3 * sixth;
   const float g0 = w0 + w1;
   const float g1 = w2 + w3;
   const float h0 = 1.f - w1 / g0 + a;
@@ -20,7 +19,7 @@ std::array<float, 4> CubicFilterLookupTable::Entry(float a) {
 std::vector<float> CubicFilterLookupTable::Generate(uint32_t size) {
   std::vector<float> data(size * 4u);
   for (uint32_t i = 0; i < size; ++i) {
-    const auto e = Entry((static_cast<float>(i) + 0.5f) / static_cast<float>(size));
+    const auto e = Entry(static_cast<float>(i) / static_cast<float>(size));
     for (int c = 0; c < 4; ++c) data[i * 4u + c] = e[c];
   }
   return data;
@@ -52,22 +51,27 @@ void CubicFilterLookupTable::Release() {
   m_Bytes = 0;
 }
 
-std::vector<uint8_t> NoiseTexture::Generate(uint32_t size, uint32_t seed) {
+std::vector<uint8_t> NoiseTexture::Generate(uint32_t size, uint32_t seed, MsvcRand* rng) {
   std::vector<uint8_t> data(size_t(size) * size * 4u);
-  std::mt19937 rng(seed);  // the engine's output sequence is fixed by the standard
-  for (size_t i = 0; i < data.size(); i += 4) {
-    const uint32_t r = rng();
-    data[i + 0] = uint8_t(r & 0xff);
-    data[i + 1] = uint8_t((r >> 8) & 0xff);
-    data[i + 2] = uint8_t((r >> 16) & 0xff);
-    data[i + 3] = uint8_t((r >> 24) & 0xff);
+  MsvcRand local(seed);
+  if (rng) *rng = MsvcRand(seed);  // the caller's generator continues after the texels
+  MsvcRand& r = rng ? *rng : local;
+  for (uint8_t& byte : data) {
+    const float v = 256.0f * static_cast<float>(r.Next()) / static_cast<float>(MsvcRand::kMax);
+    byte = static_cast<uint8_t>(static_cast<int>(v) & 0xff);
   }
   return data;
 }
 
+std::array<float, 2> NoiseTexture::NextOffset() {
+  const float x = static_cast<float>(m_Rand.Next()) / (MsvcRand::kMax + 1.0f);
+  const float y = static_cast<float>(m_Rand.Next()) / (MsvcRand::kMax + 1.0f);
+  return {x, y};
+}
+
 d3dl::HRESULT NoiseTexture::Create(d3dl::Device* device, uint32_t size, uint32_t seed) {
   Release();
-  const std::vector<uint8_t> data = Generate(size, seed);
+  const std::vector<uint8_t> data = Generate(size, seed, &m_Rand);
   d3dl::TEXTURE2D_DESC desc;
   desc.Width = size;
   desc.Height = size;

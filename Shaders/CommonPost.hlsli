@@ -21,15 +21,13 @@ PostVSOut FullScreenVS(uint id : SV_VertexID) {
 
 // Velocity as the scene writes it: viewport-fraction units. Half floats can
 // overflow to +-Inf and a bad vertex can give NaN: never let them through.
-float2 SanitizeVelocity(float2 v, float limit) {
+float2 FiniteOrZero(float2 v) {
   bool ok = !any(isnan(v)) && !any(isinf(v));
-  v = ok ? v : float2(0.0, 0.0);
-  return clamp(v, -limit, limit);
+  return ok ? v : float2(0.0, 0.0);
 }
 
-float4 SanitizeColor(float4 c) {
-  bool ok = !any(isnan(c)) && !any(isinf(c));
-  return ok ? c : float4(0.0, 0.0, 0.0, 1.0);
+float2 SanitizeVelocity(float2 v, float limit) {
+  return clamp(FiniteOrZero(v), -limit, limit);
 }
 
 #endif

@@ -7,3 +7,5 @@
 // DRR_FIX(Id, bit, "command-line-name", "one line of help")
 // Bits are stable (reports and scripts record them); never reuse one.
 DRR_FIX(UvInset, 0, "uv-inset", "resolves clamp UVs half a texel inside the dynamic viewport")
+DRR_FIX(TaaVelocityPixels, 1, "taa-velocity-pixels", "TAA weights measure velocity in viewport pixels, not RT-size units")
+DRR_FIX(NoneShowsRT, 2, "none-shows-rt", "filter None shows the RT without motion blur too (not black)")

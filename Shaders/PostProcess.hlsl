@@ -1,5 +1,7 @@
 // Full-resolution path (dynamic resolution off): motion blur into the back
-// buffer and the pixel-shader clear of colour + velocity.
+// buffer and the pixel-shader clear of colour + velocity. Motion blur as the
+// original's PostProcess.hlsl: no clamp of the positions (the sampler's
+// clamp addressing keeps them in the target).
 #include "CommonPost.hlsli"
 
 cbuffer cbPostProcess : register(b0) {
@@ -10,32 +12,33 @@ cbuffer cbPostProcess : register(b0) {
 };
 
 Texture2D<float4> g_Color : register(t0);
-Texture2D<float2> g_Velocity : register(t2);
-SamplerState g_LinearClamp : register(s1);
+Texture2D<float4> g_Velocity : register(t2);
+SamplerState g_Point : register(s0);   // MIN_LINEAR_MAG_MIP_POINT, clamp
+SamplerState g_Linear : register(s1);  // MIN_MAG_MIP_LINEAR, clamp
 
-static const int kBlurTaps = 11;
+static const uint kBlurTaps = 11;
 static const float kMaxVelocity = 0.02;  // UV units
 
-float2 LoadVelocity(float2 uv) {
-  int2 p = clamp(int2(uv * g_Size), int2(0, 0), int2(g_Size) - 1);
-  return SanitizeVelocity(g_Velocity.Load(int3(p, 0)), kMaxVelocity);
+// One step: the velocity at pos, clamped, over the tap count. The LOD is
+// rounded to 1/256 as fixed-point hardware does (PostProcessDynamic.hlsl).
+float2 BlurStep(float2 pos) {
+  float lod = round(g_Velocity.CalculateLevelOfDetailUnclamped(g_Point, pos) * 256.0) / 256.0;
+  return SanitizeVelocity(g_Velocity.SampleLevel(g_Point, pos, lod).xy, kMaxVelocity) / kBlurTaps;
 }
 
 float4 MotionBlurPS(PostVSOut i) : SV_Target0 {
-  float2 uvMin = 0.5 * g_InvSize;
-  float2 uvMax = 1.0 - 0.5 * g_InvSize;
   float2 pos = i.uv;
-  float3 acc = 0.0;
-  float wsum = 0.0;
-  [unroll] for (int k = 0; k < kBlurTaps; ++k) {
-    float2 p = clamp(pos, uvMin, uvMax);
-    float w = 1.0 - (float)k / (float)kBlurTaps;
-    acc += w * SanitizeColor(g_Color.SampleLevel(g_LinearClamp, p, 0)).rgb;
-    wsum += w;
-    pos -= LoadVelocity(p) * (1.0 / (kBlurTaps - 1));
+  float2 step = BlurStep(pos);
+  float4 color = 0.0;
+  float factor = 1.0, factorSum = 0.0;
+  [unroll] for (uint k = 0; k < kBlurTaps; ++k) {
+    color += factor * g_Color.Sample(g_Linear, pos);
+    factorSum += factor;
+    pos -= step;
+    factor -= 1.0 / kBlurTaps;
+    step = BlurStep(pos);
   }
-  float2 vPix = LoadVelocity(i.uv) * g_Size / 16.0;
-  return float4(acc / wsum, saturate(dot(vPix, vPix)));
+  return color / factorSum;
 }
 
 #include "ClearPS.hlsli"

@@ -1,6 +1,8 @@
-// Dynamic-resolution path: motion blur inside the dynamic viewport (sample
-// positions clamped to the used part of the RT), the pixel-shader clear, and
-// every resolve (scaling) filter including the temporal AA variants.
+// Dynamic-resolution path: motion blur inside the dynamic viewport, the
+// pixel-shader clear, and every resolve (scaling) filter including the
+// temporal AA variants. Formulas, taps and samplers follow the original's
+// PostProcessDynamic.hlsl; reads keep its implicit LOD because the point
+// sampler is MIN_LINEAR_MAG_MIP_POINT (it filters when the RT is minified).
 #include "CommonPost.hlsli"
 
 cbuffer cbPostProcessDynamic : register(b0) {
@@ -10,7 +12,7 @@ cbuffer cbPostProcessDynamic : register(b0) {
   float2 g_JitterPrev;
   float2 g_DynSize;                // dynamic RT size in pixels
   float2 g_InvDynSize;
-  float2 g_NoiseOffset;            // random offset of the noise texture, in noise texels
+  float2 g_NoiseOffset;            // per-frame offset of the noise (Noise filter), in noise repeats
   float2 g_BackBufferSize;
   float4 g_ClearColor;
   uint g_Fixes;                    // FIX_* bits (Fixes.hlsli)
@@ -19,146 +21,194 @@ cbuffer cbPostProcessDynamic : register(b0) {
 
 Texture2D<float4> g_ColorCurr : register(t0);
 Texture2D<float4> g_ColorPrev : register(t1);
-Texture2D<float2> g_VelocityCurr : register(t2);
-Texture2D<float2> g_VelocityPrev : register(t3);
+Texture2D<float4> g_VelocityCurr : register(t2);
+Texture2D<float4> g_VelocityPrev : register(t3);
 Texture2D<float4> g_Noise : register(t4);
 Texture1D<float4> g_CubicLookup : register(t5);
 
-SamplerState g_PointClamp : register(s0);   // MIN_LINEAR_MAG_MIP_POINT, clamp
+SamplerState g_Resolve : register(s0);      // the filter's: point (MIN_LINEAR_MAG_MIP_POINT) or linear, clamp
 SamplerState g_LinearClamp : register(s1);  // MIN_MAG_MIP_LINEAR, clamp
-SamplerState g_PointWrap : register(s2);    // MIN_MAG_MIP_POINT, wrap
+SamplerState g_LinearWrap : register(s2);   // MIN_MAG_MIP_LINEAR, wrap: noise and the cubic lookup
 
-static const int kBlurTaps = 11;
-static const float kMaxVelocity = 0.02;     // UV units (motion blur)
-static const float kMaxTAAVelocity = 1.0;   // viewport fractions (TAA weight)
-static const float kNoiseSize = 128.0;
+static const uint kBlurTaps = 11;
+static const float kMaxVelocity = 0.02;     // viewport fractions (motion blur)
+static const float kVelocityToAlpha = 16.0; // alpha = |velocity * size / 16|^2 (fast TAA)
+static const float kNoiseRepeats = 128.0;   // noise repeats across the RT (the texture's size)
 
-// The used part of the RT, inset by half a texel so that bilinear taps never
-// reach a texel outside the viewport (the article's figure 4 edge bleeding).
+// With the uv-inset fix: the used part of the RT, inset by half a texel, so
+// that bilinear taps never reach a texel outside the viewport. The original
+// reads unclamped UVs.
 float2 ClampToUsed(float2 uv, float2 ratio) {
   if ((g_Fixes & FIX_UvInset) == 0) return uv;
   return clamp(uv, 0.5 * g_InvDynSize, ratio - 0.5 * g_InvDynSize);
 }
 
-float2 LoadVelocityCurr(float2 uv, float limit) {
-  int2 p = clamp(int2(uv * g_DynSize), int2(0, 0), int2(g_DynSize) - 1);
-  return SanitizeVelocity(g_VelocityCurr.Load(int3(p, 0)), limit);
+// Reads through the resolve sampler at s0. Its point sampler uses its linear
+// minification filter when the LOD is above 0, i.e. when the RT is minified
+// (super sampling). At one texel per pixel the LOD is 0 give or take float
+// noise; hardware computes it in fixed point (8 fractional bits), so the
+// original magnifies (point) there. Rounding the LOD the same way keeps the
+// decision off the noise, which on lavapipe is often just above 0.
+float ResolveLod(Texture2D<float4> t, float2 uv) {
+  return round(t.CalculateLevelOfDetailUnclamped(g_Resolve, uv) * 256.0) / 256.0;
 }
 
-float2 LoadVelocityPrev(float2 uv, float limit) {
-  int2 p = clamp(int2(uv * g_DynSize), int2(0, 0), int2(g_DynSize) - 1);
-  return SanitizeVelocity(g_VelocityPrev.Load(int3(p, 0)), limit);
+float4 SampleResolve(Texture2D<float4> t, float2 uv) {
+  return t.SampleLevel(g_Resolve, uv, ResolveLod(t, uv));
+}
+
+// Velocity (viewport fractions) to the units the TAA weight and the fast
+// alpha use: the original scales by the whole RT's size; the fix by the
+// viewport's, i.e. pixels.
+float2 VelocityScale(float2 ratio) {
+  return (g_Fixes & FIX_TaaVelocityPixels) != 0 ? g_DynSize * ratio : g_DynSize;
 }
 
 // ---------------------------------------------------------------------------
-// Motion blur: 11 taps along the velocity, linearly decaying weights,
-// velocity clamped to +-0.02 UV and scaled by the RT ratio, re-read at each
-// tap; alpha = |velocity in dynamic-RT pixels / 16|^2 for the fast TAA path.
+// Motion blur: 11 taps with weights 1, 10/11, ... 1/11, each step a
+// velocity / 11 re-read at the tap; the step is shortened so that the next
+// position stays below the used part's upper edge.
+float2 BlurStep(float2 pos, float2 ratio) {
+  float2 v = SanitizeVelocity(SampleResolve(g_VelocityCurr, ClampToUsed(pos, ratio)).xy, kMaxVelocity);
+  v = v / kBlurTaps * ratio;
+  return pos - min(pos - v, ratio);
+}
+
 float4 MotionBlurPS(PostVSOut i) : SV_Target0 {
   float2 ratio = g_SubSampleRTCurrRatio;
-  float2 uv = ClampToUsed(i.uv * ratio, ratio);
-  float2 pos = uv;
-  float3 acc = 0.0;
-  float wsum = 0.0;
-  [unroll] for (int k = 0; k < kBlurTaps; ++k) {
-    float2 p = ClampToUsed(pos, ratio);
-    float w = 1.0 - (float)k / (float)kBlurTaps;
-    acc += w * SanitizeColor(g_ColorCurr.SampleLevel(g_LinearClamp, p, 0)).rgb;
-    wsum += w;
-    pos -= LoadVelocityCurr(p, kMaxVelocity) * ratio * (1.0 / (kBlurTaps - 1));
+  float2 pos = i.uv * ratio;
+  float2 v0 = FiniteOrZero(SampleResolve(g_VelocityCurr, ClampToUsed(pos, ratio)).xy);
+  float2 alphaVelocity = v0 * VelocityScale(ratio) / kVelocityToAlpha;
+  // The first step is clamped before the division by the tap count.
+  float2 v = clamp(v0, -kMaxVelocity, kMaxVelocity) * ratio;
+  float2 step = (pos - min(pos - v, ratio)) / kBlurTaps;
+  float4 color = 0.0;
+  float factor = 1.0, factorSum = 0.0;
+  [unroll] for (uint k = 0; k < kBlurTaps; ++k) {
+    color += factor * g_ColorCurr.Sample(g_LinearClamp, ClampToUsed(pos, ratio));
+    factorSum += factor;
+    pos -= step;
+    factor -= 1.0 / kBlurTaps;
+    step = BlurStep(pos, ratio);
   }
-  float2 vPix = LoadVelocityCurr(uv, kMaxVelocity) * ratio * g_DynSize / 16.0;
-  return float4(acc / wsum, saturate(dot(vPix, vPix)));
+  color /= factorSum;
+  color.a = dot(alphaVelocity, alphaVelocity);
+  return color;
 }
 
 #include "ClearPS.hlsli"
 
 // ---------------------------------------------------------------------------
-// Resolve filters. Point / bilinear / None share this one: the sampler bound
-// at s0 decides (point for Point, linear for Bilinear); None sets ratio 1.
+// Resolve filters. None / Point / Bilinear share this one: the sampler bound
+// at s0 decides (point for None and Point, linear for Bilinear); None sets
+// ratio 1.
 float4 ResolvePS(PostVSOut i) : SV_Target0 {
   float2 ratio = g_SubSampleRTCurrRatio;
-  float2 uv = ClampToUsed(i.uv * ratio, ratio);
-  return float4(SanitizeColor(g_ColorCurr.SampleLevel(g_PointClamp, uv, 0)).rgb, 1.0);
+  return SampleResolve(g_ColorCurr, ClampToUsed(i.uv * ratio, ratio));
 }
 
-// Fast B-spline bicubic from 4 bilinear taps (Sigg & Hadwiger, GPU Gems 2
-// ch. 20). The lookup holds (h0, h1, g0, g1); entry i is for fraction
-// (i + 0.5) / 128 and is point-sampled (wrap) at the fraction itself.
+// The original's bicubic: a lookup of (h0, h1, g0, g1) at x = i/128, read
+// linear-wrap at the texel coordinate - 0.5, its offsets scaled by 1/4; four
+// taps through the linear s0 blended by g0 (in y, then x).
 float4 BicubicPS(PostVSOut i) : SV_Target0 {
   float2 ratio = g_SubSampleRTCurrRatio;
+  float2 uv = i.uv * ratio;
+  float2 coord = uv * g_DynSize - 0.5;
+  float3 hgX = g_CubicLookup.Sample(g_LinearWrap, coord.x).xyz;
+  float3 hgY = g_CubicLookup.Sample(g_LinearWrap, coord.y).xyz;
+  hgX.xy *= 0.25;
+  hgY.xy *= 0.25;
+  float2 dx = float2(g_InvDynSize.x, 0.0), dy = float2(0.0, g_InvDynSize.y);
+  float2 p10 = uv + hgX.x * dx;
+  float2 p00 = uv - hgX.y * dx;
+  float2 p11 = p10 + hgY.x * dy;
+  float2 p01 = p00 + hgY.x * dy;
+  p10 -= hgY.y * dy;
+  p00 -= hgY.y * dy;
+  float4 c00 = g_ColorCurr.Sample(g_Resolve, ClampToUsed(p00, ratio));
+  float4 c01 = g_ColorCurr.Sample(g_Resolve, ClampToUsed(p01, ratio));
+  float4 c10 = g_ColorCurr.Sample(g_Resolve, ClampToUsed(p10, ratio));
+  float4 c11 = g_ColorCurr.Sample(g_Resolve, ClampToUsed(p11, ratio));
+  c00 = lerp(c00, c01, hgY.z);
+  c10 = lerp(c10, c11, hgY.z);
+  return lerp(c00, c10, hgX.z);
+}
+
+// Cubic B-spline from 4 bilinear taps (Sigg & Hadwiger, GPU Gems 2 ch. 20),
+// weights computed here: w0..w3 of the fraction, g = pair sums, taps at
+// -h0 and +h1 texels. A port addition, not one of the original's filters.
+float4 BicubicBSplinePS(PostVSOut i) : SV_Target0 {
+  float2 ratio = g_SubSampleRTCurrRatio;
   float2 uv = ClampToUsed(i.uv * ratio, ratio);
-  float2 f = frac(uv * g_DynSize - 0.5);
-  float4 hgX = g_CubicLookup.SampleLevel(g_PointWrap, f.x, 0);
-  float4 hgY = g_CubicLookup.SampleLevel(g_PointWrap, f.y, 0);
-  // Taps at the sample position -h0 and +h1 texels; each is a bilinear fetch
-  // that blends one pair of texels with the B-spline's relative weights.
-  float2 x0 = float2(uv.x - hgX.x * g_InvDynSize.x, uv.x + hgX.y * g_InvDynSize.x);
-  float2 y0 = float2(uv.y - hgY.x * g_InvDynSize.y, uv.y + hgY.y * g_InvDynSize.y);
-  float3 c00 = g_ColorCurr.SampleLevel(g_LinearClamp, ClampToUsed(float2(x0.x, y0.x), ratio), 0).rgb;
-  float3 c10 = g_ColorCurr.SampleLevel(g_LinearClamp, ClampToUsed(float2(x0.y, y0.x), ratio), 0).rgb;
-  float3 c01 = g_ColorCurr.SampleLevel(g_LinearClamp, ClampToUsed(float2(x0.x, y0.y), ratio), 0).rgb;
-  float3 c11 = g_ColorCurr.SampleLevel(g_LinearClamp, ClampToUsed(float2(x0.y, y0.y), ratio), 0).rgb;
-  float3 row0 = c00 * hgX.z + c10 * hgX.w;
-  float3 row1 = c01 * hgX.z + c11 * hgX.w;
-  float3 c = row0 * hgY.z + row1 * hgY.w;
-  return float4(SanitizeColor(float4(c, 1.0)).rgb, 1.0);
+  float2 a = frac(uv * g_DynSize - 0.5);
+  float2 a2 = a * a, a3 = a2 * a;
+  float2 w0 = (-a3 + 3.0 * a2 - 3.0 * a + 1.0) / 6.0;
+  float2 w1 = (3.0 * a3 - 6.0 * a2 + 4.0) / 6.0;
+  float2 w2 = (-3.0 * a3 + 3.0 * a2 + 3.0 * a + 1.0) / 6.0;
+  float2 w3 = a3 / 6.0;
+  float2 g0 = w0 + w1, g1 = w2 + w3;
+  float2 lo = uv - (1.0 - w1 / g0 + a) * g_InvDynSize;
+  float2 hi = uv + (1.0 + w3 / g1 - a) * g_InvDynSize;
+  float3 c00 = g_ColorCurr.SampleLevel(g_LinearClamp, ClampToUsed(float2(lo.x, lo.y), ratio), 0).rgb;
+  float3 c10 = g_ColorCurr.SampleLevel(g_LinearClamp, ClampToUsed(float2(hi.x, lo.y), ratio), 0).rgb;
+  float3 c01 = g_ColorCurr.SampleLevel(g_LinearClamp, ClampToUsed(float2(lo.x, hi.y), ratio), 0).rgb;
+  float3 c11 = g_ColorCurr.SampleLevel(g_LinearClamp, ClampToUsed(float2(hi.x, hi.y), ratio), 0).rgb;
+  float3 row0 = c00 * g0.x + c10 * g1.x;
+  float3 row1 = c01 * g0.x + c11 * g1.x;
+  return float4(row0 * g0.y + row1 * g1.y, 1.0);
 }
 
-float4 NoiseAt(float2 screenPixel) {
-  return g_Noise.SampleLevel(g_PointWrap, (screenPixel + g_NoiseOffset) / kNoiseSize, 0);
-}
-
-// Noise: point sample modulated by noise whose strength grows as the
-// resolution drops.
+// Noise: the resolve sample times 1 + (noise - 0.5) * (2 - ratio.x -
+// ratio.y), the noise read linear-wrap at 128 repeats across the RT, moved
+// each frame by a random offset.
 float4 NoisePS(PostVSOut i) : SV_Target0 {
   float2 ratio = g_SubSampleRTCurrRatio;
-  float2 uv = ClampToUsed(i.uv * ratio, ratio);
-  float4 c = SanitizeColor(g_ColorCurr.SampleLevel(g_PointClamp, uv, 0));
-  float4 n = NoiseAt(i.pos.xy);
-  c *= 1.0 + (n - 0.5) * (2.0 - (ratio.x + ratio.y));
-  return float4(c.rgb, 1.0);
+  float2 uv = i.uv * ratio;
+  float4 c = SampleResolve(g_ColorCurr, ClampToUsed(uv, ratio));
+  float4 n = g_Noise.Sample(g_LinearWrap, uv * kNoiseRepeats + g_NoiseOffset);
+  return c * (1.0 + (n - 0.5) * (2.0 - (ratio.x + ratio.y)));
 }
 
-// Noise offset: point sample at a position jittered by up to half a texel.
+// Noise offset: the resolve sample moved by up to half a texel by a static
+// noise pattern.
+float2 NoiseOffset(float2 noiseUV) {
+  float4 n = g_Noise.Sample(g_LinearWrap, noiseUV * kNoiseRepeats);
+  return 2.0 * (n.xy - 0.5) * (0.5 / g_DynSize);
+}
+
 float4 NoiseOffsetPS(PostVSOut i) : SV_Target0 {
   float2 ratio = g_SubSampleRTCurrRatio;
-  float4 n = NoiseAt(i.pos.xy);
-  float2 uv = i.uv * ratio + 2.0 * (n.xy - 0.5) * (0.5 * g_InvDynSize);
-  uv = ClampToUsed(uv, ratio);
-  return float4(SanitizeColor(g_ColorCurr.SampleLevel(g_PointClamp, uv, 0)).rgb, 1.0);
+  float2 uv = i.uv * ratio;
+  return SampleResolve(g_ColorCurr, ClampToUsed(uv + NoiseOffset(uv), ratio));
 }
 
 // ---------------------------------------------------------------------------
-// Temporal AA: current and previous final RTs, each with its own ratio and
-// jitter (shifting each by its own jitter makes both line up).
+// Temporal AA: current and previous final RTs, each read at its own ratio
+// and jitter (which registers both with the un-jittered image).
 void TAAUVs(float2 uv01, out float2 uvC, out float2 uvP) {
   uvC = (uv01 + g_JitterCurr) * g_SubSampleRTCurrRatio;
   uvP = (uv01 + g_JitterPrev) * g_SubSampleRTPrevRatio;
 }
 
-float TAAWeight(float4 cC, float4 cP, float2 uvC, float2 uvP) {
-#ifdef TAA_FAST
-  // Velocity from the motion-blur alpha: a = |v_px / 16|^2.
-  float a = saturate(cC.a) + saturate(cP.a);
-  return 1.0 / (1.0 + 256.0 * a);
-#else
-  float2 vC = LoadVelocityCurr(uvC, kMaxTAAVelocity) * g_SubSampleRTCurrRatio * g_DynSize;
-  float2 vP = LoadVelocityPrev(uvP, kMaxTAAVelocity) * g_SubSampleRTPrevRatio * g_DynSize;
-  return 1.0 / (1.0 + dot(vC, vC) + dot(vP, vP));
-#endif
-}
-
-// Samples the current and previous frames at their UVs, clamped to the used
-// part of each RT. basic = plain average; else the velocity-weighted blend
-// C = (C_n + S C_n-1) / (1 + S).
+// C = (C_n + S C_n-1) / (1 + S), S from the velocities of both frames (or,
+// on the fast path, from the alpha motion blur wrote); basic: S = 1.
 float4 TAABlend(float2 uvC, float2 uvP, bool basic) {
-  uvC = ClampToUsed(uvC, g_SubSampleRTCurrRatio);
-  uvP = ClampToUsed(uvP, g_SubSampleRTPrevRatio);
-  float4 cC = SanitizeColor(g_ColorCurr.SampleLevel(g_PointClamp, uvC, 0));
-  float4 cP = SanitizeColor(g_ColorPrev.SampleLevel(g_PointClamp, uvP, 0));
-  float S = basic ? 1.0 : TAAWeight(cC, cP, uvC, uvP);
-  return float4((cC.rgb + S * cP.rgb) / (1.0 + S), 1.0);
+  float2 ratioC = g_SubSampleRTCurrRatio, ratioP = g_SubSampleRTPrevRatio;
+  uvC = ClampToUsed(uvC, ratioC);
+  uvP = ClampToUsed(uvP, ratioP);
+  float4 cC = SampleResolve(g_ColorCurr, uvC);
+  float4 cP = SampleResolve(g_ColorPrev, uvP);
+  float S = 1.0;
+  if (!basic) {
+#ifdef TAA_FAST
+    S = 1.0 / (1.0 + kVelocityToAlpha * kVelocityToAlpha * (cC.a + cP.a));
+#else
+    float2 vC = VelocityScale(ratioC) * FiniteOrZero(SampleResolve(g_VelocityCurr, uvC).xy);
+    float2 vP = VelocityScale(ratioP) * FiniteOrZero(SampleResolve(g_VelocityPrev, uvP).xy);
+    S = 1.0 / (1.0 + dot(vC, vC) + dot(vP, vP));
+#endif
+  }
+  return (cC + S * cP) / (1.0 + S);
 }
 
 float4 TAAPS(PostVSOut i) : SV_Target0 {
@@ -167,13 +217,12 @@ float4 TAAPS(PostVSOut i) : SV_Target0 {
   return TAABlend(uvC, uvP, false);
 }
 
-// TAA with the noise-offset jitter; the noise is looked up at the sum of
-// both UVs so it is the same for both frames.
+// TAA with the noise offset, the noise read at the sum of both UVs so that
+// it is the same whichever frame is jittered.
 float4 TAANoiseOffsetPS(PostVSOut i) : SV_Target0 {
   float2 uvC, uvP;
   TAAUVs(i.uv, uvC, uvP);
-  float4 n = g_Noise.SampleLevel(g_PointWrap, (uvC + uvP) * g_DynSize / kNoiseSize, 0);
-  float2 offset = 2.0 * (n.xy - 0.5) * (0.5 * g_InvDynSize);
+  float2 offset = NoiseOffset(uvC + uvP);
   return TAABlend(uvC + offset, uvP + offset, false);
 }
 

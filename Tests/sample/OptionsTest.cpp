@@ -251,7 +251,7 @@ TEST(TexGenUtils, CubicLookupIsPartitionOfUnityAndReproducesLinear) {
   const auto t = CubicFilterLookupTable::Generate(128);
   ASSERT_EQ(t.size(), 128u * 4u);
   for (int i = 0; i < 128; ++i) {
-    const float a = (i + 0.5f) / 128.0f;
+    const float a = i / 128.0f;  // the original's entry i is for the fraction i / 128
     const float h0 = t[i * 4], h1 = t[i * 4 + 1], g0 = t[i * 4 + 2], g1 = t[i * 4 + 3];
     EXPECT_NEAR(g0 + g1, 1.0f, 1e-6f);
     EXPECT_GT(g0, 0.0f);
@@ -266,18 +266,31 @@ TEST(TexGenUtils, CubicLookupIsPartitionOfUnityAndReproducesLinear) {
     EXPECT_GE(a + h1, 1.0f - 1e-5f);
     EXPECT_LE(a + h1, 2.0f + 1e-5f);
   }
+  // Entry 0 (fraction 0): weights 1/6, 4/6, 1/6, 0.
+  EXPECT_NEAR(t[2], 5.0f / 6.0f, 1e-6f);
+  EXPECT_NEAR(t[0], 1.0f - 0.8f, 1e-6f);  // h0 = 1 - (4/6) / (5/6)
 }
 
-TEST(TexGenUtils, NoiseIsFixedAndUniform) {
+// The original seeds its C library's rand() with 42 (Microsoft's generator,
+// whose first outputs are 175, 400, 17869, 30056, ...) and stores
+// byte(256 * r / 32767) per channel.
+TEST(TexGenUtils, NoiseIsTheOriginalsRandSequence) {
+  MsvcRand rng(42);
+  for (int expected : {175, 400, 17869, 30056, 16083}) EXPECT_EQ(rng.Next(), expected);
   const auto a = NoiseTexture::Generate(128);
-  const auto b = NoiseTexture::Generate(128);
   ASSERT_EQ(a.size(), 128u * 128u * 4u);
-  EXPECT_EQ(a, b);
+  const uint8_t first[8] = {1, 3, 139, 234, 125, 100, 62, 59};
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(a[i], first[i]) << i;
+  EXPECT_EQ(a, NoiseTexture::Generate(128));
   double mean = 0;
   for (uint8_t v : a) mean += v;
   mean /= a.size();
   EXPECT_NEAR(mean, 127.5, 2.0);
   EXPECT_NE(NoiseTexture::Generate(128, 1), a);
+  // The Noise filter's offsets continue the sequence after the 65536 texels.
+  MsvcRand after(0);
+  NoiseTexture::Generate(128, 42, &after);
+  EXPECT_EQ(after.Next(), 19964);  // 0.6092529296875 * 32768
 }
 
 TEST(SampleOptions, ControlLaw) {

@@ -127,7 +127,10 @@ TEST_P(SampleMatrix, AllScalesMotionBlurSymmetric) {
         std::set<uint32_t> colours;
         for (size_t p = 0; p < img.pixels.size(); p += 4)
           colours.insert(uint32_t(img.pixels[p]) << 16 | uint32_t(img.pixels[p + 1]) << 8 | img.pixels[p + 2]);
-        EXPECT_GT(colours.size(), 20u) << FilterOption(filter) << " " << scale;
+        // Not for None without motion blur: the original zeroes its target
+        // after the scene drew into it (fix none-shows-rt).
+        if (filter == Filter::None && !mb) EXPECT_EQ(colours.size(), 1u) << scale;
+        else EXPECT_GT(colours.size(), 20u) << FilterOption(filter) << " " << scale;
         // Velocity (half floats) inside the viewport stays finite (outside it the
         // RT is never written nor read). Colour targets are UNORM and cannot
         // hold NaN; the post shaders sanitise whatever they read.
@@ -531,7 +534,7 @@ TEST_F(SampleFixture, ReloadShadersCompilesSourcesAndKeepsOldShadersOnError) {
 
   // Real sources: compiled, same SPIR-V as the build, so the same image.
   ASSERT_TRUE(sample.ReloadShaders()) << sample.LastMessage();
-  EXPECT_NE(sample.LastMessage().find("17 post-processing shaders and the GUI's compiled from"), std::string::npos)
+  EXPECT_NE(sample.LastMessage().find("18 post-processing shaders and the GUI's compiled from"), std::string::npos)
       << sample.LastMessage();
   RenderFrames(sample, 1);
   Diff d = Compare(before, sample.CapturedBackBufferNoGui());
