@@ -7,5 +7,5 @@
 // DRR_FIX(Id, bit, "command-line-name", "one line of help")
 // Bits are stable (reports and scripts record them); never reuse one.
 DRR_FIX(UvInset, 0, "uv-inset", "resolves clamp UVs half a texel inside the dynamic viewport")
-DRR_FIX(GuiSliderState, 23, "gui-slider-state", "GUI: scale sliders enabled only with dynamic resolution on and Manual control, also after toggling dynamic resolution")
-DRR_FIX(HelpText, 24, "help-text", "F1 help lists the port's keys (F4 reloads shaders, no F3 device dialog, right mouse sets the zoom centre)")
+DRR_FIX(GuiSliderState, 23, "gui-slider-state", "GUI: scale sliders enabled only with dynamic resolution on and Manual")
+DRR_FIX(HelpText, 24, "help-text", "F1 help: F4 reloads shaders, no F3, right mouse sets the zoom centre")
