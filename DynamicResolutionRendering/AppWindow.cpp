@@ -66,12 +66,11 @@ void AppWindow::FramebufferSize(uint32_t* w, uint32_t* h) const {
   *h = uint32_t(std::max(fh, 0));
 }
 
-void AppWindow::ToFramebuffer(double x, double y, float* fx, float* fy) const {
-  int ww = 1, wh = 1, fw = 1, fh = 1;
+void AppWindow::ToClientFraction(double x, double y, float* u, float* v) const {
+  int ww = 1, wh = 1;
   glfwGetWindowSize(m_Window, &ww, &wh);
-  glfwGetFramebufferSize(m_Window, &fw, &fh);
-  *fx = float(x) * fw / std::max(ww, 1);
-  *fy = float(y) * fh / std::max(wh, 1);
+  *u = float(x / std::max(ww, 1));
+  *v = float(y / std::max(wh, 1));
 }
 
 bool AppWindow::Shown() const {

@@ -28,8 +28,8 @@ class AppWindow {
   // The monitor's refresh rate, else `fallback`.
   double RefreshHz(double fallback) const;
   void FramebufferSize(uint32_t* w, uint32_t* h) const;
-  // Window coordinates to framebuffer pixels.
-  void ToFramebuffer(double x, double y, float* fx, float* fy) const;
+  // Window coordinates to fractions of the client area (0..1).
+  void ToClientFraction(double x, double y, float* u, float* v) const;
 
   // Full screen on the primary monitor and back. While the window is hidden
   // or minimised the request waits for the restore: GLFW 3.3's X11 backend

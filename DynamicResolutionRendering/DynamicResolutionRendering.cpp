@@ -51,11 +51,9 @@ int Sample::Init(const Options& options, std::string* error) {
   }
   m_Window.Start(options.headless);
   m_Options.headless = m_Window.Headless();
-  m_Gui.show = options.gui;
+  m_Gui.enabled = options.gui;
 
   if (!m_Device.Create(options.validation, m_Window, options.width, options.height, error)) return 1;
-  m_ZoomCentre[0] = m_Device.Width() * 0.5f;
-  m_ZoomCentre[1] = m_Device.Height() * 0.5f;
   if (!m_Passes.Init(m_Device.Device(), m_Shaders, error)) return 1;
   if (!LoadScene(error)) return 1;
   if (options.camera >= m_Cameras.Count()) {
@@ -108,8 +106,6 @@ bool Sample::LoadScene(std::string* error) {
 bool Sample::ResizeSwapChain(uint32_t w, uint32_t h) {
   m_Passes.GetZoomBox().ReleaseCopy();
   if (!m_Device.Resize(w, h)) return false;
-  m_ZoomCentre[0] = std::min(m_ZoomCentre[0], float(w));
-  m_ZoomCentre[1] = std::min(m_ZoomCentre[1], float(h));
   ReleaseDynamicResolution();
   return InitDynamicResolution();
 }
@@ -180,7 +176,7 @@ void Sample::ApplySettings(const Options& o) {
   m_Options.headless = keep.headless;
   m_Options.width = keep.width;
   m_Options.height = keep.height;
-  m_Gui.show = o.gui;
+  m_Gui.enabled = o.gui;
   if (o.refresh > 0) m_RefreshHz = o.refresh;
   if (o.law != keep.law || !m_Controller) m_Controller = MakeController(m_Options.law, m_LawLatency);  // resets
   else if (o.control != keep.control) m_Controller->Reset();
@@ -192,13 +188,18 @@ void Sample::ApplySettings(const Options& o) {
     m_DynamicResolution.SetScale(m_Options.scaleX, m_Options.scaleY);
 }
 
-void Sample::OnKey(int key, int action, int /*mods*/) {
+// The original's keys: F1, F10 (the panel), F11 (the text) in its keyboard
+// callback; F2, F4, P and Z as its dialogs' hotkeys; Alt+Enter and Esc as DXUT's.
+void Sample::OnKey(int key, int action, int mods) {
   if (action != GLFW_PRESS) return;
   switch (key) {
     case GLFW_KEY_F1: m_Gui.showHelp = !m_Gui.showHelp; break;
     case GLFW_KEY_F2: m_Window.ToggleFullscreen(); break;
+    case GLFW_KEY_ENTER:
+      if (mods & GLFW_MOD_ALT) m_Window.ToggleFullscreen();
+      break;
     case GLFW_KEY_F4: (void)ReloadShaders(); break;
-    case GLFW_KEY_F10: m_Gui.show = !m_Gui.show; break;
+    case GLFW_KEY_F10: m_Gui.showPanel = !m_Gui.showPanel; break;
     case GLFW_KEY_F11: m_Gui.showText = !m_Gui.showText; break;
     case GLFW_KEY_P: m_Options.pause = !m_Options.pause; break;
     case GLFW_KEY_Z: m_Options.zoom = !m_Options.zoom; break;
@@ -209,7 +210,8 @@ void Sample::OnKey(int key, int action, int /*mods*/) {
 
 void Sample::OnMouse(int button, int action, double x, double y) {
   if (!m_Window.Handle() || action != GLFW_PRESS) return;
-  if (button == GLFW_MOUSE_BUTTON_RIGHT) m_Window.ToFramebuffer(x, y, &m_ZoomCentre[0], &m_ZoomCentre[1]);
+  // The original's OnMouse: the zoom centre in client-area fractions.
+  if (button == GLFW_MOUSE_BUTTON_RIGHT) m_Window.ToClientFraction(x, y, &m_ZoomCentre[0], &m_ZoomCentre[1]);
   if (button == GLFW_MOUSE_BUTTON_LEFT) m_Cameras.BeginDrag(x, y);
 }
 
@@ -353,12 +355,13 @@ void Sample::OnFrameRender(double elapsed) {
   m_Passes.MotionBlur(ctx, setup, m_Targets, bb);
   m_Passes.Scale(ctx, setup, m_Targets, bb);
   if (setup.taa) m_History.valid = true;
-  timers.frame.Stop(ctx);
 
-  // Zoom box, then the GUI at back-buffer resolution.
+  // Zoom box, then the GUI at back-buffer resolution; the original's
+  // inner-frame timer ends after them.
   if (m_Options.zoom) m_Passes.Zoom(ctx, bb, m_ZoomCentre[0], m_ZoomCentre[1]);
   if (m_Log.Capturing()) m_Log.Queue(m_Device.Device(), ctx, bb.texture, Capture::BackBufferNoGui);
   RenderGui(elapsed);
+  timers.frame.Stop(ctx);
   if (m_Log.Capturing()) m_Log.Queue(m_Device.Device(), ctx, bb.texture, Capture::BackBuffer);
   ctx->OMSetRenderTargets(0, nullptr, nullptr);
 }
@@ -375,17 +378,27 @@ void Sample::RenderGui(double elapsed) {
   v.scaleY = m_DynamicResolution.GetScaleY();
   v.backBufferW = m_Device.Width();
   v.backBufferH = m_Device.Height();
-  v.rtW = m_DynamicResolution.GetDynamicBufferWidth();
-  v.rtH = m_DynamicResolution.GetDynamicBufferHeight();
-  v.viewportW = m_DynamicResolution.GetViewportWidth();
-  v.viewportH = m_DynamicResolution.GetViewportHeight();
+  v.refreshHz = m_RefreshHz;
+  v.nowSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  v.vsync = m_Window.Handle() && m_Options.vsync;  // as Present is called
+  d3dl::TEXTURE2D_DESC bd;
+  m_Device.Back().texture->GetDesc(&bd);
+  v.backBufferFormat = d3dl::FormatName(bd.Format);
+  v.softwareAdapter = m_Device.Adapter().IsSoftware;
   v.adapter = m_Device.Adapter().Description;
   v.lastMessage = m_LastMessage;
   v.apply = [this](const Options& o) { ApplySettings(o); };
   m_Gui.Build(v);
-  if (m_Gui.show) m_Passes.CountPass("GUI");
+  if (m_Gui.Drawn()) m_Passes.CountPass("GUI");
   const d3dl::VIEWPORT viewport{0, 0, float(m_Device.Width()), float(m_Device.Height()), 0, 1};
   m_Gui.Render(m_Device.Context(), m_Device.Back().rtv, viewport);
+}
+
+// The panel's buttons act after the frame (a reload flushes the device).
+void Sample::RunGuiActions() {
+  const GuiActions a = m_Gui.TakeActions();
+  if (a.toggleFullscreen) m_Window.ToggleFullscreen();
+  if (a.reloadShaders) (void)ReloadShaders();
 }
 
 // ---------------------------------------------------------------------------
@@ -421,6 +434,7 @@ bool Sample::RenderFrame() {
   m_Log.Resolve(m_Device.Device(), m_Device.Context());
   m_Log.AddRendered(m_FrameCount++, m_DynamicResolution, m_Options.dynamicResolution, m_Device.Back(),
                     m_Window.Fullscreen(), elapsed, m_Passes.Timers());
+  RunGuiActions();
   return true;
 }
 

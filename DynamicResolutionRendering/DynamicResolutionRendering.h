@@ -94,6 +94,12 @@ class Sample {
   ControlLaw Law() const { return m_Options.law; }
   int LawLatencyFrames() const { return m_LawLatency; }
 
+  // The zoom centre in UV of the back buffer (the right mouse button sets it).
+  void SetZoomCentre(float u, float v) {
+    m_ZoomCentre[0] = u;
+    m_ZoomCentre[1] = v;
+  }
+
   // Input (called by the GLFW callbacks).
   void OnKey(int key, int action, int mods);
   void OnMouse(int button, int action, double x, double y);
@@ -115,6 +121,7 @@ class Sample {
   FrameSetup MakeFrameSetup();
   SceneRenderParams SceneParams() const;
   void RenderGui(double elapsed);
+  void RunGuiActions();
 
   Options m_Options;
   std::string m_ScenePath;
@@ -133,7 +140,7 @@ class Sample {
   GuiPanel m_Gui;
   std::unique_ptr<Scene> m_Scene;
   Cameras m_Cameras;
-  float m_ZoomCentre[2] = {-1.f, -1.f};
+  float m_ZoomCentre[2] = {0.5f, 0.5f};  // UV of the back buffer, as the original's
 
   std::unique_ptr<ResolutionController> m_Controller;
   // Stale GPU results after a scale change (largest timer delay seen - 1),

@@ -2,17 +2,23 @@
 
 #include <imgui.h>
 
-#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace drr {
 
 namespace {
-// A combo over an enum with Count and a name function.
+constexpr float kPanelWidth = 220.0f;
+constexpr float kComboWidth = 170.0f;  // the original's combo boxes
+
+// A combo over an enum with Count and a name function, labelled by a static
+// text above it as the original's.
 template <class E>
-void EnumCombo(const char* label, E* value, const char* (*name)(E)) {
+void EnumCombo(const char* caption, const char* id, E* value, const char* (*name)(E)) {
+  ImGui::TextUnformatted(caption);
+  ImGui::SetNextItemWidth(kComboWidth);
   int v = static_cast<int>(*value);
-  if (ImGui::BeginCombo(label, name(*value))) {
+  if (ImGui::BeginCombo(id, name(*value))) {
     for (int i = 0; i < static_cast<int>(E::Count); ++i)
       if (ImGui::Selectable(name(static_cast<E>(i)), i == v)) v = i;
     ImGui::EndCombo();
@@ -25,8 +31,10 @@ bool SettingsDiffer(const Options& a, const Options& b) {
          a.zoom != b.zoom || a.camera != b.camera || a.psClear != b.psClear ||
          a.dynamicResolution != b.dynamicResolution || a.superSampling != b.superSampling ||
          a.aspectLock != b.aspectLock || a.filter != b.filter || a.symmetricTAA != b.symmetricTAA ||
-         a.control != b.control || a.law != b.law;
+         a.control != b.control || a.law != b.law || a.fixes != b.fixes;
 }
+
+int OptionPercent(float scale) { return int(std::lround(100.0 * double(scale))); }
 }  // namespace
 
 bool GuiPanel::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* error) {
@@ -48,18 +56,36 @@ void GuiPanel::Release() {
   }
 }
 
-void GuiPanel::Build(const GuiView& view) {
-  ImGui::NewFrame();
-  if (show) {
-    Panel(view);
-    Help(view);
-    if (showText) Text(view);
+// The widget state follows every change of the options, whoever made it (the
+// panel, a key, a test), as the original's dialog follows its events.
+void GuiPanel::SyncWithOptions(const GuiView& v) {
+  const Options& o = *v.options;
+  if (!m_Seeded) {
+    m_Widgets = InitialWidgets(o);
+    m_Sliders = {OptionPercent(o.scaleX), OptionPercent(o.scaleY)};
+    m_Seeded = true;
+  } else {
+    m_Widgets = UpdateWidgets(m_Widgets, m_Seen, o);
+    if (o.scaleX != m_Seen.scaleX) m_Sliders.x = OptionPercent(o.scaleX);
+    if (o.scaleY != m_Seen.scaleY) m_Sliders.y = OptionPercent(o.scaleY);
   }
+  // ControlResolution sets the sliders' values to the scale it applied.
+  if (o.dynamicResolution && o.control != ControlMode::Manual)
+    m_Sliders = {ScalePercent(v.scaleX), ScalePercent(v.scaleY)};
+  m_Seen = o;
+}
+
+void GuiPanel::Build(const GuiView& view) {
+  m_Fps.Frame(view.nowSeconds);
+  SyncWithOptions(view);
+  ImGui::NewFrame();
+  if (enabled && showPanel) Panel(view);
+  if (enabled && showText) Text(view);
   ImGui::Render();
 }
 
 void GuiPanel::Render(d3dl::DeviceContext* ctx, d3dl::RenderTargetView* rtv, const d3dl::VIEWPORT& viewport) {
-  if (!show) return;
+  if (!Drawn()) return;
   ctx->BeginEvent("GUI");
   ctx->OMSetRenderTargets(1, &rtv, nullptr);
   ctx->RSSetViewports(1, &viewport);
@@ -67,92 +93,151 @@ void GuiPanel::Render(d3dl::DeviceContext* ctx, d3dl::RenderTargetView* rtv, con
   ctx->EndEvent();
 }
 
-// The settings panel, as the original's (its controls in the same order).
+// The panel: the original's HUD buttons, then its sample UI in its order.
 void GuiPanel::Panel(const GuiView& v) {
-  const float panelW = 300.0f;
-  ImGui::SetNextWindowPos(ImVec2(float(v.backBufferW) - panelW - 10.0f, 10.0f), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(panelW, 0.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowPos(ImVec2(float(v.backBufferW) - kPanelWidth - 10.0f, 30.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0.0f), ImGuiCond_Always);
   ImGui::Begin("Dynamic Resolution Rendering", nullptr,
                ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
-                   ImGuiWindowFlags_NoSavedSettings);
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar);
   const ImVec2 top = ImGui::GetWindowPos();
   Options o = *v.options;
-  ImGui::Checkbox("Pause (P)", &o.pause);
-  ImGui::Checkbox("Show cameras", &o.showCameras);
-  ImGui::Checkbox("Motion blur", &o.motionBlur);
-  ImGui::Checkbox("Zoom box (Z)", &o.zoom);
+  Buttons();
+  Toggles(v, &o);
+  staticRect = {top.x, top.y, top.x + kPanelWidth, ImGui::GetCursorScreenPos().y - 2.0f};
+  const bool sliderMoved = ScaleSliders(v, &o);
+  FilterAndControl(&o);
+  const SampleStats& st = *v.stats;
+  for (const std::string& line : TimingLines({st.frameMs, st.clearMs, st.sceneMs, st.postPMs, st.scaleMs, v.refreshHz}))
+    ImGui::TextUnformatted(line.c_str());
+  PortSection(&o);
+  ImGui::End();
+  if (sliderMoved || SettingsDiffer(o, *v.options)) v.apply(o);
+}
+
+void GuiPanel::Buttons() {
+  // The original's "Change device (F3)" opens DXUT's device dialog, which the port does not have.
+  const ImVec2 size(kPanelWidth - 2.0f * ImGui::GetStyle().WindowPadding.x, 0.0f);
+  if (ImGui::Button("Fullscreen (F2)", size)) m_Actions.toggleFullscreen = true;
+  if (ImGui::Button("Reload Shaders (F4)", size)) m_Actions.reloadShaders = true;
+  ImGui::Spacing();
+}
+
+void GuiPanel::Toggles(const GuiView& v, Options* o) {
+  ImGui::Checkbox("Paused (P)", &o->pause);
+  ImGui::Checkbox("Show Cameras", &o->showCameras);
+  ImGui::Checkbox("MotionBlur", &o->motionBlur);
+  ImGui::Checkbox("Show zoom box (Z)", &o->zoom);
+  ImGui::TextUnformatted("Camera:");
+  ImGui::SetNextItemWidth(kComboWidth);
   int cam = v.camera;
-  if (ImGui::BeginCombo("Camera", v.cameraName(cam).c_str())) {
+  if (ImGui::BeginCombo("##camera", v.cameraName(cam).c_str())) {
     for (int i = 0; i < v.cameraCount; ++i)
       if (ImGui::Selectable(v.cameraName(i).c_str(), i == cam)) cam = i;
     ImGui::EndCombo();
   }
-  o.camera = cam;
-  ImGui::Checkbox("Clear with pixel shader", &o.psClear);
-  ImGui::Checkbox("Dynamic resolution", &o.dynamicResolution);
-  ImGui::Checkbox("Allow super sampling", &o.superSampling);
-  ImGui::Checkbox("Lock aspect ratio", &o.aspectLock);
-  EnumCombo("Filter", &o.filter, FilterName);
-  ImGui::Checkbox("Symmetric TAA", &o.symmetricTAA);
-  EnumCombo("Control", &o.control, ControlModeName);
-  EnumCombo("Control law", &o.law, ControlLawName);
-  const ImVec2 cursor = ImGui::GetCursorScreenPos();
-  staticRect = {top.x, top.y, top.x + panelW, cursor.y - 2.0f};
+  o->camera = cam;
+  ImGui::Checkbox("Clear with Pixel Shader", &o->psClear);
+  ImGui::Checkbox("Dynamic Resolution", &o->dynamicResolution);
+  ImGui::BeginDisabled(!m_Widgets.superSampling);
+  ImGui::Checkbox("Allow Super Sampling", &o->superSampling);
+  ImGui::EndDisabled();
+  ImGui::BeginDisabled(!m_Widgets.aspectLock);
+  ImGui::Checkbox("Aspect Ratio Lock", &o->aspectLock);
+  ImGui::EndDisabled();
+}
 
-  // Scales (the controller overrides them unless Manual).
-  const float maxPct = o.superSampling ? 200.0f : 100.0f;
-  float sx = v.scaleX * 100.0f, sy = v.scaleY * 100.0f;
-  bool scaleEdited = ImGui::SliderFloat("Scale X %", &sx, 1.0f, maxPct, "%.1f");
-  scaleEdited |= ImGui::SliderFloat("Scale Y %", &sy, 1.0f, maxPct, "%.1f");
-  if (scaleEdited) {
-    if (o.aspectLock) sy = sx;
-    o.scaleX = std::clamp(sx, 1.0f, maxPct) / 100.0f;
-    o.scaleY = std::clamp(sy, 1.0f, maxPct) / 100.0f;
-  } else {
-    o.scaleX = v.scaleX;
-    o.scaleY = v.scaleY;
+// The texts show the applied scale (as of the last statistics update); the
+// sliders hold the wanted percentages. True when a slider moved.
+bool GuiPanel::ScaleSliders(const GuiView& v, Options* o) {
+  const bool ss = v.options->superSampling;
+  int x = ClampToSlider(m_Sliders.x, ss), y = ClampToSlider(m_Sliders.y, ss);
+  bool moved = false;
+  auto slider = [&](const char* id, int* value) {
+    ImGui::SetNextItemWidth(120.0f);
+    ImGui::BeginDisabled(!m_Widgets.sliders);
+    const bool changed = ImGui::SliderInt(id, value, kSliderMin, SliderMax(ss), "");
+    ImGui::EndDisabled();
+    return changed;
+  };
+  ImGui::Text("Resolution Scale X %%: %d", ScalePercent(v.stats->scaleX));
+  if (slider("##scalex", &x)) {
+    m_Sliders = MoveSliderX(m_Sliders, x, o->aspectLock);
+    moved = true;
   }
-  const SampleStats& st = *v.stats;
+  ImGui::Text("Resolution Scale Y %%: %d", ScalePercent(v.stats->scaleY));
+  if (slider("##scaley", &y)) {
+    m_Sliders = MoveSliderY(m_Sliders, y, o->aspectLock);
+    moved = true;
+  }
+  o->scaleX = moved ? ScaleFromPercent(m_Sliders.x) : v.scaleX;
+  o->scaleY = moved ? ScaleFromPercent(m_Sliders.y) : v.scaleY;
+  return moved;
+}
+
+void GuiPanel::FilterAndControl(Options* o) {
+  ImGui::BeginDisabled(!m_Widgets.filter);
+  EnumCombo("Filter:", "##filter", &o->filter, FilterName);
+  ImGui::EndDisabled();
+  // Hidden outside the TAA filters; its place stays, as in the original's fixed layout.
+  if (m_Widgets.symmetricTAA) ImGui::Checkbox("Symmetric TAA", &o->symmetricTAA);
+  else ImGui::Dummy(ImVec2(1.0f, ImGui::GetFrameHeight()));
+  ImGui::BeginDisabled(!m_Widgets.control);
+  EnumCombo("Resolution Control:", "##control", &o->control, ControlModeName);
+  ImGui::EndDisabled();
+}
+
+// Port additions, below everything of the original's: the control law and
+// one checkbox per fix of FixTable(), all off by default.
+void GuiPanel::PortSection(Options* o) {
   ImGui::Separator();
-  ImGui::Text("Frame %6.2f ms   Clear %6.2f ms", st.frameMs, st.clearMs);
-  ImGui::Text("Scene %6.2f ms   PostP %6.2f ms", st.sceneMs, st.postPMs);
-  ImGui::Text("Scale %6.2f ms   VSync %6.2f ms", st.scaleMs, st.vsyncMs);
-  ImGui::Text("Scale X %.1f %%  Y %.1f %%", st.scaleX * 100.0f, st.scaleY * 100.0f);
-  ImGui::End();
-  if (scaleEdited || SettingsDiffer(o, *v.options)) v.apply(o);
+  ImGui::BeginDisabled(!m_Widgets.control);
+  EnumCombo("Control law (port):", "##law", &o->law, ControlLawName);
+  ImGui::EndDisabled();
+  if (ImGui::CollapsingHeader("Port fixes")) {
+    for (const FixToggle& t : FixToggles(o->fixes)) {
+      bool on = t.on;
+      if (ImGui::Checkbox(t.name, &on)) o->fixes.Set(t.fix, on);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.help);
+    }
+  }
 }
 
-void GuiPanel::Help(const GuiView& v) {
-  if (!showHelp) return;
-  ImGui::SetNextWindowPos(ImVec2(10.0f, float(v.backBufferH) * 0.5f), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Help", &showHelp, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
-  ImGui::TextUnformatted(
-      "F1  help\nF2  fullscreen\nF4  reload shaders\nF10 GUI\nF11 text\nP   pause\nZ   zoom box\n"
-      "Right mouse: zoom centre\nFirst Person camera: WASD + left mouse drag\nEsc quit");
-  ImGui::End();
-}
-
+// The original's RenderText: yellow lines at the top left, 20 px apart, and
+// the help block at 70 % of the height, 15 px per line.
 void GuiPanel::Text(const GuiView& v) {
-  ImGui::SetNextWindowPos(ImVec2(10.0f, 10.0f), ImGuiCond_Always);
-  ImGui::SetNextWindowBgAlpha(0.35f);
-  ImGui::Begin("##stats", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
-                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs);
-  const Options& o = *v.options;
-  ImGui::Text("%.1f fps  %s", v.stats->fps, v.adapter.c_str());
-  ImGui::Text("Back buffer %ux%u  RT %ux%u  viewport %ux%u", v.backBufferW, v.backBufferH, v.rtW, v.rtH,
-              v.viewportW, v.viewportH);
-  ImGui::Text("Filter %s  control %s (%s)  camera %s", FilterName(o.filter), ControlModeName(o.control),
-              ControlLawOption(o.law), v.cameraName(v.camera).c_str());
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const ImU32 yellow = IM_COL32(255, 255, 0, 255);
+  StatusInfo s;
+  s.fps = m_Fps.Fps();
+  s.vsync = v.vsync;
+  s.width = v.backBufferW;
+  s.height = v.backBufferH;
+  s.format = v.backBufferFormat;
+  s.software = v.softwareAdapter;
+  s.adapter = v.adapter;
+  float y = 0.0f;
+  for (const std::string& line : StatusLines(s)) {
+    draw->AddText(ImVec2(2.0f, y), yellow, line.c_str());
+    y += 20.0f;
+  }
+  if (!showHelp) {
+    draw->AddText(ImVec2(2.0f, y), yellow, kHelpPrompt);
+    y += 20.0f;
+  } else {
+    float hy = std::floor(float(v.backBufferH) * 0.7f);
+    for (const std::string& line : HelpLines(v.options->fixes)) {
+      draw->AddText(ImVec2(10.0f, hy), yellow, line.c_str());
+      hy += 15.0f;
+    }
+  }
   if (!v.lastMessage.empty()) {
-    // Compiler output can be long: the first lines here, all of it on stderr.
+    // Port addition: the F4 reload result (the original shows compile errors in a message box).
     std::string shown, line;
     std::istringstream lines(v.lastMessage);
     for (int n = 0; n < 6 && std::getline(lines, line); ++n) shown += (n ? "\n" : "") + line.substr(0, 160);
-    ImGui::TextUnformatted(shown.c_str());
+    draw->AddText(ImVec2(2.0f, y), IM_COL32(255, 160, 160, 255), shown.c_str());
   }
-  ImGui::Text("F1 help");
-  ImGui::End();
 }
 
 }  // namespace drr

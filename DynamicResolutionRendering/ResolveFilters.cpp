@@ -8,7 +8,7 @@ namespace {
 constexpr const char* kPoint = "PostProcessDynamic_ResolvePS";
 // name, option, shader, fast shader, pass, fast pass, linear sampler, temporal
 constexpr FilterInfo kFilters[] = {
-    {"None", "none", kPoint, nullptr, "ResolveNone", "ResolveNone", false, false},
+    {"None (Debug)", "none", kPoint, nullptr, "ResolveNone", "ResolveNone", false, false},
     {"Point", "point", kPoint, nullptr, "ResolvePoint", "ResolvePoint", false, false},
     {"Bilinear", "bilinear", kPoint, nullptr, "ResolveBilinear", "ResolveBilinear", true, false},
     {"Bicubic", "bicubic", "PostProcessDynamic_BicubicPS", nullptr, "ResolveBicubic", "ResolveBicubic", true, false},
@@ -17,7 +17,7 @@ constexpr FilterInfo kFilters[] = {
      "ResolveNoiseOffset", false, false},
     {"Temporal AA", "taa", "PostProcessDynamic_TAAPS", "PostProcessDynamic_TAAFastPS", "ResolveTAA",
      "ResolveTAAFast", false, true},
-    {"TAA Noise Offset", "taa-noise-offset", "PostProcessDynamic_TAANoiseOffsetPS",
+    {"TAA Noise Off.", "taa-noise-offset", "PostProcessDynamic_TAANoiseOffsetPS",
      "PostProcessDynamic_TAANoiseOffsetFastPS", "ResolveTAANoiseOffset", "ResolveTAANoiseOffsetFast", false, true},
     {"TAA Basic", "taa-basic", "PostProcessDynamic_TAABasicPS", nullptr, "ResolveTAABasic", "ResolveTAABasic", false,
      true},

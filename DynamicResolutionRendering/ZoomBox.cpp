@@ -1,30 +1,44 @@
 #include "ZoomBox.h"
 
-#include <algorithm>
-#include <cmath>
 #include <cstring>
-
 
 namespace drr {
 
 namespace {
-struct ZoomConstants {
-  float destRect[4];
-  float sourceRect[4];
-  float borderColor[4];
+struct ZoomConstants {  // cbZoomBox in Shaders/ZoomBox.hlsl
+  float quad[4];
+  float source[4];
+  float frame[12][4];  // xy used
 };
 }  // namespace
 
+ZoomBoxGeometry MakeZoomBoxGeometry(float u, float v) {
+  using G = ZoomBoxGeometry;
+  G g;
+  g.quad = {G::kBoxRight, G::kBoxBottom, G::kBoxLeft, G::kBoxTop};
+  // The box's bottom shows the source's bottom (larger v), its right the source's right.
+  g.source = {u + G::kSourceHalf, v + G::kSourceHalf, u - G::kSourceHalf, v - G::kSourceHalf};
+  const float l = G::kBoxLeft - G::kFrameOutset, r = G::kBoxRight + G::kFrameOutset;
+  const float b = G::kBoxBottom - G::kFrameOutset, t = G::kBoxTop + G::kFrameOutset;
+  const float cx = (u - 0.5f) * 2.0f, cy = (0.5f - v) * 2.0f, m = G::kMarkerHalf;
+  g.frame = {{{r, b}, {r, t}, {l, t}, {l, b}, {r, b},  // frame, ending at its bottom-right
+              {cx - m, cy - m}, {cx - m, cy + m}, {cx + m, cy + m}, {cx + m, cy - m}, {cx - m, cy - m},  // marker
+              {cx - m, cy + m}, {r, t}}};  // up its left side, back to the frame's top-right
+  return g;
+}
+
 bool ZoomBox::LoadShaders(const ShaderLibrary& lib, bool fromSource, std::string* error) {
-  d3dl::ComPtr<d3dl::VertexShader> vs;
-  d3dl::ComPtr<d3dl::PixelShader> zoom, border;
-  if (!lib.CreateVertexShader(m_Device, "ZoomBox_ZoomVS", fromSource, vs.GetAddressOf(), nullptr, error) ||
-      !lib.CreatePixelShader(m_Device, "ZoomBox_ZoomPS", fromSource, zoom.GetAddressOf(), error) ||
-      !lib.CreatePixelShader(m_Device, "ZoomBox_BorderPS", fromSource, border.GetAddressOf(), error))
+  d3dl::ComPtr<d3dl::VertexShader> zoomVS, frameVS;
+  d3dl::ComPtr<d3dl::PixelShader> zoomPS, framePS;
+  if (!lib.CreateVertexShader(m_Device, "ZoomBox_ZoomVS", fromSource, zoomVS.GetAddressOf(), nullptr, error) ||
+      !lib.CreateVertexShader(m_Device, "ZoomBox_FrameVS", fromSource, frameVS.GetAddressOf(), nullptr, error) ||
+      !lib.CreatePixelShader(m_Device, "ZoomBox_ZoomPS", fromSource, zoomPS.GetAddressOf(), error) ||
+      !lib.CreatePixelShader(m_Device, "ZoomBox_FramePS", fromSource, framePS.GetAddressOf(), error))
     return false;
-  m_VS = vs;
-  m_ZoomPS = zoom;
-  m_BorderPS = border;
+  m_ZoomVS = zoomVS;
+  m_FrameVS = frameVS;
+  m_ZoomPS = zoomPS;
+  m_FramePS = framePS;
   return true;
 }
 
@@ -36,7 +50,7 @@ bool ZoomBox::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::stri
   cb.Usage = d3dl::USAGE_DYNAMIC;
   cb.BindFlags = d3dl::BIND_CONSTANT_BUFFER;
   cb.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
-  d3dl::SAMPLER_DESC sd;
+  d3dl::SAMPLER_DESC sd;  // clamped, as the original's
   sd.Filter = d3dl::FILTER_MIN_MAG_MIP_POINT;
   d3dl::DEPTH_STENCIL_DESC dd;
   dd.DepthEnable = 0;
@@ -59,49 +73,58 @@ void ZoomBox::ReleaseCopy() {
 
 void ZoomBox::Release() {
   ReleaseCopy();
-  m_VS = nullptr;
-  m_ZoomPS = m_BorderPS = nullptr;
+  m_ZoomVS = m_FrameVS = nullptr;
+  m_ZoomPS = m_FramePS = nullptr;
   m_CB = nullptr;
   m_Point = nullptr;
   m_NoDepth = nullptr;
   m_Device = nullptr;
 }
 
-void ZoomBox::Render(d3dl::DeviceContext* ctx, d3dl::Texture2D* backBuffer,
-                     d3dl::RenderTargetView* bbRTV, uint32_t bbW, uint32_t bbH, float cx, float cy) {
-  if (!m_VS || bbW < 8 || bbH < 8) return;
+// A texture of the back buffer's size and format (the original's zoom texture).
+bool ZoomBox::EnsureCopy(d3dl::Texture2D* backBuffer) {
   d3dl::TEXTURE2D_DESC bd;
   backBuffer->GetDesc(&bd);
-  if (!m_Copy || m_CopyW != bd.Width || m_CopyH != bd.Height || m_CopyFormat != bd.Format) {
+  if (m_Copy && m_CopyW == bd.Width && m_CopyH == bd.Height && m_CopyFormat == bd.Format) return true;
+  ReleaseCopy();
+  d3dl::TEXTURE2D_DESC d;
+  d.Width = bd.Width;
+  d.Height = bd.Height;
+  d.Format = bd.Format;
+  d.BindFlags = d3dl::BIND_SHADER_RESOURCE;
+  if (d3dl::FAILED(m_Device->CreateTexture2D(&d, nullptr, m_Copy.ReleaseAndGetAddressOf())) ||
+      d3dl::FAILED(m_Device->CreateShaderResourceView(m_Copy.Get(), nullptr, m_CopySRV.ReleaseAndGetAddressOf()))) {
     ReleaseCopy();
-    d3dl::TEXTURE2D_DESC d;
-    d.Width = bd.Width;
-    d.Height = bd.Height;
-    d.Format = bd.Format;
-    d.BindFlags = d3dl::BIND_SHADER_RESOURCE;
-    if (d3dl::FAILED(m_Device->CreateTexture2D(&d, nullptr, m_Copy.ReleaseAndGetAddressOf())) ||
-        d3dl::FAILED(m_Device->CreateShaderResourceView(m_Copy.Get(), nullptr,
-                                                        m_CopySRV.ReleaseAndGetAddressOf()))) {
-      ReleaseCopy();
-      return;
-    }
-    m_Copy->SetDebugName("ZoomBoxCopy");
-    m_CopyW = bd.Width;
-    m_CopyH = bd.Height;
-    m_CopyFormat = bd.Format;
-    m_Bytes = uint64_t(bd.Width) * bd.Height * d3dl::FormatBytesPerElement(bd.Format);
+    return false;
   }
-  ctx->CopyResource(m_Copy.Get(), backBuffer);
+  m_Copy->SetDebugName("ZoomBoxCopy");
+  m_CopyW = bd.Width;
+  m_CopyH = bd.Height;
+  m_CopyFormat = bd.Format;
+  m_Bytes = uint64_t(bd.Width) * bd.Height * d3dl::FormatBytesPerElement(bd.Format);
+  return true;
+}
 
-  // Box: a third of the back-buffer height, in the bottom-left corner.
-  const float size = std::floor(std::min(bbW, bbH) / 3.0f);
-  const float margin = 10.0f, border = 2.0f;
-  const float x0 = margin, y1 = float(bbH) - margin, x1 = x0 + size, y0 = y1 - size;
-  auto ndcX = [&](float x) { return x / float(bbW) * 2.0f - 1.0f; };
-  auto ndcY = [&](float y) { return 1.0f - y / float(bbH) * 2.0f; };
-  const float half = size / kMagnification * 0.5f;
-  const float scx = std::clamp(cx, half, float(bbW) - half);
-  const float scy = std::clamp(cy, half, float(bbH) - half);
+void ZoomBox::Upload(d3dl::DeviceContext* ctx, const ZoomBoxGeometry& g) {
+  ZoomConstants c{};
+  std::memcpy(c.quad, g.quad.data(), sizeof c.quad);
+  std::memcpy(c.source, g.source.data(), sizeof c.source);
+  for (size_t i = 0; i < g.frame.size(); ++i) {
+    c.frame[i][0] = g.frame[i][0];
+    c.frame[i][1] = g.frame[i][1];
+  }
+  d3dl::MAPPED_SUBRESOURCE m;
+  if (d3dl::SUCCEEDED(ctx->Map(m_CB.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &m))) {
+    std::memcpy(m.pData, &c, sizeof c);
+    ctx->Unmap(m_CB.Get(), 0);
+  }
+}
+
+void ZoomBox::Render(d3dl::DeviceContext* ctx, d3dl::Texture2D* backBuffer, d3dl::RenderTargetView* bbRTV,
+                     uint32_t bbW, uint32_t bbH, float centreU, float centreV) {
+  if (!m_ZoomVS || bbW == 0 || bbH == 0 || !EnsureCopy(backBuffer)) return;
+  ctx->CopyResource(m_Copy.Get(), backBuffer);
+  Upload(ctx, MakeZoomBoxGeometry(centreU, centreV));
 
   d3dl::VIEWPORT vp;
   vp.Width = float(bbW);
@@ -112,37 +135,18 @@ void ZoomBox::Render(d3dl::DeviceContext* ctx, d3dl::Texture2D* backBuffer,
   ctx->OMSetDepthStencilState(m_NoDepth.Get(), 0);
   ctx->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
   ctx->IASetInputLayout(nullptr);
-  ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLESTRIP);
-  ctx->VSSetShader(m_VS.Get());
   ctx->VSSetConstantBuffers(0, 1, m_CB.GetAddressOf());
-  ctx->PSSetConstantBuffers(0, 1, m_CB.GetAddressOf());
-
-  auto draw = [&](d3dl::PixelShader* ps, float ax0, float ay0, float ax1, float ay1) {
-    ZoomConstants c{};
-    c.destRect[0] = ndcX(ax0);
-    c.destRect[1] = ndcY(ay0);
-    c.destRect[2] = ndcX(ax1);
-    c.destRect[3] = ndcY(ay1);
-    c.sourceRect[0] = (scx - half) / float(bbW);
-    c.sourceRect[1] = (scy - half) / float(bbH);
-    c.sourceRect[2] = (scx + half) / float(bbW);
-    c.sourceRect[3] = (scy + half) / float(bbH);
-    c.borderColor[0] = 1.0f;
-    c.borderColor[1] = 0.8f;
-    c.borderColor[2] = 0.1f;
-    c.borderColor[3] = 1.0f;
-    d3dl::MAPPED_SUBRESOURCE m;
-    if (d3dl::SUCCEEDED(ctx->Map(m_CB.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &m))) {
-      std::memcpy(m.pData, &c, sizeof c);
-      ctx->Unmap(m_CB.Get(), 0);
-    }
-    ctx->PSSetShader(ps);
-    ctx->Draw(4, 0);
-  };
-  draw(m_BorderPS.Get(), x0 - border, y0 - border, x1 + border, y1 + border);
+  // The magnified quad, then the frame over it, as the original.
+  ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLESTRIP);
+  ctx->VSSetShader(m_ZoomVS.Get());
+  ctx->PSSetShader(m_ZoomPS.Get());
   ctx->PSSetShaderResources(0, 1, m_CopySRV.GetAddressOf());
   ctx->PSSetSamplers(0, 1, m_Point.GetAddressOf());
-  draw(m_ZoomPS.Get(), x0, y0, x1, y1);
+  ctx->Draw(4, 0);
+  ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_LINESTRIP);
+  ctx->VSSetShader(m_FrameVS.Get());
+  ctx->PSSetShader(m_FramePS.Get());
+  ctx->Draw(12, 0);
   d3dl::ShaderResourceView* none = nullptr;
   ctx->PSSetShaderResources(0, 1, &none);
   ctx->OMSetDepthStencilState(nullptr, 0);

@@ -9,3 +9,5 @@
 DRR_FIX(UvInset, 0, "uv-inset", "resolves clamp UVs half a texel inside the dynamic viewport")
 DRR_FIX(TaaVelocityPixels, 1, "taa-velocity-pixels", "TAA weights measure velocity in viewport pixels, not RT-size units")
 DRR_FIX(NoneShowsRT, 2, "none-shows-rt", "filter None shows the RT without motion blur too (not black)")
+DRR_FIX(GuiSliderState, 23, "gui-slider-state", "GUI: scale sliders enabled only with dynamic resolution on and Manual")
+DRR_FIX(HelpText, 24, "help-text", "F1 help: F4 reloads shaders, no F3, right mouse sets the zoom centre")

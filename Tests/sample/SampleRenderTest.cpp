@@ -3,7 +3,10 @@
 // environment sets D3DL_VALIDATION=sync) and require zero messages.
 #include <gtest/gtest.h>
 
+#include <GLFW/glfw3.h>
+
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <cmath>
 #include <cstdio>
@@ -865,4 +868,120 @@ TEST(SampleReport, JsonIsStrictAndConsistent) {
   std::printf("[report] %zu bytes of JSON, %d GPU results, gpu frame avg %.2f ms, RT bytes %.0f\n", text.size(),
               gpuN, avg["gpu_frame"].num, sum);
   s.Shutdown();
+}
+
+// ---------------------------------------------------------------------------
+// Zoom box and GUI as the original's.
+namespace {
+const uint8_t* Px(const Image& im, int x, int y) { return &im.pixels[(size_t(y) * im.width + x) * 4]; }
+bool SameRgb(const uint8_t* a, const uint8_t* b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
+bool IsWhite(const uint8_t* p) { return p[0] == 255 && p[1] == 255 && p[2] == 255; }
+
+// Distance in pixels from (px, py) to the segment a-b (pixel coordinates).
+float SegmentDistance(float px, float py, float ax, float ay, float bx, float by) {
+  const float dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
+  const float t = len2 > 0 ? std::clamp(((px - ax) * dx + (py - ay) * dy) / len2, 0.0f, 1.0f) : 0.0f;
+  return std::hypot(px - (ax + t * dx), py - (ay + t * dy));
+}
+}  // namespace
+
+// The box shows the region of 2 % x 2 % around the centre 10x magnified with
+// point sampling (CPU reference from the frame without the box); white
+// one-pixel lines frame it and the source region; nothing else changes.
+TEST_F(SampleFixture, ZoomBoxAsTheOriginal) {
+  Options o = TinyOptions(320, 180);
+  o.filter = Filter::Bilinear;
+  o.motionBlur = false;
+  StartSample(o);
+  const float cu = 0.3f, cv = 0.7f;  // off-centre: a flipped axis would show
+  sample.SetZoomCentre(cu, cv);
+  RenderFrames(sample, 2);
+  const Image plain = sample.CapturedBackBufferNoGui();
+  o.zoom = true;
+  sample.ApplySettings(o);
+  RenderFrames(sample, 2);
+  const Image zoomed = sample.CapturedBackBufferNoGui();
+  ASSERT_EQ(plain.width, 320u);
+  ASSERT_EQ(zoomed.width, 320u);
+  const float W = 320, H = 180;
+  const ZoomBoxGeometry g = MakeZoomBoxGeometry(cu, cv);
+  auto toPx = [&](float x, float y) { return std::array<float, 2>{(x + 1) * 0.5f * W, (1 - y) * 0.5f * H}; };
+  auto nearLine = [&](float px, float py) {
+    for (int i = 0; i + 1 < 12; ++i) {
+      const auto a = toPx(g.frame[i][0], g.frame[i][1]), b = toPx(g.frame[i + 1][0], g.frame[i + 1][1]);
+      if (SegmentDistance(px, py, a[0], a[1], b[0], b[1]) <= 1.5f) return true;
+    }
+    return false;
+  };
+  const auto boxMin = toPx(g.quad[2], g.quad[3]), boxMax = toPx(g.quad[0], g.quad[1]);
+  uint64_t inside = 0, insideWrong = 0, outsideChanged = 0;
+  for (int y = 0; y < int(H); ++y)
+    for (int x = 0; x < int(W); ++x) {
+      const float px = x + 0.5f, py = y + 0.5f;
+      if (nearLine(px, py)) continue;
+      if (px >= boxMin[0] && px < boxMax[0] && py >= boxMin[1] && py < boxMax[1]) {
+        const float u = g.source[2] + (px - boxMin[0]) / (boxMax[0] - boxMin[0]) * (g.source[0] - g.source[2]);
+        const float v = g.source[3] + (py - boxMin[1]) / (boxMax[1] - boxMin[1]) * (g.source[1] - g.source[3]);
+        const float tx = u * W, ty = v * H;
+        if (std::abs(tx - std::round(tx)) < 0.01f || std::abs(ty - std::round(ty)) < 0.01f) continue;  // on a texel edge
+        const int sx = std::clamp(int(std::floor(tx)), 0, int(W) - 1), sy = std::clamp(int(std::floor(ty)), 0, int(H) - 1);
+        ++inside;
+        insideWrong += !SameRgb(Px(zoomed, x, y), Px(plain, sx, sy));
+      } else {
+        outsideChanged += !SameRgb(Px(zoomed, x, y), Px(plain, x, y));
+      }
+    }
+  std::printf("[image] zoom box: %llu pixels checked inside, %llu wrong; %llu changed outside\n",
+              (unsigned long long)inside, (unsigned long long)insideWrong, (unsigned long long)outsideChanged);
+  EXPECT_GT(inside, 1500u);  // 64 x 36 px box
+  EXPECT_EQ(insideWrong, 0u);
+  EXPECT_EQ(outsideChanged, 0u);
+  // Every line of the strip is drawn white (within a pixel of where it should be).
+  for (int i = 0; i + 1 < 12; ++i) {
+    const auto a = toPx(g.frame[i][0], g.frame[i][1]), b = toPx(g.frame[i + 1][0], g.frame[i + 1][1]);
+    for (float t = 0.1f; t < 0.95f; t += 0.2f) {
+      const int x = int(a[0] + t * (b[0] - a[0])), y = int(a[1] + t * (b[1] - a[1]));
+      bool white = false;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+          white |= IsWhite(Px(zoomed, std::clamp(x + dx, 0, 319), std::clamp(y + dy, 0, 179)));
+      EXPECT_TRUE(white) << "segment " << i << " at t=" << t << " (" << x << ", " << y << ")";
+    }
+  }
+}
+
+// F10 hides the panel only, F11 the text only, as the original's keys.
+TEST_F(SampleFixture, F10TogglesPanelF11TogglesText) {
+  Options o = TinyOptions(640, 360);
+  o.gui = true;
+  StartSample(o);
+  auto yellowTopLeft = [&](const Image& im) {
+    int n = 0;
+    for (int y = 0; y < 14; ++y)
+      for (int x = 0; x < 300; ++x) n += Px(im, x, y)[0] == 255 && Px(im, x, y)[1] == 255 && Px(im, x, y)[2] == 0;
+    return n;
+  };
+  auto panelDrawn = [&]() {
+    const auto r = sample.GuiStaticRect();
+    const Image& full = sample.CapturedBackBuffer();
+    const Image& bare = sample.CapturedBackBufferNoGui();
+    int differ = 0;
+    for (int y = int(r[1]); y < int(r[3]); ++y)
+      for (int x = int(r[0]); x < int(r[2]); ++x) differ += !SameRgb(Px(full, x, y), Px(bare, x, y));
+    return differ > 1000;
+  };
+  RenderFrames(sample, 2);
+  EXPECT_TRUE(panelDrawn());
+  EXPECT_GT(yellowTopLeft(sample.CapturedBackBuffer()), 50);
+  sample.OnKey(GLFW_KEY_F10, GLFW_PRESS, 0);
+  RenderFrames(sample, 1);
+  EXPECT_FALSE(panelDrawn());
+  EXPECT_GT(yellowTopLeft(sample.CapturedBackBuffer()), 50) << "F10 leaves the text";
+  sample.OnKey(GLFW_KEY_F11, GLFW_PRESS, 0);
+  RenderFrames(sample, 1);
+  EXPECT_EQ(Compare(sample.CapturedBackBuffer(), sample.CapturedBackBufferNoGui()).differing, 0u);
+  sample.OnKey(GLFW_KEY_F10, GLFW_PRESS, 0);
+  RenderFrames(sample, 1);
+  EXPECT_TRUE(panelDrawn());
+  EXPECT_EQ(yellowTopLeft(sample.CapturedBackBuffer()), 0) << "F11 hid the text";
 }
