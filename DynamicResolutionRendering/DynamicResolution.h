@@ -1,8 +1,8 @@
 // DynamicResolution: the dynamic viewport inside an oversized render target.
 //
 // Port of the sample's class of the same name (same public methods, same
-// results for every valid input), written from the behaviour of the original
-// (GameTechDev/DynamicResolutionRendering, DynamicResolution.cpp). No graphics API is needed: the viewport
+// results for every valid input), written from the behaviour of the original's
+// DynamicResolution.cpp. No graphics API is needed: the viewport
 // is returned as a plain struct that the application copies field by field into
 // d3dl::VIEWPORT.
 //
