@@ -337,8 +337,9 @@ void Sample::OnFrameRender(double elapsed) {
     if (TAAActive()) m_History.current = 1;
   }
   FrameTimers& timers = m_Passes.Timers();
-  if (timers.Update(ctx) || m_FrameCount % 10 == 0) UpdateStats();
+  timers.Update(ctx);
   RunResolutionControl();
+  if (timers.scene.NewAverage()) UpdateStats();  // as the original: after the control, when the scene timer completes a block
 
   const FrameSetup setup = MakeFrameSetup();
   const BackBuffer bb = m_Device.Back();

@@ -71,11 +71,13 @@ bool GPUTimer::Poll(d3dl::DeviceContext* ctx, double* ms) {
 bool AveragedGPUTimer::Update(d3dl::DeviceContext* ctx) {
   double ms = 0.0;
   m_NewResults = 0;
+  m_NewAverage = false;
   if (!m_Timer.Poll(ctx, &ms)) return false;
   m_Last = ms;
   ++m_Results;
   m_NewResults = 1;
-  return m_Average.Add(ms);
+  m_NewAverage = m_Average.Add(ms);
+  return m_NewAverage;
 }
 
 }  // namespace drr

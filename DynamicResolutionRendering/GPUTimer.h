@@ -61,6 +61,9 @@ class AveragedGPUTimer {
   // Mean of the last complete block; 0 before the first (the original's value).
   double AverageMs() const { return m_Average.Value(); }
   double LastMs() const { return m_Last; }       // latest single result
+  // The last Update completed a block (what the original's
+  // HaveUpdatedAveragedIntervalTime returns).
+  bool NewAverage() const { return m_NewAverage; }
   // Results that arrived in the last Update (0: LastMs is an older one).
   uint32_t NewResults() const { return m_NewResults; }
   // Frames between the Start of LastMs's measurement and the Update that read it.
@@ -74,6 +77,7 @@ class AveragedGPUTimer {
   double m_Last = 0.0;
   uint64_t m_Results = 0;
   uint32_t m_NewResults = 0;
+  bool m_NewAverage = false;
 };
 
 }  // namespace drr
