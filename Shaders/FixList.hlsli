@@ -7,4 +7,4 @@
 // DRR_FIX(Id, bit, "command-line-name", "one line of help")
 // Bits are stable (reports and scripts record them); never reuse one.
 DRR_FIX(UvInset, 0, "uv-inset", "resolves clamp UVs half a texel inside the dynamic viewport")
-DRR_FIX(CtrlFramePeriod, 10, "ctrl-frame-period", "the article law's frame time is the last frame's period, not 1 / the once-a-second FPS")
+DRR_FIX(CtrlFramePeriod, 10, "ctrl-frame-period", "article law: last frame period, not 1 / the once-a-second FPS")
