@@ -1,8 +1,8 @@
 // DynamicResolution: the dynamic viewport inside an oversized render target.
 //
 // Port of the sample's class of the same name (same public methods, same
-// results for every valid input), written from the behaviour of the original
-// (GameTechDev/DynamicResolutionRendering, DynamicResolution.cpp). No graphics API is needed: the viewport
+// results for every valid input), written from the behaviour of the original's
+// DynamicResolution.cpp. No graphics API is needed: the viewport
 // is returned as a plain struct that the application copies field by field into
 // d3dl::VIEWPORT.
 //
@@ -35,10 +35,11 @@
 //      original).
 //  D8  SetScale(GetScaleX(), GetScaleY()) keeps the current viewport. In float
 //      arithmetic floor(dyn * (w * m / dyn) / m) is w - 1 for about 3.8 % of the
-//      (dyn, w) pairs up to 16384 (for example dyn 22, w 13), so the original
-//      lost a pixel each time a controller handed the current scale back.
-//      Only a bit-identical re-submission of the current scale is affected;
-//      every other scale is computed exactly as in the original.
+//      (dyn, w) pairs up to 16384 (for example dyn 22, w 13), so a caller that
+//      hands the current scale back would lose a pixel. The original's own calls
+//      never do (InitializeResolutionParameters re-applies it with the original's
+//      arithmetic); the port's laws and GUI do. Every other scale is computed
+//      exactly as in the original.
 #pragma once
 
 #include <cstdint>

@@ -251,6 +251,7 @@ void Sample::ControlResolution(double innerFrameSeconds, double frameSeconds) {
   FrameTiming timing;
   timing.gpuInnerSeconds = innerFrameSeconds;
   timing.frameSeconds = frameSeconds;
+  m_LawInput = timing;
   ControlTarget target;
   target.budgetSeconds = TargetFrameSeconds(m_RefreshHz, m_Options.control);
   target.minScale = 0.3;
@@ -259,15 +260,18 @@ void Sample::ControlResolution(double innerFrameSeconds, double frameSeconds) {
   m_DynamicResolution.SetScale(float(s), float(s));
 }
 
-// Which law runs when, on which GPU result.
+// Which law runs when, on which GPU result (Feed in ResolutionController.h).
 void Sample::RunResolutionControl() {
   if (!m_Options.dynamicResolution || m_Options.control == ControlMode::Manual) return;
   const AveragedGPUTimer& timer = m_Passes.Timers().frame;
-  if (m_Options.law == ControlLaw::Article) {
-    // The original: every frame, on the 10-result average of the inner-frame timer.
-    if (timer.ResultCount() > 0) ControlResolution(timer.AverageMs() / 1000.0, m_LastFrameSeconds);
+  if (FeedFor(m_Options.law) == Feed::Original) {
+    // The original: every frame from the first, on the 10-result average of
+    // the inner-frame timer (0 until the first average) and 1 / DXUTGetFPS(),
+    // a figure up to two seconds old (fix ctrl-frame-period: the last period).
+    const bool lastPeriod = m_Options.fixes.Has(Fix::CtrlFramePeriod);
+    ControlResolution(timer.AverageMs() / 1000.0, lastPeriod ? m_LastFrameSeconds : m_Fps.FrameSeconds());
   } else if (timer.NewResults() > 0) {
-    // Per-frame laws: one call per new inner-frame result. A result polled
+    // Per-result laws: one call per new inner-frame result. A result polled
     // d frames after its Start leaves d - 1 results of the old scale after a
     // change; the robust law is told the largest such count seen.
     const int stale = std::max(0, int(timer.LastDelayFrames()) - 1);
@@ -335,8 +339,9 @@ void Sample::OnFrameRender(double elapsed) {
     if (TAAActive()) m_History.current = 1;
   }
   FrameTimers& timers = m_Passes.Timers();
-  if (timers.Update(ctx) || m_FrameCount % 10 == 0) UpdateStats();
+  timers.Update(ctx);
   RunResolutionControl();
+  if (timers.scene.NewAverage()) UpdateStats();  // as the original: after the control, when the scene timer completes a block
 
   const FrameSetup setup = MakeFrameSetup();
   const BackBuffer bb = m_Device.Back();
@@ -356,8 +361,8 @@ void Sample::OnFrameRender(double elapsed) {
   m_Passes.Scale(ctx, setup, m_Targets, bb);
   if (setup.taa) m_History.valid = true;
 
-  // Zoom box, then the GUI at back-buffer resolution; the original's
-  // inner-frame timer ends after them.
+  // Zoom box, then the GUI at back-buffer resolution: both inside the inner
+  // frame, as in the original (its timer ends after the GUI and the text).
   if (m_Options.zoom) m_Passes.Zoom(ctx, bb, m_ZoomCentre[0], m_ZoomCentre[1]);
   if (m_Log.Capturing()) m_Log.Queue(m_Device.Device(), ctx, bb.texture, Capture::BackBufferNoGui);
   RenderGui(elapsed);
@@ -422,6 +427,7 @@ bool Sample::RenderFrame() {
   const double elapsed = m_FrameCount == 0 ? 1.0 / 60.0 : std::chrono::duration<double>(now - m_LastFrameTime).count();
   m_LastFrameTime = now;
   if (m_FrameCount > 0) m_LastFrameSeconds = elapsed;
+  m_Fps.Tick(std::chrono::duration<double>(now.time_since_epoch()).count());  // DXUT: before the frame's callbacks
 
   m_Log.BeginFrame();
   OnFrameMove(elapsed);

@@ -90,6 +90,12 @@ class Sample {
   // absent). On any error the old shaders stay and the message is shown.
   bool ReloadShaders();
   const std::string& LastMessage() const { return m_LastMessage; }
+  // DXUT-style frames per second (DXUTGetFPS): frames / elapsed over the last
+  // period of just over a second, updated once per such period; 0 during the
+  // first second. The article law's frame time is 1 / this.
+  double DxutFps() const { return m_Fps.Fps(); }
+  // What the control law was last fed (after a cost model's replacement).
+  const FrameTiming& LastLawInput() const { return m_LawInput; }
   // Control law in use and the latency (in GPU results) it was told.
   ControlLaw Law() const { return m_Options.law; }
   int LawLatencyFrames() const { return m_LawLatency; }
@@ -151,7 +157,9 @@ class Sample {
   std::array<double, 10> m_DeltaHistory{};  // SmoothedTimer: last 10 frame deltas
   int m_DeltaCount = 0;
   double m_AnimationTime = 0.0;
-  double m_LastFrameSeconds = 1.0 / 60.0;
+  double m_LastFrameSeconds = 1.0 / 60.0;  // last frame's period (the port's per-result laws)
+  DxutFpsCounter m_Fps;                     // the original's 1 / DXUTGetFPS() frame time
+  FrameTiming m_LawInput;
   SampleStats m_Stats;
   int64_t m_FrameCount = 0, m_MinimisedFrames = 0;
   FrameLog m_Log;

@@ -50,48 +50,34 @@ void GPUTimer::Stop(d3dl::DeviceContext* ctx) {
 }
 
 bool GPUTimer::Poll(d3dl::DeviceContext* ctx, double* ms) {
-  bool got = false;
-  while (m_Outstanding > 0) {
-    QuerySet& s = m_Sets[m_Oldest];
-    d3dl::QUERY_DATA_TIMESTAMP_DISJOINT dj{};
-    if (ctx->GetData(s.disjoint.Get(), &dj, sizeof(dj), d3dl::ASYNC_GETDATA_DONOTFLUSH) != d3dl::S_OK)
-      break;
-    uint64_t t0 = 0, t1 = 0;
-    if (ctx->GetData(s.begin.Get(), &t0, sizeof(t0), d3dl::ASYNC_GETDATA_DONOTFLUSH) != d3dl::S_OK ||
-        ctx->GetData(s.end.Get(), &t1, sizeof(t1), d3dl::ASYNC_GETDATA_DONOTFLUSH) != d3dl::S_OK)
-      break;
-    m_Oldest = (m_Oldest + 1) % kPipelineDepth;
-    --m_Outstanding;
-    if (!dj.Disjoint && dj.Frequency > 0 && t1 >= t0) {
-      *ms = double(t1 - t0) * 1000.0 / double(dj.Frequency);
-      m_LastDelay = uint32_t(m_StartCalls - s.startCall);
-      got = true;
-      break;  // one result per call, so the average sees every one
-    }
-  }
-  return got;
+  if (m_Outstanding == 0 || m_Active) return false;
+  QuerySet& s = m_Sets[m_Oldest];
+  d3dl::QUERY_DATA_TIMESTAMP_DISJOINT dj{};
+  uint64_t t0 = 0, t1 = 0;
+  if (ctx->GetData(s.begin.Get(), &t0, sizeof(t0), d3dl::ASYNC_GETDATA_DONOTFLUSH) != d3dl::S_OK ||
+      ctx->GetData(s.end.Get(), &t1, sizeof(t1), d3dl::ASYNC_GETDATA_DONOTFLUSH) != d3dl::S_OK ||
+      ctx->GetData(s.disjoint.Get(), &dj, sizeof(dj), d3dl::ASYNC_GETDATA_DONOTFLUSH) != d3dl::S_OK)
+    return false;  // not finished yet: try again next frame
+  m_Oldest = (m_Oldest + 1) % kPipelineDepth;
+  --m_Outstanding;
+  // A zero frequency or a stop before the start cannot come from a valid
+  // interval; the original would divide by zero or report 0 ms.
+  if (dj.Disjoint || dj.Frequency == 0 || t1 < t0) return false;
+  *ms = double(t1 - t0) * 1000.0 / double(dj.Frequency);
+  m_LastDelay = uint32_t(m_StartCalls - s.startCall);
+  return true;
 }
 
 bool AveragedGPUTimer::Update(d3dl::DeviceContext* ctx) {
   double ms = 0.0;
-  bool newAverage = false;
   m_NewResults = 0;
-  while (m_Timer.Poll(ctx, &ms)) {
-    m_Last = ms;
-    ++m_Results;
-    ++m_NewResults;
-    m_Sum += ms;
-    if (++m_Count >= m_AverageCount) {
-      m_Average = m_Sum / m_Count;
-      m_Sum = 0.0;
-      m_Count = 0;
-      m_HasResult = true;
-      newAverage = true;
-    } else if (!m_HasResult) {
-      m_Average = m_Sum / m_Count;  // something to show before the first full set
-    }
-  }
-  return newAverage;
+  m_NewAverage = false;
+  if (!m_Timer.Poll(ctx, &ms)) return false;
+  m_Last = ms;
+  ++m_Results;
+  m_NewResults = 1;
+  m_NewAverage = m_Average.Add(ms);
+  return m_NewAverage;
 }
 
 }  // namespace drr

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 
 namespace drr {
 namespace {
@@ -84,6 +85,39 @@ bool IsCpuBoundFrame(const FrameTiming& timing, const ControlTarget& target) {
          timing.frameSeconds > t.budgetSeconds * 1.02 && timing.gpuInnerSeconds <= t.budgetSeconds;
 }
 
+// ---------------------------------------------------------- measurement feed
+
+bool BlockAverage::Add(double value) {
+  m_Sum += value;
+  if (++m_InBlock < m_Count) return false;
+  m_Value = m_Sum / m_InBlock;
+  m_Sum = 0.0;
+  m_InBlock = 0;
+  m_HasValue = true;
+  return true;
+}
+
+void DxutFpsCounter::Tick(double now) {
+  if (!m_Started) {  // DXUT: one frame over the clock's whole past, ~0 FPS
+    m_Started = true;
+    m_LastUpdate = now;
+    m_Frames = 0;
+    return;
+  }
+  ++m_Frames;
+  if (now - m_LastUpdate > 1.0) {
+    m_Fps = static_cast<double>(static_cast<float>(m_Frames / (now - m_LastUpdate)));  // DXUT keeps a float
+    m_LastUpdate = now;
+    m_Frames = 0;
+  }
+}
+
+double DxutFpsCounter::FrameSeconds() const {
+  return m_Fps > 0.0 ? 1.0 / m_Fps : std::numeric_limits<double>::infinity();
+}
+
+Feed FeedFor(ControlLaw law) { return law == ControlLaw::Article ? Feed::Original : Feed::PerResult; }
+
 // ---------------------------------------------------------------- article law
 
 ArticleController::ArticleController(double gain) : m_Gain(gain) {}
@@ -101,23 +135,33 @@ double ArticleController::MeasuredSeconds(const FrameTiming& timing) {
   return 0.5 * (gpu + frame);              // original: average of GPU and frame time
 }
 
-double ArticleController::Step(double currentScale, const FrameTiming& timing, const ControlTarget& target,
-                               double gain) {
+float ArticleController::Step(float controlled, const FrameTiming& timing, const ControlTarget& target,
+                              double gain) {
   const ControlTarget tgt = SanitizeTarget(target);
-  // The current scale is used as is (the original did not clamp it before the
-  // law); only a non-finite or non-positive one is replaced.
-  double s = FinitePositive(currentScale) ? currentScale : ClampScale(1.0, tgt);
-  if (!std::isfinite(gain)) gain = kDefaultGain;
-  const double k = std::clamp(gain, kMinGain, kMaxGain);
-  const double t = MeasuredSeconds(timing);
-  if (std::isnan(t)) return ClampScale(s, tgt);  // unusable sample: hold
-  const double next = s * (1.0 + k * (1.0 - t / tgt.budgetSeconds));
-  if (std::isnan(next)) return ClampScale(s, tgt);
-  return std::clamp(next, tgt.minScale, tgt.maxScale);  // +-Inf land on the limits
+  const float lo = static_cast<float>(tgt.minScale), hi = static_cast<float>(tgt.maxScale);
+  // A non-finite or non-positive integrator (only reachable through a caller's
+  // Step) restarts at 1 clamped to the range.
+  float c = std::isfinite(controlled) && controlled > 0.0f ? controlled : static_cast<float>(ClampScale(1.0, tgt));
+  const float k = static_cast<float>(std::clamp(std::isfinite(gain) ? gain : kDefaultGain, kMinGain, kMaxGain));
+  const double measured = MeasuredSeconds(timing);
+  if (std::isnan(measured)) return std::clamp(c, lo, hi);  // unusable sample: hold
+  // The original's float arithmetic: t/T, then k (1 - t/T) + 1, then C *= ratio.
+  float t;
+  const float gpu = static_cast<float>(timing.gpuInnerSeconds);
+  const float frame = static_cast<float>(timing.frameSeconds);
+  if (!FinitePositive(timing.frameSeconds) || frame > 2.0f * gpu) t = gpu;
+  else t = (gpu + frame) / 2.0f;
+  const float ratio = k * (1.0f - t / static_cast<float>(tgt.budgetSeconds)) + 1.0f;
+  const float next = ratio * c;
+  if (std::isnan(next)) return std::clamp(c, lo, hi);
+  return std::clamp(next, lo, hi);  // +-Inf land on the limits
 }
 
-double ArticleController::Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) {
-  return Step(currentScale, timing, target, m_Gain);
+double ArticleController::Update(double /*currentScale*/, const FrameTiming& timing, const ControlTarget& target) {
+  m_Controlled = Step(m_Controlled, timing, target, m_Gain);
+  // The float clamp limits may round just outside a double range (0.9f < 0.9).
+  const ControlTarget tgt = SanitizeTarget(target);
+  return std::clamp(static_cast<double>(m_Controlled), tgt.minScale, tgt.maxScale);
 }
 
 // -------------------------------------------------------------- UE-style law

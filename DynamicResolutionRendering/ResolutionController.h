@@ -1,10 +1,14 @@
 // Resolution control laws: pure CPU code, no GPU needed. The sample's
 // ControlResolution() calls one of them once per frame:
 //
-//   FrameTiming timing{averagedInnerGpuSeconds, 1.0 / fps};
+//   FrameTiming timing{averagedInnerGpuSeconds, dxutFps.FrameSeconds()};
 //   ControlTarget target{TargetFrameSeconds(refreshHz, mode), ...};
 //   double s = controller.Update(dynamicResolution.GetScaleX(), timing, target);
 //   dynamicResolution.SetScale(float(s), float(s));
+//
+// The article law integrates its own continuous scale (the original's
+// g_ControlledScale) and does not read the applied, quantised scale back; the
+// port's laws (robust, ue-style) work from the applied scale.
 //
 // Every Update() returns a finite scale inside [target.minScale, target.maxScale]
 // (after SanitizeTarget) for any input, including NaN, infinities, zero and
@@ -12,7 +16,7 @@
 //
 // Laws (details and stability analysis in Docs/Controller.md):
 //  - ArticleController: the 2011 article / original sample, unchanged for valid
-//    inputs: S' = S (1 + k (1 - t/T)).
+//    inputs: S' = S (1 + k (1 - t/T)) on a continuous float S.
 //  - UEStyleController: our implementation of the idea Unreal Engine published
 //    for its dynamic resolution heuristic: weighted GPU-time history, quadratic
 //    cost model, change threshold, panic on consecutive over-budget frames,
@@ -32,8 +36,49 @@ namespace drr {
 
 // Inputs measured for the frame that just ended.
 struct FrameTiming {
-  double gpuInnerSeconds = 0.0;  // GPU time of the dynamic-resolution part of the frame (averaged timer)
-  double frameSeconds = 0.0;     // whole frame period, 1 / FPS (CPU + GPU + present, vsync included)
+  double gpuInnerSeconds = 0.0;  // GPU time of the inner frame (the article law: the 10-result average, 0 before the first)
+  double frameSeconds = 0.0;     // whole frame period (the article law: 1 / DXUT-style FPS, +Inf before the first figure)
+};
+
+// The arithmetic of the original's AveragedGPUTimer: results are summed in
+// blocks of `count`; Value() is the mean of the last complete block and 0
+// until the first block completes (the original feeds that 0 to the law).
+class BlockAverage {
+public:
+  explicit BlockAverage(unsigned count = 10) : m_Count(count ? count : 1) {}
+  // Returns true when this result completed a block (a new Value()).
+  bool Add(double value);
+  double Value() const { return m_Value; }
+  bool HasValue() const { return m_HasValue; }
+  void Clear() { *this = BlockAverage(m_Count); }
+
+private:
+  unsigned m_Count;
+  unsigned m_InBlock = 0;
+  double m_Sum = 0.0;
+  double m_Value = 0.0;
+  bool m_HasValue = false;
+};
+
+// DXUT's frames-per-second figure (DXUTGetFPS): each frame counts one; when
+// more than one second has passed since the last figure, the figure becomes
+// frames / elapsed and the count restarts. DXUT's very first figure divides one
+// frame by the time since its clock's origin, i.e. practically 0; this counter
+// reports 0 until its first full second. Tick once per frame, before the
+// frame's work, with a monotonic time in seconds.
+class DxutFpsCounter {
+public:
+  void Tick(double nowSeconds);
+  double Fps() const { return m_Fps; }
+  // 1 / Fps(): what the original's ControlResolution uses (+Inf while Fps is 0).
+  double FrameSeconds() const;
+  void Reset() { *this = DxutFpsCounter(); }
+
+private:
+  bool m_Started = false;
+  double m_LastUpdate = 0.0;
+  unsigned long m_Frames = 0;
+  double m_Fps = 0.0;
 };
 
 // What the controller must achieve.
@@ -84,12 +129,18 @@ public:
   virtual void Reset() {}
 };
 
-// The original sample's law, kept exactly for valid inputs.
+// The original sample's law, kept exactly for valid inputs, in float as the
+// original computes it:
 //   t = (t_gpuInner + t_frame) / 2, or t_gpuInner when t_frame > 2 t_gpuInner
-//   S' = S (1 + k (1 - t/T)), clamped to [minScale, maxScale]
+//   C' = C (1 + k (1 - t/T)), clamped to [minScale, maxScale]
+// C is the controller's own continuous scale (the original's
+// g_ControlledScale): it starts at 1, the applied (quantised) scale is never
+// read back, and nothing resets it (the original keeps it for the whole run,
+// through resizes and mode switches). Update's currentScale is ignored.
 // Robustness (only for inputs the original mishandled): a GPU time that is NaN,
 // infinite or negative leaves the scale unchanged; a frame time that is not
-// finite and > 0 is ignored (t = t_gpuInner); a non-finite product is clamped.
+// finite and > 0 is ignored (t = t_gpuInner, which is what the original's
+// comparison gives for +Inf); a non-finite product is clamped.
 class ArticleController final : public ResolutionController {
 public:
   static constexpr double kDefaultGain = 0.01;
@@ -100,15 +151,18 @@ public:
   std::string_view Name() const override { return ControlLawOption(ControlLaw::Article); }
   double AimSeconds(const ControlTarget& target) const override;
   double Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) override;
+  void Reset() override {}  // the original never resets g_ControlledScale
   double Gain() const { return m_Gain; }
+  float ControlledScale() const { return m_Controlled; }
 
-  // The law as a pure function (same rules as Update).
-  static double Step(double currentScale, const FrameTiming& timing, const ControlTarget& target, double gain);
+  // One step of the law from the continuous scale `controlled` (pure function).
+  static float Step(float controlled, const FrameTiming& timing, const ControlTarget& target, double gain);
   // The "t" the original feeds into the law (NaN when the GPU time is unusable).
   static double MeasuredSeconds(const FrameTiming& timing);
 
 private:
   double m_Gain;
+  float m_Controlled = 1.0f;  // g_ControlledScale
 };
 
 // Returns true for a frame that was late although the GPU fitted the budget:
@@ -208,6 +262,13 @@ private:
   double m_LastSample = 0.0;         // previous usable sample (for the noise estimate)
   std::vector<double> m_Diffs;       // recent |log(t_i / t_i-1)|
 };
+
+// What a law is fed. Original: the article law as the original feeds it, every
+// frame, on the 10-result average of the inner-frame GPU timer (0 before the
+// first average) and 1 / DXUT-style FPS. PerResult: the port's laws, once per
+// new inner-frame GPU result, on that result and the last frame's period.
+enum class Feed { Original, PerResult };
+Feed FeedFor(ControlLaw law);
 
 // A fresh controller of the law with its default parameters. The robust law is
 // told latencyFrames: how many GPU results after a scale change still describe

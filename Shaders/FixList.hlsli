@@ -11,3 +11,4 @@ DRR_FIX(TaaVelocityPixels, 1, "taa-velocity-pixels", "TAA weights measure veloci
 DRR_FIX(NoneShowsRT, 2, "none-shows-rt", "filter None shows the RT without motion blur too (not black)")
 DRR_FIX(GuiSliderState, 23, "gui-slider-state", "GUI: scale sliders enabled only with dynamic resolution on and Manual")
 DRR_FIX(HelpText, 24, "help-text", "F1 help: F4 reloads shaders, no F3, right mouse sets the zoom centre")
+DRR_FIX(CtrlFramePeriod, 10, "ctrl-frame-period", "article law: last frame period, not 1 / the once-a-second FPS")

@@ -195,6 +195,11 @@ SimResult RunScenario(ResolutionController& controller, const SimConfig& config,
 
   Gauss gauss(c.seed ^ (static_cast<std::uint32_t>(c.scenario) * 0x9E3779B9u));
   std::deque<double> inFlight;  // GPU times on their way to the controller (latency)
+  const Feed feed = c.feed.value_or(dynamic_cast<ArticleController*>(&controller) ? Feed::Original : Feed::PerResult);
+  BlockAverage average(10);  // the original's AveragedGPUTimer(10)
+  DxutFpsCounter fps;
+  double clock = 0.0;        // simulated time at the start of the next frame
+  fps.Tick(clock);
 
   SimResult r;
   r.controller = std::string(controller.Name());
@@ -222,6 +227,12 @@ SimResult RunScenario(ResolutionController& controller, const SimConfig& config,
     double seen = inFlight.front();
     if (static_cast<int>(inFlight.size()) > c.plant.latencyFrames) inFlight.pop_front();
     FrameTiming timing{seen, frame};
+    if (feed == Feed::Original) {
+      average.Add(seen);
+      clock += frame;
+      fps.Tick(clock);  // DXUT counts the frame at the start of the next one
+      timing = {average.Value(), c.variant.lastFramePeriod ? frame : fps.FrameSeconds()};
+    }
     if (cond.corrupt) {
       timing.gpuInnerSeconds = cond.corruptGpu;
       if (cond.corruptFrame >= 0.0 || std::isnan(cond.corruptFrame)) timing.frameSeconds = cond.corruptFrame;
@@ -259,6 +270,42 @@ std::vector<SimResult> RunMatrix(const std::vector<ControlLaw>& laws, const std:
       auto controller = MakeController(law, c.plant.latencyFrames);
       out.push_back(RunScenario(*controller, c));
     }
+  }
+  return out;
+}
+
+bool ParseArticleVariant(std::string_view name, ArticleVariant* variant) {
+  for (ArticleVariant v : {ArticleVariant::Original, ArticleVariant::FramePeriod, ArticleVariant::AppliedScale})
+    if (ToString(v) == name) {
+      if (variant) *variant = v;
+      return true;
+    }
+  return false;
+}
+
+std::string_view ToString(ArticleVariant v) {
+  switch (v) {
+    case ArticleVariant::Original: return "original";
+    case ArticleVariant::FramePeriod: return "frame-period";
+    case ArticleVariant::AppliedScale: return "applied-scale";
+  }
+  return "?";
+}
+
+std::vector<SimResult> RunArticleVariant(ArticleVariant variant, const std::vector<Scenario>& scenarios,
+                                         const SimConfig& base) {
+  std::vector<SimResult> out;
+  for (Scenario s : scenarios) {
+    SimConfig c = ConfigFor(s, base);
+    c.feed = Feed::Original;
+    c.variant.lastFramePeriod = variant == ArticleVariant::FramePeriod;
+    ArticleController article;
+    AppliedScaleArticle applied;
+    ResolutionController& law =
+        variant == ArticleVariant::AppliedScale ? static_cast<ResolutionController&>(applied) : article;
+    SimResult r = RunScenario(law, c);
+    r.controller = "article/" + std::string(ToString(variant));
+    out.push_back(r);
   }
   return out;
 }

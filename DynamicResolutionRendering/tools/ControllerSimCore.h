@@ -6,8 +6,14 @@
 // quantisation of DynamicResolution, so the pixel fraction is sx * sy ~ s^2):
 //   gpu(n)   = (fixed + pixel * sx * sy * load(n)) * (1 + noise * N(0,1))
 //   frame(n) = max(cpu(n), gpu(n)), rounded up to a multiple of 1/60 s in vsync60
-// The controller sees gpu (optionally delayed by latencyFrames, optionally
-// replaced by a corrupt value in the nan scenario) and frame. Noise comes from
+// Each GPU time becomes a timer result (optionally delayed by latencyFrames).
+// What the controller is fed depends on its feed (Feed, ResolutionController.h):
+//   Original  (the article law): the mean of the last complete block of 10
+//             results (0 before the first) and 1 / DXUT-style FPS over the
+//             simulated clock (+Inf during the first second), every frame;
+//   PerResult (the port's laws): the newest result and that frame's period.
+// In the nan scenario a corrupt value replaces what the controller is fed.
+// Noise comes from
 // std::mt19937 (fully specified) through our own Box-Muller transform, so a
 // seed gives the same run with any standard library.
 #pragma once
@@ -17,6 +23,7 @@
 #include <cstdint>
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -39,8 +46,15 @@ std::string_view ToString(Scenario scenario);
 bool ParseScenario(std::string_view name, Scenario* scenario);
 std::string_view Describe(Scenario scenario);
 
+// Variants of the Original feed, for comparing the fix options with it.
+struct FeedVariant {
+  bool lastFramePeriod = false;  // frame time = this frame's period instead of 1 / DXUT FPS
+};
+
 struct SimConfig {
   Scenario scenario = Scenario::Step2x;
+  std::optional<Feed> feed;    // empty: the law's own (FeedFor; the article law: Original)
+  FeedVariant variant;
   int frames = 900;            // >= kMinFrames
   int disturbanceFrame = 300;  // also the end of the warm-up (metrics start here)
   PlantModel plant;
@@ -80,6 +94,27 @@ struct SimResult {
   double finalScale = 0.0;
   std::vector<FrameRecord> trace;  // filled when asked
 };
+
+// The article law integrating the applied, quantised scale instead of its own
+// continuous one: what the port did before it followed the original (the floor
+// of the integral viewport then ratchets the scale down). For comparison only.
+class AppliedScaleArticle final : public ResolutionController {
+public:
+  std::string_view Name() const override { return "article-applied"; }
+  double AimSeconds(const ControlTarget& target) const override { return SanitizeTarget(target).budgetSeconds; }
+  double Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) override {
+    return ArticleController::Step(static_cast<float>(currentScale), timing, target, ArticleController::kDefaultGain);
+  }
+};
+
+// Article-law variants compared in Docs/Controller.md: the original, the
+// fix options (ctrl-frame-period), and the port's former applied-scale feedback.
+enum class ArticleVariant { Original, FramePeriod, AppliedScale };
+bool ParseArticleVariant(std::string_view name, ArticleVariant* variant);
+std::string_view ToString(ArticleVariant variant);
+// The article law of that variant on every scenario (the name column says which).
+std::vector<SimResult> RunArticleVariant(ArticleVariant variant, const std::vector<Scenario>& scenarios,
+                                         const SimConfig& base);
 
 // The laws in the order of the simulator's tables (article, ue-style, robust).
 const std::vector<ControlLaw>& AllLaws();

@@ -28,6 +28,12 @@ void Usage(std::ostream& out) {
          "  --latency N         frames before a GPU time reaches the controller, 0..16 (default 0);\n"
          "                      the robust law is told N (RobustController::Params::latencyFrames)\n"
          "  --gain K            gain of the article law, 0.001..10 (default 0.01)\n"
+         "  --article-variant V original | frame-period | applied-scale | all: run the article law only,\n"
+         "                      as the original (default feed), with the ctrl-frame-period fix, or\n"
+         "                      integrating the applied scale (the port's former ratchet); repeatable\n"
+         "  --feed F            original | per-result: what every law is fed (default: the article law\n"
+         "                      original = 10-result average and 1 / once-a-second FPS, the others\n"
+         "                      per-result = the newest GPU time and that frame's period)\n"
          "  --csv PATH          also write the table (or the sweep) as CSV\n"
          "  --sweep-k           sweep the article law's gain k over 0.001..10 instead of the matrix\n"
          "  --help              this text\n"
@@ -104,6 +110,7 @@ struct SimArgs {
   bool gainSet = false;
   std::string csvPath;
   bool sweep = false;
+  std::vector<drr::sim::ArticleVariant> variants;  // non-empty: article variants instead of the laws
 };
 
 // Reads the option at argv[*i] and its value (moving *i past it); exits with
@@ -138,6 +145,23 @@ void ParseOption(int argc, char** argv, int* i, SimArgs* args) {
         args->gain > drr::ArticleController::kMaxGain)
       Fail("--gain needs a number 0.001..10");
     args->gainSet = true;
+  } else if (arg == "--article-variant") {
+    for (std::string_view name : SplitCommas(value(arg))) {
+      drr::sim::ArticleVariant v;
+      if (name == "all") {
+        args->variants = {drr::sim::ArticleVariant::Original, drr::sim::ArticleVariant::FramePeriod,
+                          drr::sim::ArticleVariant::AppliedScale};
+      } else if (drr::sim::ParseArticleVariant(name, &v)) {
+        args->variants.push_back(v);
+      } else {
+        Fail("unknown article variant '" + std::string(name) + "'");
+      }
+    }
+  } else if (arg == "--feed") {
+    const std::string_view f = value(arg);
+    if (f == "original") config.feed = drr::Feed::Original;
+    else if (f == "per-result") config.feed = drr::Feed::PerResult;
+    else Fail("--feed needs original or per-result");
   } else if (arg == "--csv") {
     args->csvPath = std::string(value(arg));
     if (args->csvPath.empty()) Fail("--csv needs a path");
@@ -195,7 +219,15 @@ int main(int argc, char** argv) {
     return 0;
   }
 
-  const std::vector<drr::sim::SimResult> results = RunLawsOnScenarios(args);
+  std::vector<drr::sim::SimResult> results;
+  if (args.variants.empty()) {
+    results = RunLawsOnScenarios(args);
+  } else {
+    for (drr::sim::ArticleVariant v : args.variants) {
+      const auto rows = drr::sim::RunArticleVariant(v, args.scenarios, config);
+      results.insert(results.end(), rows.begin(), rows.end());
+    }
+  }
   std::cout << "Plant: gpu = (2 ms + 30 ms * sx * sy * load) * (1 + " << config.plant.noise
             << " N(0,1)), budget 16.67 ms, aim 15.0 ms (article: 16.67 ms), latency "
             << config.plant.latencyFrames << ", seed " << config.seed << ", " << config.frames

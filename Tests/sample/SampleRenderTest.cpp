@@ -14,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -428,6 +429,32 @@ TEST_F(SampleFixture, VSyncControllerSettlesNearPixelBoundScale) {
   // within a pixel of the fixed point; the integral viewport rounds down.
   EXPECT_NEAR(settled, std::sqrt(0.5), 0.015);
   EXPECT_LT(last.back() - last.front(), 0.01) << "the scale did not settle";
+}
+
+// What the article law is fed: from frame 0, the inner-frame timer's block
+// average (0 until 10 results) and 1 / the once-a-second FPS (+Inf before the
+// first figure), as the original; --fix ctrl-frame-period feeds the last
+// frame's period instead and changes nothing else.
+TEST_F(SampleFixture, ArticleLawIsFedAsTheOriginalUnlessCtrlFramePeriod) {
+  Options o = TinyOptions(160, 90);
+  o.vsync = false;
+  o.control = ControlMode::VSync;
+  o.law = ControlLaw::Article;
+  StartSample(o);
+  for (int i = 0; i < 10; ++i) {
+    ASSERT_TRUE(sample.RenderFrame());
+    const FrameTiming& fed = sample.LastLawInput();
+    EXPECT_EQ(fed.gpuInnerSeconds, 0.0) << "frame " << i << ": fewer than 10 GPU results, the average is 0";
+    const double fps = sample.DxutFps();
+    EXPECT_EQ(fed.frameSeconds, fps > 0 ? 1.0 / fps : std::numeric_limits<double>::infinity()) << i;
+  }
+  o.fixes.Set(Fix::CtrlFramePeriod, true);
+  sample.ApplySettings(o);
+  for (int i = 0; i < 5; ++i) {
+    ASSERT_TRUE(sample.RenderFrame());
+    const FrameTiming& fed = sample.LastLawInput();
+    EXPECT_NEAR(fed.frameSeconds * 1000.0, sample.Frames().back().cpuFrameMs, 1e-9) << i;
+  }
 }
 
 // ---------------------------------------------------------------------------
