@@ -384,7 +384,7 @@ void Sample::RenderGui(double elapsed) {
   v.backBufferW = m_Device.Width();
   v.backBufferH = m_Device.Height();
   v.refreshHz = m_RefreshHz;
-  v.nowSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  v.dxutFps = m_Fps.Fps();
   v.vsync = m_Window.Handle() && m_Options.vsync;  // as Present is called
   d3dl::TEXTURE2D_DESC bd;
   m_Device.Back().texture->GetDesc(&bd);

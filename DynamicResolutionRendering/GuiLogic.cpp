@@ -58,22 +58,6 @@ SliderPair MoveSliderY(SliderPair s, int y, bool aspectLock) {
   return s;
 }
 
-void FpsCounter::Frame(double now) {
-  if (!m_Started) {
-    // DXUT's last update time starts at 0 on a clock counting from boot, so
-    // its first frame publishes about 0 fps and starts the one-second window.
-    m_Started = true;
-    m_LastUpdate = now;
-    return;
-  }
-  ++m_Frames;
-  if (now - m_LastUpdate > 1.0) {
-    m_Fps = double(m_Frames) / (now - m_LastUpdate);
-    m_LastUpdate = now;
-    m_Frames = 0;
-  }
-}
-
 std::vector<std::string> TimingLines(const TimingStats& t) {
   const double vsyncMs = t.refreshHz > 0 ? 1000.0 / t.refreshHz : 0.0;
   return {Format("Frame Time (ms): %.2f", t.frameMs), Format("Clear Time (ms): %.2f", t.clearMs),

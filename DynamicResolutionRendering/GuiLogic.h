@@ -46,20 +46,6 @@ struct SliderPair {
 SliderPair MoveSliderX(SliderPair s, int x, bool aspectLock);
 SliderPair MoveSliderY(SliderPair s, int y, bool aspectLock);
 
-// DXUT's frame statistics: frames over the wall time since the last update,
-// refreshed once more than a second has passed (0 during the first second).
-// Until the controller/timing unit exposes this figure, the GUI counts it.
-class FpsCounter {
- public:
-  void Frame(double nowSeconds);
-  double Fps() const { return m_Fps; }
-
- private:
-  bool m_Started = false;
-  double m_LastUpdate = 0.0, m_Fps = 0.0;
-  long m_Frames = 0;
-};
-
 // The panel's timing lines (the original's UpdateStats texts), in order.
 struct TimingStats {
   double frameMs = 0, clearMs = 0, sceneMs = 0, postPMs = 0, scaleMs = 0;

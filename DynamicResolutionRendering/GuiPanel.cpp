@@ -76,7 +76,6 @@ void GuiPanel::SyncWithOptions(const GuiView& v) {
 }
 
 void GuiPanel::Build(const GuiView& view) {
-  m_Fps.Frame(view.nowSeconds);
   SyncWithOptions(view);
   ImGui::NewFrame();
   if (enabled && showPanel) Panel(view);
@@ -209,7 +208,7 @@ void GuiPanel::Text(const GuiView& v) {
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const ImU32 yellow = IM_COL32(255, 255, 0, 255);
   StatusInfo s;
-  s.fps = m_Fps.Fps();
+  s.fps = v.dxutFps;
   s.vsync = v.vsync;
   s.width = v.backBufferW;
   s.height = v.backBufferH;

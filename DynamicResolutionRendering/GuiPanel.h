@@ -34,7 +34,7 @@ struct GuiView {
   float scaleX = 1, scaleY = 1;  // the applied dynamic scale
   uint32_t backBufferW = 0, backBufferH = 0;
   double refreshHz = 60.0;  // the display's (the original's g_VSyncFrameRate)
-  double nowSeconds = 0.0;  // wall clock, for the FPS figure
+  double dxutFps = 0.0;  // DXUT's one-second figure (the coordinator's DxutFpsCounter)
   bool vsync = true, softwareAdapter = false;
   std::string backBufferFormat, adapter, lastMessage;
   // Called inside Build when the user changed a setting (scales: the applied
@@ -85,7 +85,6 @@ class GuiPanel {
   Options m_Seen;           // the options of the last Build
   PanelWidgets m_Widgets;   // enabled/shown, as the original's dialog keeps them
   SliderPair m_Sliders;     // the original's g_ResolutionScaleX/Y
-  FpsCounter m_Fps;
   GuiActions m_Actions;
 };
 

@@ -122,20 +122,6 @@ TEST(GuiSliders, AspectLockCouplesBothWays) {
 
 // ---------------------------------------------------------------------------
 // Text.
-TEST(GuiText, FpsIsDxutsOneSecondFigure) {
-  FpsCounter c;
-  c.Frame(1000.0);
-  EXPECT_EQ(c.Fps(), 0.0) << "the first second shows 0";
-  for (int i = 1; i <= 30; ++i) c.Frame(1000.0 + i * 0.025);  // 40 fps for 0.75 s
-  EXPECT_EQ(c.Fps(), 0.0) << "no update within the first second";
-  for (int i = 31; i <= 41; ++i) c.Frame(1000.0 + i * 0.025);  // 1.025 s: 41 frames
-  EXPECT_NEAR(c.Fps(), 41.0 / 1.025, 1e-9);
-  c.Frame(1001.025 + 0.5);  // within the next second: unchanged
-  EXPECT_NEAR(c.Fps(), 41.0 / 1.025, 1e-9);
-  c.Frame(1001.025 + 2.0);  // 2 frames in 2 s
-  EXPECT_NEAR(c.Fps(), 1.0, 1e-9);
-}
-
 TEST(GuiText, StatusLinesAsDxutsStatistics) {
   StatusInfo s;
   s.fps = 59.987;
