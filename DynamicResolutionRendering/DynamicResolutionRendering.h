@@ -110,6 +110,7 @@ class Sample {
   bool LoadScene(std::string* error);
   bool ResizeSwapChain(uint32_t w, uint32_t h);
   bool TAAActive() const;
+  bool FlipsTargets() const;
   RenderTargetPlan Plan() const;
   void RunResolutionControl();
   FrameSetup MakeFrameSetup();

@@ -67,7 +67,7 @@ TEST_F(SceneRender, ArenaFromEachStaticCamera) {
   ASSERT_TRUE(scene) << err;
   EXPECT_TRUE(scene->Warnings().empty()) << scene->Warnings().front();
   ASSERT_EQ(scene->CameraCount(), 3);
-  EXPECT_EQ(scene->DefaultCamera(), 1);
+  EXPECT_EQ(scene->CameraName(0), "camera_cinematic");  // CAMERA entries in file order, named by file
   const uint32_t W = 640, H = 360;
   Targets t = Make(W, H);
   scene->Update(1.0);
