@@ -7,8 +7,8 @@
 // DRR_FIX(Id, bit, "command-line-name", "one line of help")
 // Bits are stable (reports and scripts record them); never reuse one.
 DRR_FIX(UvInset, 0, "uv-inset", "resolves clamp UVs half a texel inside the dynamic viewport")
-DRR_FIX(FrustumCull, 15, "frustum-cull", "the scene culls bounding spheres against the whole view frustum, not only meshes behind the eye")
-DRR_FIX(CameraCut, 16, "camera-cut", "a camera change starts a new velocity history (no one-frame motion-blur smear)")
-DRR_FIX(TaaFlip, 17, "taa-flip", "the TAA target flips only when TAA runs (dynamic resolution on), not for TAA Noise Offset / Basic with it off")
-DRR_FIX(CameraEye, 18, "camera-eye", "specular lighting from the viewing camera's eye, not the first-person camera's")
-DRR_FIX(SrgbTargets, 19, "srgb-targets", "sRGB colour render targets: 8-bit storage without the dark-tone banding of linear UNORM")
+DRR_FIX(FrustumCull, 15, "frustum-cull", "scene culls spheres against the frustum, not only behind the eye")
+DRR_FIX(CameraCut, 16, "camera-cut", "a camera change restarts the velocity history (no smear)")
+DRR_FIX(TaaFlip, 17, "taa-flip", "TAA targets flip only while TAA runs (dynamic resolution on)")
+DRR_FIX(CameraEye, 18, "camera-eye", "specular from the viewing camera's eye, not the first person's")
+DRR_FIX(SrgbTargets, 19, "srgb-targets", "sRGB colour targets: no dark-tone banding of linear UNORM")
