@@ -40,7 +40,7 @@ Options TinyOptions(uint32_t w = 160, uint32_t h = 90) {
   o.control = ControlMode::Manual;
   o.gui = false;
   o.time = 1.0;  // reproducible frames
-  o.camera = 1;
+  o.camera = 2;  // static camera 1 (0 is First Person, 1 the cinematic camera)
   return o;
 }
 
@@ -103,7 +103,7 @@ TEST_P(SampleMatrix, AllScalesMotionBlurSymmetric) {
   Options base = TinyOptions();
   base.filter = filter;
   base.fixedDt = 1.0 / 30.0;  // the scene moves: velocities are non-zero
-  base.camera = 0;            // cinematic camera
+  base.camera = 1;            // cinematic camera
   Sample s;
   std::string err;
   ASSERT_EQ(s.Init(base, &err), 0) << err;
@@ -248,7 +248,7 @@ TEST_F(SampleFixture, WithFixesNothingReadsOutsideTheViewport) {
   Options o = TinyOptions(160, 90);
   o.fixes = FixSet::All();
   o.motionBlur = true;
-  o.camera = 0;
+  o.camera = 1;
   o.fixedDt = 1.0 / 15.0;  // fast cinematic motion
   o.debugMarkerOutside = true;
   StartSample(o);
@@ -594,7 +594,7 @@ TEST_F(SampleFixture, ReloadShadersCompilesSourcesAndKeepsOldShadersOnError) {
 // 7. Pause with TAA: the image stays still (no flicker between the two targets).
 TEST_F(SampleFixture, PausedTAAImageIsStable) {
   Options o = TinyOptions(160, 90);
-  o.camera = 0;             // cinematic camera: it moves until paused
+  o.camera = 1;             // cinematic camera: it moves until paused
   o.fixedDt = 1.0 / 30.0;
   o.filter = Filter::TAA;
   StartSample(o);
