@@ -81,6 +81,8 @@ class Sample {
   std::array<float, 4> GuiStaticRect() const { return m_Gui.staticRect; }
   const SampleStats& Stats() const { return m_Stats; }
   d3dl::Device* GetDevice() const { return m_Device.Device(); }
+  const Scene* GetScene() const { return m_Scene.get(); }
+  const Cameras& GetCameras() const { return m_Cameras; }
   bool SaveScreenshot(const std::string& path, bool noGui, std::string* error) const {
     return m_Log.SaveScreenshot(path, noGui, error);
   }
