@@ -130,7 +130,7 @@ class Sample {
   DynamicResolution m_DynamicResolution;
   RenderTargetSet m_Targets;
   TemporalHistory m_History;  // the TAA ping-pong of the final/velocity targets
-  bool m_ResetVelocityHistory = true;
+  bool m_ResetVelocityHistory = true;  // the scene's previous matrices restart (first frame, resize)
 
   FramePasses m_Passes;
   GuiPanel m_Gui;
