@@ -348,3 +348,37 @@ TEST_F(SceneRender, AlphaTestDiscardsTransparentTexels) {
   EXPECT_FALSE(isClear(img.RGBA8(42, 32))) << "an opaque texel is drawn";
   fs::remove_all(dir);
 }
+
+// A DECAL entry co-planar with a LIT one: drawn (depth LESS_EQUAL), blended by
+// its alpha, and its alpha written as the source's, as the original's states.
+TEST_F(SceneRender, DecalsBlendAsTheOriginal) {
+  fs::path dir = fs::temp_directory_path() / ("drr_scene_decal_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  WritePng(dir / "white.png", std::vector<uint8_t>(16, 255));
+  WritePng(dir / "red.png", {255, 0, 0, 128, 255, 0, 0, 128, 255, 0, 0, 128, 255, 0, 0, 128});
+  std::ofstream(dir / "quad.mtl") << "newmtl white\nKd 1 1 1\nmap_Kd white.png\nnewmtl red\nKd 1 1 1\nmap_Kd red.png\n";
+  // Facing +z, away from the light (N.L < 0): ambient only, and the alpha stays the texture's.
+  WriteQuad(dir / "floor.obj", glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), "white");
+  WriteQuad(dir / "decal.obj", glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), "red");
+  std::ofstream(dir / "scene.txt") << "floor.obj NO_ANIM LIT\ndecal.obj NO_ANIM DECAL\n";
+  std::string err;
+  auto scene = Scene::Load(device(), (dir / "scene.txt").string(), {}, &err);
+  ASSERT_TRUE(scene) << err;
+  const uint32_t W = 32, H = 32;
+  Targets t = Make(W, H);
+  t.color = MakeRenderTarget(W, H, d3dl::DXGI_FORMAT_R8G8B8A8_UNORM);
+  SceneRenderParams p;
+  p.view = glm::lookAtRH(glm::vec3(0, 0, 2.5f), glm::vec3(0.f), glm::vec3(0, 1, 0));
+  p.proj = glm::perspectiveRH_ZO(glm::radians(60.f), 1.f, 0.1f, 100.f);
+  Begin(t, W, H);
+  scene->Render(context(), p);
+  const auto got = ReadBack(t.color.texture.Get()).RGBA8(W / 2, H / 2);
+  const float a = 128.f / 255.f;
+  const glm::vec3 ambient(0.42f, 0.44f, 0.46f);
+  const glm::vec3 want = a * ambient * glm::vec3(1, 0, 0) + (1.f - a) * ambient;
+  std::printf("decal over floor: got %d %d %d %d, expected %.1f %.1f %.1f %.1f\n", got[0], got[1], got[2], got[3],
+              want.x * 255, want.y * 255, want.z * 255, a * 255);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c] * 255.f, 1.01f) << "channel " << c;
+  EXPECT_EQ(got[3], 128) << "the decal's alpha is written (ONE, ZERO)";
+  fs::remove_all(dir);
+}
