@@ -76,7 +76,8 @@ d3dl::DXGI_FORMAT RenderTargetSet::Format(RT rt, bool srgbColour) {
 uint64_t RenderTargetSet::OriginalBytes(uint32_t backW, uint32_t backH, uint32_t dynW, uint32_t dynH) {
   const uint64_t colour = d3dl::FormatBytesPerElement(kColor), velocity = d3dl::FormatBytesPerElement(kVelocity),
                  depth = d3dl::FormatBytesPerElement(kDepth);
-  const uint64_t full = uint64_t(backW) * backH * (colour + velocity + depth);
+  const uint64_t zoomCopy = colour;  // the back buffer's RGBA8 format
+  const uint64_t full = uint64_t(backW) * backH * (colour + velocity + depth + zoomCopy);
   const uint64_t dyn = uint64_t(dynW) * dynH * (depth + colour + 2 * velocity + 2 * colour);
   return full + dyn;
 }

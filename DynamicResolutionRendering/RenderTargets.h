@@ -66,9 +66,10 @@ class RenderTargetSet {
   RenderTarget& Velocity(int i) { return (*this)[i ? RT::VelocityDynamic1 : RT::VelocityDynamic0]; }
   uint64_t Bytes() const;
   // What the original allocates for the same back buffer and dynamic RT: all
-  // of its targets whatever the mode (g_Color, g_Velocity and DXUT's depth at
-  // the back buffer's size; depth, colour, two velocities, two finals at the
-  // dynamic size). The port allocates only what the mode reads (Needed).
+  // of its targets whatever the mode (g_Color, g_Velocity, DXUT's depth and the
+  // zoom box's copy at the back buffer's size; depth, colour, two velocities,
+  // two finals at the dynamic size). The port allocates only what the mode
+  // reads (Needed), and the zoom box's copy only while it is shown.
   static uint64_t OriginalBytes(uint32_t backW, uint32_t backH, uint32_t dynW, uint32_t dynH);
 
   static const char* Name(RT rt);  // "g_FinalRTDynamic[0]"
