@@ -61,7 +61,7 @@ int Sample::Init(const Options& options, std::string* error) {
              std::to_string(m_Cameras.Count() - 1) + "]";
     return 2;
   }
-  m_Cameras.Select(options.camera >= 0 ? options.camera : m_Scene->DefaultCamera());
+  m_Cameras.Select(options.camera >= 0 ? options.camera : m_Cameras.Default());
   m_Options.camera = m_Cameras.Current();
   if (!m_Gui.Init(m_Device.Device(), m_Shaders, error)) return 1;
   m_Window.InstallInput(&m_GuiInput, this, KeyThunk, MouseThunk);
@@ -107,6 +107,9 @@ bool Sample::ResizeSwapChain(uint32_t w, uint32_t h) {
   m_Passes.GetZoomBox().ReleaseCopy();
   if (!m_Device.Resize(w, h)) return false;
   ReleaseDynamicResolution();
+  // The original's resize: the scene's previous matrices restart, and a paused sample resumes.
+  m_ResetVelocityHistory = true;
+  m_Options.pause = false;
   return InitDynamicResolution();
 }
 
@@ -144,7 +147,7 @@ bool Sample::TAAActive() const {
 
 RenderTargetPlan Sample::Plan() const {
   return {m_Options.dynamicResolution, m_Options.superSampling, m_Options.motionBlur, TAAActive(),
-          m_Device.Width(), m_Device.Height()};
+          m_Options.fixes.Has(Fix::SrgbTargets), m_Device.Width(), m_Device.Height()};
 }
 
 bool Sample::InitDynamicResolution() {
@@ -157,7 +160,6 @@ bool Sample::InitDynamicResolution() {
   if (ok) m_Targets.ZeroContents(m_Device.Context());
   m_History.current = 0;
   m_History.valid = false;
-  m_ResetVelocityHistory = true;
   if (m_Controller) m_Controller->Reset();
   return ok;
 }
@@ -180,8 +182,11 @@ void Sample::ApplySettings(const Options& o) {
   if (o.refresh > 0) m_RefreshHz = o.refresh;
   if (o.law != keep.law || !m_Controller) m_Controller = MakeController(m_Options.law, m_LawLatency);  // resets
   else if (o.control != keep.control) m_Controller->Reset();
-  if (o.camera >= 0 && o.camera < m_Cameras.Count() && o.camera != m_Cameras.Current() && m_Cameras.Select(o.camera))
-    m_ResetVelocityHistory = true;  // camera cut
+  // The original keeps the velocity history across a camera change (one frame
+  // of smear); the camera-cut fix restarts it.
+  if (o.camera >= 0 && o.camera < m_Cameras.Count() && o.camera != m_Cameras.Current() && m_Cameras.Select(o.camera) &&
+      m_Options.fixes.Has(Fix::CameraCut))
+    m_ResetVelocityHistory = true;
   m_Options.camera = m_Cameras.Current();
   if (!(Plan() == m_Targets.Plan())) InitDynamicResolution();
   if (scaleChanged || m_Options.control == ControlMode::Manual)
@@ -234,13 +239,18 @@ void Sample::OnFrameMove(double elapsed) {
     }
   }
   m_Scene->Update(m_AnimationTime);
-  m_Cameras.UpdateFirstPerson(m_Window.Handle(), !GuiInput::WantsKeyboard(), elapsed);
+  // The original moves its first-person camera only while not paused.
+  if (!m_Options.pause) m_Cameras.UpdateFirstPerson(m_Window.Handle(), !GuiInput::WantsKeyboard(), elapsed);
+  m_History.current = FlipsTargets() ? 1 - m_History.current : 0;
+}
 
-  // Flip the final/velocity targets each frame for TAA (precedence bug of the
-  // original fixed: only with a TAA mode and dynamic resolution on). The jitter
-  // is tied to the target index, so a paused scene keeps both targets stable:
-  // the un-jittered frame always lands in the same target (no flicker).
-  m_History.current = TAAActive() ? 1 - m_History.current : 0;
+// The original flips the final/velocity pair when `enabled && TAA || TAA_NO ||
+// TAA_BASIC`: by operator precedence TAA Noise Offset and TAA Basic flip it
+// with dynamic resolution off too, where a paused scene then alternates
+// between its last two frames. The taa-flip fix flips only when TAA runs.
+bool Sample::FlipsTargets() const {
+  if (m_Options.fixes.Has(Fix::TaaFlip)) return TAAActive();
+  return TAAActive() || m_Options.filter == Filter::TAANoiseOffset || m_Options.filter == Filter::TAABasic;
 }
 
 void Sample::ControlResolution(double innerFrameSeconds, double frameSeconds) {
@@ -314,6 +324,8 @@ FrameSetup Sample::MakeFrameSetup() {
                     m_Options.symmetricTAA);
   FillConstants(s, m_History, glm::vec2(dr.GetDynamicBufferWidth(), dr.GetDynamicBufferHeight()),
                 glm::vec2(m_Device.Width(), m_Device.Height()), m_Options.fixes);
+  // The original's paused TAA resolve reads target 0 as the current frame.
+  s.pausedSwap = m_Options.pause && s.taa && s.cur == 1;
   return s;
 }
 
@@ -327,7 +339,11 @@ SceneRenderParams Sample::SceneParams() const {
   p.jitterNdc = glm::vec2(2.0f * m_History.jitterCurr.x, -2.0f * m_History.jitterCurr.y);
   p.mipBiasSampler = TAAActive();
   p.resetHistory = m_ResetVelocityHistory;
+  p.paused = m_Options.pause;
+  p.target = m_History.current;
   p.showCameras = m_Options.showCameras;
+  p.shadingEye = m_Cameras.ShadingEye(m_Options.fixes.Has(Fix::CameraEye));
+  p.frustumCulling = m_Options.fixes.Has(Fix::FrustumCull);
   return p;
 }
 
@@ -495,7 +511,14 @@ int Sample::Run() {
     written(SaveScreenshot(m_Options.screenshot, m_Options.screenshotNoGui, &err), "screenshot", m_Options.screenshot);
   }
   if (!m_Options.report.empty()) written(WriteReport(m_Options.report, &err), "report", m_Options.report);
-  if (m_Options.stats && m_Scene) std::printf("%s\n", m_Scene->Stats().ToString().c_str());
+  if (m_Options.stats && m_Scene) {
+    std::printf("%s\n", m_Scene->Stats().ToString().c_str());
+    const uint64_t original = RenderTargetSet::OriginalBytes(m_Device.Width(), m_Device.Height(),
+                                                             m_DynamicResolution.GetDynamicBufferWidth(),
+                                                             m_DynamicResolution.GetDynamicBufferHeight());
+    std::printf("render targets %.1f MiB (the original allocates %.1f MiB for this mode)\n",
+                RenderTargetBytes() / 1048576.0, original / 1048576.0);
+  }
   const uint64_t messages = ValidationMessages();
   if (messages > 0) std::fprintf(stderr, "validation messages: %llu\n", (unsigned long long)messages);
   if (m_Options.validation && messages > 0) rc = 3;

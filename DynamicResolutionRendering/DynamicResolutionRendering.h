@@ -81,6 +81,8 @@ class Sample {
   std::array<float, 4> GuiStaticRect() const { return m_Gui.staticRect; }
   const SampleStats& Stats() const { return m_Stats; }
   d3dl::Device* GetDevice() const { return m_Device.Device(); }
+  const Scene* GetScene() const { return m_Scene.get(); }
+  const Cameras& GetCameras() const { return m_Cameras; }
   bool SaveScreenshot(const std::string& path, bool noGui, std::string* error) const {
     return m_Log.SaveScreenshot(path, noGui, error);
   }
@@ -122,6 +124,7 @@ class Sample {
   bool LoadScene(std::string* error);
   bool ResizeSwapChain(uint32_t w, uint32_t h);
   bool TAAActive() const;
+  bool FlipsTargets() const;
   RenderTargetPlan Plan() const;
   void RunResolutionControl();
   FrameSetup MakeFrameSetup();
@@ -140,7 +143,7 @@ class Sample {
   DynamicResolution m_DynamicResolution;
   RenderTargetSet m_Targets;
   TemporalHistory m_History;  // the TAA ping-pong of the final/velocity targets
-  bool m_ResetVelocityHistory = true;
+  bool m_ResetVelocityHistory = true;  // the scene's previous matrices restart (first frame, resize)
 
   FramePasses m_Passes;
   GuiPanel m_Gui;

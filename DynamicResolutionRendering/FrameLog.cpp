@@ -167,6 +167,8 @@ bool FrameLog::WriteReport(const std::string& path, const ReportInfo& info, std:
   j.Pair("back_buffer", info.backBuffer[0], info.backBuffer[1]);
   j.Pair("dynamic_rt", info.dynamicRT[0], info.dynamicRT[1]);
   j.Value("render_target_bytes", info.targets->Bytes() + info.zoomBoxBytes);
+  j.Value("render_target_bytes_original", RenderTargetSet::OriginalBytes(info.backBuffer[0], info.backBuffer[1],
+                                                                         info.dynamicRT[0], info.dynamicRT[1]));
   WriteTargets(j, info);
   j.BeginObject("passes_run").Inline();
   for (const auto& [name, count] : *info.passesRun) j.Value(name, count);

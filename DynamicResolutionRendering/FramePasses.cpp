@@ -333,12 +333,17 @@ void FramePasses::Scale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTar
       rc.noiseOffset[0] = offset[0];
       rc.noiseOffset[1] = offset[1];
     }
+    const int cur = s.pausedSwap ? s.prev : s.cur, prev = s.pausedSwap ? s.cur : s.prev;
+    if (s.pausedSwap) {
+      std::swap(rc.ratioCurr, rc.ratioPrev);
+      std::swap(rc.jitterCurr, rc.jitterPrev);
+    }
     SetConstants(ctx, &rc, sizeof rc);
     const bool velocityTAA = s.taa && !s.motionBlur;
-    d3dl::ShaderResourceView* srv[6] = {rts.Final(s.cur).srv.Get(),
-                                        s.taa ? rts.Final(s.prev).srv.Get() : nullptr,
-                                        velocityTAA ? rts.Velocity(s.cur).srv.Get() : nullptr,
-                                        velocityTAA ? rts.Velocity(s.prev).srv.Get() : nullptr,
+    d3dl::ShaderResourceView* srv[6] = {rts.Final(cur).srv.Get(),
+                                        s.taa ? rts.Final(prev).srv.Get() : nullptr,
+                                        velocityTAA ? rts.Velocity(cur).srv.Get() : nullptr,
+                                        velocityTAA ? rts.Velocity(prev).srv.Get() : nullptr,
                                         m_Noise.GetSRV(),
                                         m_CubicLookup.GetSRV()};
     ctx->PSSetShaderResources(0, 6, srv);

@@ -57,6 +57,9 @@ struct FrameSetup {
   Filter filter = Filter::TAA;
   FixSet fixes;
   int cur = 0, prev = 0;  // final/velocity targets written and read as history
+  // The original's paused TAA with target 1 current: the resolve reads target 0
+  // as current and 1 as history, with their jitters and ratios swapped.
+  bool pausedSwap = false;
   d3dl::VIEWPORT sceneViewport{}, backBufferViewport{};
   DynamicConstants dc{};
   FullConstants fc{};

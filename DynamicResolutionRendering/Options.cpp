@@ -96,7 +96,7 @@ constexpr Spec kSpecs[] = {
     Int("--frames", "N", &Options::frames, 0, 1e9,
         "frames to render (default: 300 headless, windowed until closed)"),
     Path("--scene", "PATH", &Options::scene, "scene description or model (default: the build's Arena)"),
-    Int("--camera", "N", &Options::camera, 0, 1000, "camera index (default: the scene's default, 1)"),
+    Int("--camera", "N", &Options::camera, 0, 1000, "0 first person, 1.. the scene's cameras (default 1)"),
     Choice("--filter", "NAME", &Options::filter, ChoicesOf<Filter, FilterOption>("filter"),
            "{choices} (default taa)"),
     Scale("--scale", 3,

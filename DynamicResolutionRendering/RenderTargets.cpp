@@ -10,7 +10,9 @@ struct TargetInfo {
   d3dl::DXGI_FORMAT format;
   bool dynamic;  // sized as the dynamic RT, else as the back buffer
 };
-constexpr d3dl::DXGI_FORMAT kColor = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
+// The original's colour targets are R8G8B8A8_UNORM: they hold the shader's
+// linear values in 8 bits; only the back buffer is sRGB.
+constexpr d3dl::DXGI_FORMAT kColor = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM;
 constexpr d3dl::DXGI_FORMAT kVelocity = d3dl::DXGI_FORMAT_R16G16_FLOAT;
 constexpr d3dl::DXGI_FORMAT kDepth = d3dl::DXGI_FORMAT_D32_FLOAT;
 constexpr TargetInfo kTargets[] = {
@@ -66,7 +68,19 @@ uint64_t RenderTarget::Bytes() const {
 }
 
 const char* RenderTargetSet::Name(RT rt) { return kTargets[int(rt)].name; }
-d3dl::DXGI_FORMAT RenderTargetSet::Format(RT rt) { return kTargets[int(rt)].format; }
+d3dl::DXGI_FORMAT RenderTargetSet::Format(RT rt, bool srgbColour) {
+  const d3dl::DXGI_FORMAT f = kTargets[int(rt)].format;
+  return srgbColour && f == kColor ? d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB : f;
+}
+
+uint64_t RenderTargetSet::OriginalBytes(uint32_t backW, uint32_t backH, uint32_t dynW, uint32_t dynH) {
+  const uint64_t colour = d3dl::FormatBytesPerElement(kColor), velocity = d3dl::FormatBytesPerElement(kVelocity),
+                 depth = d3dl::FormatBytesPerElement(kDepth);
+  const uint64_t zoomCopy = colour;  // the back buffer's RGBA8 format
+  const uint64_t full = uint64_t(backW) * backH * (colour + velocity + depth + zoomCopy);
+  const uint64_t dyn = uint64_t(dynW) * dynH * (depth + colour + 2 * velocity + 2 * colour);
+  return full + dyn;
+}
 
 bool RenderTargetSet::Needed(RT rt, const RenderTargetPlan& p) {
   if (kTargets[int(rt)].dynamic != p.dynamic) return false;
@@ -93,7 +107,8 @@ bool RenderTargetSet::Allocate(d3dl::Device* device, const RenderTargetPlan& pla
     if (!Needed(rt, plan)) continue;
     const bool dyn = kTargets[i].dynamic;
     ok = ok && d3dl::SUCCEEDED(m_Targets[i].Create(device, dyn ? dynW : plan.backBufferW,
-                                                   dyn ? dynH : plan.backBufferH, Format(rt), Name(rt)));
+                                                   dyn ? dynH : plan.backBufferH, Format(rt, plan.srgbColour),
+                                                   Name(rt)));
   }
   m_Plan = plan;
   return ok;

@@ -43,6 +43,7 @@ enum class RT : int {
 // What decides which targets exist and their sizes; a change re-allocates.
 struct RenderTargetPlan {
   bool dynamic = false, superSampling = false, motionBlur = false, taa = false;
+  bool srgbColour = false;  // fix srgb-targets: sRGB colour targets instead of the original's UNORM
   uint32_t backBufferW = 0, backBufferH = 0;
   bool operator==(const RenderTargetPlan&) const = default;
 };
@@ -64,9 +65,15 @@ class RenderTargetSet {
   RenderTarget& Final(int i) { return (*this)[i ? RT::FinalDynamic1 : RT::FinalDynamic0]; }
   RenderTarget& Velocity(int i) { return (*this)[i ? RT::VelocityDynamic1 : RT::VelocityDynamic0]; }
   uint64_t Bytes() const;
+  // What the original allocates for the same back buffer and dynamic RT: all
+  // of its targets whatever the mode (g_Color, g_Velocity, DXUT's depth and the
+  // zoom box's copy at the back buffer's size; depth, colour, two velocities,
+  // two finals at the dynamic size). The port allocates only what the mode
+  // reads (Needed), and the zoom box's copy only while it is shown.
+  static uint64_t OriginalBytes(uint32_t backW, uint32_t backH, uint32_t dynW, uint32_t dynH);
 
   static const char* Name(RT rt);  // "g_FinalRTDynamic[0]"
-  static d3dl::DXGI_FORMAT Format(RT rt);
+  static d3dl::DXGI_FORMAT Format(RT rt, bool srgbColour = false);
   // Whether the plan needs rt (the original's InitDynamicResolution rules).
   static bool Needed(RT rt, const RenderTargetPlan& plan);
 

@@ -1,10 +1,11 @@
 // Scene shader of the sample: one normal- and specular-mapped forward shader
-// writing colour (SV_Target0) and per-pixel velocity (SV_Target1).
+// writing colour (SV_Target0) and per-pixel velocity (SV_Target1), with the
+// formulas of the original's SceneShaders.hlsl.
 // Variants (compiled at build time, Shaders/Scene.cmake); the vertex shader
 // is built per (NORMAL_MAP, WRITE_VELOCITY) so that its outputs are exactly
 // the pixel shader's inputs (no unconsumed interface variables):
 //   NORMAL_MAP     0|1  sample the tangent-space normal map (t1)
-//   SPECULAR_MAP   0|1  modulate the specular term by the specular map (t2)
+//   SPECULAR_MAP   0|1  modulate the specular term by the specular map (t2); 0 = none
 //   WRITE_VELOCITY 0|1  write velocity to SV_Target1
 // Matrices are uploaded as glm stores them (column-major) and used with
 // mul(M, v) under HLSL's default column_major packing.
@@ -23,14 +24,14 @@ cbuffer ObjectConstants : register(b0) {
   float4x4 g_PrevWorldViewProj;  // last frame's, with this frame's jitter
   float4x4 g_World;
   float4 g_DiffuseTint;          // material factor (rgb) and opacity (a)
-  float4 g_EyePosition;          // world space
+  float4 g_EyePosition;          // world space: the original's first-person eye (see Cameras.h)
 };
 
 cbuffer LightingConstants : register(b1) {
-  float4 g_LightDiffuse;   // rgb
-  float4 g_LightAmbient;   // rgb
-  float4 g_LightSpecular;  // rgb, w = specular power
-  float4 g_LightDirection; // xyz: the direction the light travels (world)
+  float4 g_LightDiffuse;   // the original's colours, alpha 1 (it reaches the output alpha)
+  float4 g_LightAmbient;
+  float4 g_LightSpecular;
+  float4 g_LightDirection; // xyz: the direction the light travels (world); w: specular power
 };
 
 Texture2D g_DiffuseMap : register(t0);
@@ -89,28 +90,36 @@ struct PSOut {
 #endif
 };
 
+// The original's lighting: per-channel saturated diffuse plus ambient, times
+// the texture; Phong specular (reflected light against the view direction)
+// only where the surface faces the light, added and saturated. A material
+// without a specular map reads the original's black.png (no specular; its
+// alpha, 1, still raises the output alpha as the original's does).
 PSOut ScenePS(VSOut i) {
-  float4 albedo = g_DiffuseMap.Sample(g_Sampler, i.texcoord) * g_DiffuseTint;
-  float3 n = normalize(i.normal);
+  const float4 texColor = g_DiffuseMap.Sample(g_Sampler, i.texcoord);
+  if (texColor.a == 0.0) discard;  // the original's alpha test, on the texture alone
+  const float3 n = normalize(i.normal);
 #if NORMAL_MAP
-  float3 tn = g_NormalMap.Sample(g_Sampler, i.texcoord).xyz * 2.0 - 1.0;
-  float3 t = normalize(i.tangent - n * dot(n, i.tangent));
-  float3 b = normalize(i.binormal);
-  n = normalize(tn.x * t + tn.y * b + tn.z * n);
-#endif
-  float3 l = -normalize(g_LightDirection.xyz);
-  float3 v = normalize(g_EyePosition.xyz - i.worldPos);
-  float ndl = saturate(dot(n, l));
-  float3 h = normalize(l + v);
-  float spec = ndl > 0.0 ? pow(saturate(dot(n, h)), g_LightSpecular.w) : 0.0;
-#if SPECULAR_MAP
-  float3 specColor = g_SpecularMap.Sample(g_Sampler, i.texcoord).rgb;
+  const float3 tn = g_NormalMap.Sample(g_Sampler, i.texcoord).xyz * 2.0 - 1.0;
+  const float3 bump = normalize(tn.z * n + tn.x * normalize(i.tangent) + tn.y * normalize(i.binormal));
 #else
-  float3 specColor = float3(0.25, 0.25, 0.25);
+  const float3 bump = n;  // the original's flat normal map
 #endif
+  const float3 toLight = -g_LightDirection.xyz;  // not renormalised, as the original
+  const float intensity = saturate(dot(bump, toLight));
+  float4 color = (saturate(g_LightDiffuse * intensity) + g_LightAmbient) * (texColor * g_DiffuseTint);
+  if (intensity > 0.0) {
+#if SPECULAR_MAP
+    const float4 specularMap = g_SpecularMap.Sample(g_Sampler, i.texcoord);
+#else
+    const float4 specularMap = float4(0.0, 0.0, 0.0, 1.0);
+#endif
+    const float3 reflected = normalize(2.0 * intensity * bump - toLight);
+    const float phong = pow(saturate(dot(reflected, normalize(g_EyePosition.xyz - i.worldPos))), g_LightDirection.w);
+    color = saturate(color + phong * specularMap * g_LightSpecular);
+  }
   PSOut o;
-  o.color.rgb = albedo.rgb * (g_LightAmbient.rgb + g_LightDiffuse.rgb * ndl) + g_LightSpecular.rgb * specColor * spec;
-  o.color.a = albedo.a;
+  o.color = color;
 #if WRITE_VELOCITY
   float2 curr = i.currClip.xy / i.currClip.w;
   float2 prev = i.prevClip.xy / i.prevClip.w;

@@ -174,6 +174,8 @@ bool DeviceImpl::EnableFeatures(VkPhysicalDeviceFeatures2* e2, VkPhysicalDeviceV
   e13->dynamicRendering = VK_TRUE;
   e13->synchronization2 = VK_TRUE;
   e13->maintenance4 = f13.maintenance4;  // relaxed VS/PS interface matching, as in D3D
+  // HLSL `discard` compiles to OpDemoteToHelperInvocation for Vulkan 1.3 (a required 1.3 feature).
+  e13->shaderDemoteToHelperInvocation = f13.shaderDemoteToHelperInvocation;
   e12->hostQueryReset = f12.hostQueryReset;
   e12->samplerFilterMinmax = f12.samplerFilterMinmax;
   e12->samplerMirrorClampToEdge = f12.samplerMirrorClampToEdge;

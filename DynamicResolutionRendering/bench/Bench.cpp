@@ -307,7 +307,7 @@ void MeasureClaims(Sample& sample, const BenchPlan& plan, const Options& o, cons
 // time = ghostTime - (frameCount at capture) * fixedDt the captured frame is
 // at ghostTime exactly, and the reference is rendered there.
 bool MeasureMoving(const BenchPlan& plan, BenchResults* results, Progress* progress, std::string* error) {
-  const BenchView refView{0, plan.ghostTime, "cinematic moving t=" + Num2(plan.ghostTime)};
+  const BenchView refView{1, plan.ghostTime, "cinematic moving t=" + Num2(plan.ghostTime)};
   ImageF reference;
   BenchRow repeat;
   if (!MakeReference(plan, refView, &reference, &repeat, error)) return false;
@@ -318,7 +318,7 @@ bool MeasureMoving(const BenchPlan& plan, BenchResults* results, Progress* progr
   if (sample.Init(o, error) != 0) return false;
   const int n = plan.ghostFrames;
   auto moving = [&](Options s) {
-    s.camera = 0;
+    s.camera = 1;  // cinematic
     s.fixedDt = plan.ghostStep;
     const int64_t captureFrame = sample.FrameCount() + n;  // n frames, then the capture
     s.time = plan.ghostTime - double(captureFrame) * plan.ghostStep;

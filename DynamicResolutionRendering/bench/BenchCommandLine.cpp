@@ -134,12 +134,13 @@ void ChooseSweep(const BenchArgs& parsed, BenchPlan* plan) {
     plan->views = {{plan->base.camera, plan->base.time >= 0 ? plan->base.time : 0.0,
                     "camera " + std::to_string(plan->base.camera)}};
   } else if (plan->quick) {
-    plan->views = {{1, 0.0, "static 1"}};
+    plan->views = {{2, 0.0, "static 1"}};
   } else {
-    plan->views = {{1, 0.0, "static 1"},
-                   {2, 0.0, "static 2"},
-                   {0, 4.0, "cinematic t=4"},
-                   {0, 12.0, "cinematic t=12"}};
+    // Camera indices as the original's list: 0 first person, 1 cinematic, 2 and 3 static.
+    plan->views = {{2, 0.0, "static 1"},
+                   {3, 0.0, "static 2"},
+                   {1, 4.0, "cinematic t=4"},
+                   {1, 12.0, "cinematic t=12"}};
   }
   if (parsed.filterGiven) {
     plan->filters = {plan->base.filter};

@@ -15,6 +15,7 @@
 #include "d3dl/D3DLike.h"
 #include "scene/ModelLoader.h"
 #include "scene/SceneDescription.h"
+#include "scene/SceneImpl.h"
 
 
 namespace drr {
@@ -35,122 +36,18 @@ std::string SceneStats::ToString() const {
 }
 
 namespace {
-
-// Per-object constants (b0, VS and PS).
-struct ObjectConstants {
-  glm::mat4 worldViewProj;
-  glm::mat4 prevWorldViewProj;
-  glm::mat4 world;
-  glm::vec4 diffuseTint;
-  glm::vec4 eyePosition;
-};
-static_assert(sizeof(ObjectConstants) == 224);
-
-// Per-type constants (b1, PS).
-struct LightingConstants {
-  glm::vec4 diffuse, ambient, specular, direction;
-};
-
-int VariantIndex(bool normal, bool specular, bool velocity) { return (normal ? 4 : 0) | (specular ? 2 : 0) | (velocity ? 1 : 0); }
 // Names of the compiled variants in Shaders/CMakeLists.txt.
 std::string VariantFile(int v) {
   char b[64];
   snprintf(b, sizeof b, "scene_ps_n%d_s%d_v%d", (v >> 2) & 1, (v >> 1) & 1, v & 1);
   return b;
 }
-
-float MaxScale(const glm::mat4& m) {
-  return std::sqrt(std::max({glm::dot(glm::vec3(m[0]), glm::vec3(m[0])), glm::dot(glm::vec3(m[1]), glm::vec3(m[1])),
-                             glm::dot(glm::vec3(m[2]), glm::vec3(m[2]))}));
-}
-
 }  // namespace
 
-struct GpuMesh {
-  ComPtr<d3dl::Buffer> vb, ib;
-  d3dl::DXGI_FORMAT indexFormat = d3dl::DXGI_FORMAT_R32_UINT;
-  uint32_t indexCount = 0;
-  uint32_t material = 0;
-  glm::vec3 center{0.f};
-  float radius = 0.f;
-};
-
-struct GpuMaterial {
-  ComPtr<d3dl::ShaderResourceView> diffuse, normal, specular;
-  bool hasNormal = false, hasSpecular = false, blend = false, twoSided = false;
-  glm::vec4 tint{1.f};
-};
-
-struct DrawItem {
-  int node = 0;
-  int mesh = 0;
-  glm::mat4 prevWVP{1.f};  // un-jittered, from the last Render
-  bool hasPrev = false;
-};
-
-struct Entry {
-  SceneEntry desc;
-  ModelData model;
-  glm::mat4 transform{1.f};
-  std::vector<GpuMesh> meshes;
-  std::vector<GpuMaterial> materials;
-  std::vector<glm::mat4> globals;
-  std::vector<DrawItem> items;
-};
-
-struct CameraRef {
-  std::string name;
-  int entry = -1;    // -1: automatic camera (fixed pose)
-  int camera = -1;   // index into the entry model's cameras, -1 = the model's root node
-  CameraPose fixed;  // automatic camera
-};
-
-struct SceneImpl {
-  ComPtr<d3dl::Device> device;
-  SceneLoadOptions opts;
-  ShaderLibrary shaders;
-  std::vector<Entry> entries;
-  std::vector<CameraRef> cameras;
-  int defaultCamera = 0;
-  std::vector<std::string> warnings;
-  glm::vec3 boundsMin{0.f}, boundsMax{0.f};
-
-  // Vertex shader variants by (NORMAL_MAP, WRITE_VELOCITY): index n*2+v.
-  std::vector<uint32_t> vsCode[4];
-  ComPtr<d3dl::VertexShader> vs[4];
-  ComPtr<d3dl::InputLayout> layout[4];
-  std::vector<uint32_t> psCode[8];
-  bool psWanted[8] = {};
-  ComPtr<d3dl::PixelShader> ps[8];
-  ComPtr<d3dl::Buffer> objectCB, litCB, unlitCB;
-  ComPtr<d3dl::SamplerState> samplerAniso, samplerBias;
-  ComPtr<d3dl::RasterizerState> rsBack, rsNone;
-  ComPtr<d3dl::DepthStencilState> dsOpaque, dsDecal;
-  ComPtr<d3dl::BlendState> bsDecal;
-
-  SceneStats stats;
-  std::map<const TextureData*, ComPtr<d3dl::ShaderResourceView>> srvs;
-  uint64_t gpuTextureBytes = 0;
-
-  void Warn(const std::string& w) {
-    warnings.push_back(w);
-    if (opts.verbose) std::printf("scene: warning: %s\n", w.c_str());
-  }
-  bool CreateShaders(std::string* error);
-  bool ReadEntries(const std::string& path, bool single, std::string* error);
-  bool LoadEntry(Entry& e, TextureCache& cache, std::string* error);
-  bool UploadMesh(const Entry& e, const MeshData& m, GpuMesh* g, std::string* error);
-  bool UploadMaterials(Entry& e, TextureCache& cache, std::string* error);
-  bool CreateConstantBuffers();
-  bool CreateStates();
-  void ListCamerasAndBounds();
-  CameraRef AutomaticCamera() const;
-  ComPtr<d3dl::ShaderResourceView> Upload(const std::shared_ptr<const TextureData>& t, std::string* error);
-  d3dl::PixelShader* Variant(int v);
-  bool VertexStage(int v, d3dl::VertexShader** shader, d3dl::InputLayout** il);
-  void DrawPass(d3dl::DeviceContext* ctx, const SceneRenderParams& p, bool decalPass, const glm::mat4& viewProj,
-                const glm::mat4& jitter, const glm::vec3& eye, const glm::vec4 planes[6]);
-};
+void SceneImpl::Warn(const std::string& w) {
+  warnings.push_back(w);
+  if (opts.verbose) std::printf("scene: warning: %s\n", w.c_str());
+}
 
 // ---------------------------------------------------------------------------
 static std::string VsFile(int i) { return "scene_vs_n" + std::to_string(i >> 1) + "_v" + std::to_string(i & 1); }
@@ -282,8 +179,10 @@ bool SceneImpl::UploadMesh(const Entry& e, const MeshData& m, GpuMesh* g, std::s
   stats.triangles += m.indices.size() / 3;
   g->indexCount = UINT(m.indices.size());
   g->material = m.material;
-  g->center = m.sphereCenter;
-  g->radius = m.sphereRadius;
+  g->boxCenter = (m.boundsMin + m.boundsMax) * 0.5f;
+  g->boxExtents = (m.boundsMax - m.boundsMin) * 0.5f;
+  g->sphereCenter = m.sphereCenter;
+  g->sphereRadius = m.sphereRadius;
   return true;
 }
 
@@ -333,7 +232,7 @@ bool SceneImpl::LoadEntry(Entry& e, TextureCache& cache, std::string* error) {
   if (!UploadMaterials(e, cache, error)) return false;
   // Draw items: every (node, mesh) pair.
   for (size_t n = 0; n < e.model.nodes.size(); ++n)
-    for (uint32_t m : e.model.nodes[n].meshes) e.items.push_back({int(n), int(m), glm::mat4(1.f), false});
+    for (uint32_t m : e.model.nodes[n].meshes) e.items.push_back({int(n), int(m)});
   e.model.Evaluate(0.0, &e.globals, e.desc.loopSeconds);
   return true;
 }
@@ -366,9 +265,10 @@ bool SceneImpl::CreateConstantBuffers() {
   cb.BindFlags = d3dl::BIND_CONSTANT_BUFFER;
   cb.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
   bool ok = SUCCEEDED(device->CreateBuffer(&cb, nullptr, objectCB.GetAddressOf()));
-  LightingConstants lit{{1.58f, 1.36f, 0.74f, 0.f}, {0.42f, 0.44f, 0.46f, 0.f}, {1.30f, 1.18f, 0.78f, 16.f},
-                        {0.89f, -0.45f, 0.089f, 0.f}};
-  LightingConstants unlit{{0.f, 0.f, 0.f, 0.f}, {1.f, 1.f, 1.f, 0.f}, {0.f, 0.f, 0.f, 16.f}, {0.89f, -0.45f, 0.089f, 0.f}};
+  // The original's RenderScene values; UNLIT keeps only the ambient term at 1.
+  const glm::vec4 light(0.89f, -0.45f, 0.089f, 16.f);
+  LightingConstants lit{{1.58f, 1.36f, 0.74f, 1.f}, {0.42f, 0.44f, 0.46f, 1.f}, {1.30f, 1.18f, 0.78f, 1.f}, light};
+  LightingConstants unlit{{0.f, 0.f, 0.f, 1.f}, {1.f, 1.f, 1.f, 1.f}, {0.f, 0.f, 0.f, 1.f}, light};
   cb.ByteWidth = sizeof(LightingConstants);
   cb.Usage = d3dl::USAGE_IMMUTABLE;
   cb.CPUAccessFlags = 0;
@@ -399,31 +299,32 @@ bool SceneImpl::CreateStates() {
   ok = ok && SUCCEEDED(device->CreateRasterizerState(&rd, rsNone.GetAddressOf()));
   d3dl::DEPTH_STENCIL_DESC dd;  // depth test LESS with writes
   ok = ok && SUCCEEDED(device->CreateDepthStencilState(&dd, dsOpaque.GetAddressOf()));
+  // Decals as the original: LESS_EQUAL (co-planar decals pass) without depth writes;
+  // colour blended by source alpha, alpha written as the source's.
   dd.DepthWriteMask = d3dl::DEPTH_WRITE_MASK_ZERO;
+  dd.DepthFunc = d3dl::COMPARISON_LESS_EQUAL;
   ok = ok && SUCCEEDED(device->CreateDepthStencilState(&dd, dsDecal.GetAddressOf()));
   d3dl::BLEND_DESC bd;
   bd.IndependentBlendEnable = 1;
   bd.RenderTarget[0].BlendEnable = 1;
   bd.RenderTarget[0].SrcBlend = d3dl::BLEND_SRC_ALPHA;
   bd.RenderTarget[0].DestBlend = d3dl::BLEND_INV_SRC_ALPHA;
-  bd.RenderTarget[0].SrcBlendAlpha = d3dl::BLEND_ZERO;
-  bd.RenderTarget[0].DestBlendAlpha = d3dl::BLEND_ONE;
+  bd.RenderTarget[0].SrcBlendAlpha = d3dl::BLEND_ONE;
+  bd.RenderTarget[0].DestBlendAlpha = d3dl::BLEND_ZERO;
   bd.RenderTarget[1].RenderTargetWriteMask = 0;  // decals keep the surface's velocity
   ok = ok && SUCCEEDED(device->CreateBlendState(&bd, bsDecal.GetAddressOf()));
   return ok;
 }
 
-// CAMERA entries' cameras (each camera of the file, or the model's root), and
+// CAMERA entries' cameras (the file's first camera, or its last node with a mesh), and
 // the world bounds of the entries that are drawn (the sky dome does not frame anything).
 void SceneImpl::ListCamerasAndBounds() {
   glm::vec3 mn(1e30f), mx(-1e30f);
   for (size_t i = 0; i < entries.size(); ++i) {
     Entry& e = entries[i];
     if (e.desc.type == EntryType::Camera) {
-      if (e.model.cameras.empty())
-        cameras.push_back({e.desc.name, int(i), -1, {}});
-      for (size_t c = 0; c < e.model.cameras.size(); ++c)
-        cameras.push_back({e.model.cameras[c].name.empty() ? e.desc.name : e.model.cameras[c].name, int(i), int(c), {}});
+      // One camera per CAMERA entry, named after its file as the original's list.
+      cameras.push_back({e.desc.name, int(i), e.model.cameras.empty() ? -1 : 0, {}});
     } else if (e.desc.type != EntryType::Unlit) {
       glm::vec3 a, b;
       e.model.Bounds(&a, &b);
@@ -438,6 +339,25 @@ void SceneImpl::ListCamerasAndBounds() {
   if (mn.x > mx.x) mn = mx = glm::vec3(0.f);
   boundsMin = mn;
   boundsMax = mx;
+}
+
+// The original's scene centre: the mean of every drawn mesh's bounding-box
+// centre (cameras, sky and decals included) at animation time 0. The original
+// moves the scene there; the port keeps its coordinates and starts the
+// first-person camera there instead, which frames the same view.
+void SceneImpl::ComputeOriginalCentre() {
+  glm::vec3 sum(0.f);
+  int count = 0;
+  for (Entry& e : entries) {
+    std::vector<glm::mat4> atZero;
+    e.model.Evaluate(0.0, &atZero, e.desc.loopSeconds);
+    for (const DrawItem& it : e.items) {
+      const GpuMesh& m = e.meshes[it.mesh];
+      sum += glm::vec3(e.transform * atZero[it.node] * glm::vec4(m.boxCenter, 1.f));
+      ++count;
+    }
+  }
+  originalCentre = count ? sum / float(count) : glm::vec3(0.f);
 }
 
 // A camera that frames the scene's bounds from above and to the side.
@@ -489,10 +409,10 @@ std::unique_ptr<Scene> Scene::Load(d3dl::Device* device, const std::string& path
   if (single) {
     // Files' own cameras are listed after an automatic camera that frames the model.
     for (size_t c = 0; c < s.entries[0].model.cameras.size(); ++c)
-      s.cameras.push_back({s.entries[0].model.cameras[c].name, 0, int(c), {}});
+      s.cameras.push_back({s.entries[0].model.cameras[c].name, 0, int(c), {}, true});
   }
-  if (single || s.cameras.empty()) s.cameras.insert(s.cameras.begin(), s.AutomaticCamera());
-  s.defaultCamera = (!single && s.cameras.size() > 1) ? 1 : 0;
+  if (single) s.cameras.insert(s.cameras.begin(), s.AutomaticCamera());
+  s.ComputeOriginalCentre();
   if (opts.verbose) std::printf("scene: %s: %s\n", path.c_str(), s.stats.ToString().c_str());
   scene->Update(0.0);
   return scene;
@@ -507,7 +427,7 @@ const std::string& Scene::CameraName(int i) const {
   static const std::string none;
   return i >= 0 && i < CameraCount() ? impl_->cameras[i].name : none;
 }
-int Scene::DefaultCamera() const { return impl_->defaultCamera; }
+glm::vec3 Scene::OriginalCentre() const { return impl_->originalCentre; }
 const std::vector<std::string>& Scene::Warnings() const { return impl_->warnings; }
 glm::vec3 Scene::BoundsMin() const { return impl_->boundsMin; }
 glm::vec3 Scene::BoundsMax() const { return impl_->boundsMax; }
@@ -528,9 +448,16 @@ CameraPose Scene::Camera(int i) const {
     p = cd.position;
     look = cd.lookAt;
     up = cd.up;
-    if (cd.fovY > glm::radians(1.f) && cd.fovY < glm::radians(170.f)) pose.fovY = cd.fovY;
-  } else if (!e.globals.empty()) {
-    w = w * e.globals[0];
+    // The original projects every camera with its own 45 degrees; a single
+    // model's own cameras (the port's addition) keep their field of view.
+    if (c.fileFov && cd.fovY > glm::radians(1.f) && cd.fovY < glm::radians(170.f)) pose.fovY = cd.fovY;
+  } else {
+    // The original views from its camera model's last node with a mesh.
+    for (size_t n = e.model.nodes.size(); n-- > 0;)
+      if (!e.model.nodes[n].meshes.empty() && n < e.globals.size()) {
+        w = w * e.globals[n];
+        break;
+      }
   }
   glm::vec3 wp = glm::vec3(w * glm::vec4(p, 1.f));
   glm::vec3 wf = glm::normalize(glm::vec3(w * glm::vec4(look, 0.f)));
@@ -546,94 +473,6 @@ SceneStats Scene::Stats() const {
   s.shaderVariantsUsed = 0;
   for (auto& p : impl_->ps) s.shaderVariantsUsed += p ? 1 : 0;
   return s;
-}
-
-// ---------------------------------------------------------------------------
-void SceneImpl::DrawPass(d3dl::DeviceContext* ctx, const SceneRenderParams& p, bool decalPass, const glm::mat4& viewProj,
-                         const glm::mat4& jitter, const glm::vec3& eye, const glm::vec4 planes[6]) {
-  for (auto& e : entries) {
-    if (e.desc.hidden) continue;
-    const bool camera = e.desc.type == EntryType::Camera;
-    if (camera && !p.showCameras) continue;
-    d3dl::Buffer* light = e.desc.type == EntryType::Unlit ? unlitCB.Get() : litCB.Get();
-    ctx->PSSetConstantBuffers(1, 1, &light);
-    for (auto& it : e.items) {
-      const GpuMesh& m = e.meshes[it.mesh];
-      const GpuMaterial& mat = e.materials[m.material < e.materials.size() ? m.material : 0];
-      if (mat.blend != decalPass) continue;
-      const glm::mat4 world = e.transform * e.globals[it.node];
-      const glm::mat4 wvp = viewProj * world;
-      const glm::mat4 prev = (p.resetHistory || !it.hasPrev) ? wvp : it.prevWVP;
-      it.prevWVP = wvp;
-      it.hasPrev = true;
-      // Culling as in the original: sphere behind the eye, or projected sphere off screen.
-      glm::vec3 c = glm::vec3(world * glm::vec4(m.center, 1.f));
-      float r = m.radius * MaxScale(world);
-      bool culled = false;
-      for (int k = 0; k < 6 && !culled; ++k) culled = glm::dot(glm::vec3(planes[k]), c) + planes[k].w < -r;
-      if (culled) {
-        ++stats.drawsCulled;
-        continue;
-      }
-      const int variant = VariantIndex(mat.hasNormal, mat.hasSpecular, p.writeVelocity);
-      d3dl::PixelShader* shader = Variant(variant);
-      d3dl::VertexShader* vshader = nullptr;
-      d3dl::InputLayout* il = nullptr;
-      if (!shader || !VertexStage(variant, &vshader, &il)) continue;
-      d3dl::MAPPED_SUBRESOURCE map;
-      if (FAILED(ctx->Map(objectCB.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &map))) continue;
-      ObjectConstants oc{jitter * wvp, jitter * prev, world, mat.tint, glm::vec4(eye, 1.f)};
-      std::memcpy(map.pData, &oc, sizeof oc);
-      ctx->Unmap(objectCB.Get(), 0);
-      ctx->IASetInputLayout(il);
-      ctx->VSSetShader(vshader);
-      ctx->PSSetShader(shader);
-      d3dl::ShaderResourceView* views[3] = {mat.diffuse.Get(), mat.normal.Get(), mat.specular.Get()};
-      ctx->PSSetShaderResources(0, 3, views);
-      ctx->RSSetState(mat.twoSided ? rsNone.Get() : rsBack.Get());
-      d3dl::Buffer* vb = m.vb.Get();
-      UINT stride = sizeof(SceneVertex), offset = 0;
-      ctx->IASetVertexBuffers(0, 1, &vb, &stride, &offset);
-      ctx->IASetIndexBuffer(m.ib.Get(), m.indexFormat, 0);
-      ctx->DrawIndexed(m.indexCount, 0, 0);
-      ++stats.drawsIssued;
-    }
-  }
-}
-
-void Scene::Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p) {
-  SceneImpl& s = *impl_;
-  s.stats.drawsIssued = s.stats.drawsCulled = 0;
-  if (!ctx) return;
-  const glm::mat4 viewProj = p.proj * p.view;
-  const glm::mat4 jitter = glm::translate(glm::mat4(1.f), glm::vec3(p.jitterNdc, 0.f));
-  const glm::vec3 eye = glm::vec3(glm::inverse(p.view)[3]);
-  // Frustum planes (world space) of the un-jittered view-projection: left, right, bottom, top, near (0..1 depth), far.
-  glm::mat4 t = glm::transpose(viewProj);
-  glm::vec4 planes[6] = {t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[2], t[3] - t[2]};
-  for (auto& pl : planes) {
-    float l = glm::length(glm::vec3(pl));
-    if (l > 0 && std::isfinite(l)) pl /= l;
-  }
-  ctx->BeginEvent("Scene");
-  ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLELIST);
-  d3dl::Buffer* cb = s.objectCB.Get();
-  ctx->VSSetConstantBuffers(0, 1, &cb);
-  ctx->PSSetConstantBuffers(0, 1, &cb);
-  d3dl::SamplerState* smp = p.mipBiasSampler ? s.samplerBias.Get() : s.samplerAniso.Get();
-  ctx->PSSetSamplers(0, 1, &smp);
-  ctx->OMSetDepthStencilState(s.dsOpaque.Get(), 0);
-  ctx->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
-  s.DrawPass(ctx, p, false, viewProj, jitter, eye, planes);
-  ctx->OMSetDepthStencilState(s.dsDecal.Get(), 0);
-  ctx->OMSetBlendState(s.bsDecal.Get(), nullptr, 0xffffffffu);
-  s.DrawPass(ctx, p, true, viewProj, jitter, eye, planes);
-  ctx->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
-  ctx->OMSetDepthStencilState(nullptr, 0);
-  ctx->RSSetState(nullptr);
-  d3dl::ShaderResourceView* none[3] = {};
-  ctx->PSSetShaderResources(0, 3, none);
-  ctx->EndEvent();
 }
 
 bool Scene::ReloadShaders(const ShaderLibrary& shaders, bool fromSource, std::string* error) {

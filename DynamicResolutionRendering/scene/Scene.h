@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,8 +43,18 @@ struct SceneRenderParams {
   glm::vec2 jitterNdc{0.f};     // added to NDC x,y: clip = T(jitter) * proj * view * world, on current AND previous WVP
   bool mipBiasSampler = false;  // TAA on: sampler with MipLODBias = -0.5 instead of the anisotropic x16 wrap sampler
   bool writeVelocity = true;    // RT1 (R16G16_FLOAT) is bound; false = shader variant without the velocity output
-  bool resetHistory = false;    // camera cut / first frame: previous WVP := current WVP
+  // The original's matrix history (three slots per draw). resetHistory: the
+  // original's resize, the previous matrices become this frame's. paused: the
+  // original's OnFramePaused, nothing moves and `target` (the TAA ping-pong
+  // index) is redrawn with the matrices it was last drawn with.
+  bool resetHistory = false;
+  bool paused = false;
+  int target = 0;
   bool showCameras = false;     // draw CAMERA entries' models
+  // Eye of the specular term; none: the view's. The sample passes the
+  // original's first-person eye (Cameras::ShadingEye).
+  std::optional<glm::vec3> shadingEye;
+  bool frustumCulling = false;  // fix frustum-cull; the original culls only meshes behind the eye
 };
 
 struct SceneStats {
@@ -65,10 +76,15 @@ class Scene {
   Scene& operator=(const Scene&) = delete;
 
   void Update(double timeSeconds);  // animation (bell, cinematic camera path), loops
+  // The scene's cameras: a description's CAMERA entries in file order (a single
+  // model file: an automatic camera, then the file's own). The sample lists
+  // them after "First Person" (Cameras.h).
   int CameraCount() const;
   const std::string& CameraName(int i) const;
   CameraPose Camera(int i) const;
-  int DefaultCamera() const;  // 1 as in the original (0 = cinematic, 1 and 2 = static)
+  // The original's scene centre (mean of the meshes' box centres at time 0),
+  // where its first-person camera starts.
+  glm::vec3 OriginalCentre() const;
   // Caller has set RTVs, DSV and viewport; Render sets everything else it needs.
   void Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p);
   SceneStats Stats() const;

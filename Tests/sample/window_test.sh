@@ -8,7 +8,7 @@ set -uo pipefail
 exe="$1"
 out="$2"
 mkdir -p "$out"
-common=(--width 320 --height 180 --time 1 --camera 1 --filter point --scale 0.71 --no-gui --validation)
+common=(--width 320 --height 180 --time 1 --camera 2 --filter point --scale 0.71 --no-gui --validation)
 screen_w=1280
 screen_h=720
 fail=0

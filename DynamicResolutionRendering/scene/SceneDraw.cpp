@@ -1,0 +1,179 @@
+// The scene's frame: the original's matrix ring (frame move, pause, resize
+// reset), its culling, and the draws in the description's order.
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "scene/SceneImpl.h"
+
+namespace drr {
+using d3dl::FAILED;
+using d3dl::UINT;
+
+namespace {
+float MaxScale(const glm::mat4& m) {
+  return std::sqrt(std::max({glm::dot(glm::vec3(m[0]), glm::vec3(m[0])), glm::dot(glm::vec3(m[1]), glm::vec3(m[1])),
+                             glm::dot(glm::vec3(m[2]), glm::vec3(m[2]))}));
+}
+
+// World-space planes of a view-projection (left, right, bottom, top, near for 0..1 depth, far).
+void FrustumPlanes(const glm::mat4& viewProj, glm::vec4 planes[6]) {
+  const glm::mat4 t = glm::transpose(viewProj);
+  const glm::vec4 all[6] = {t[3] + t[0], t[3] - t[0], t[3] + t[1], t[3] - t[1], t[2], t[3] - t[2]};
+  for (int k = 0; k < 6; ++k) {
+    planes[k] = all[k];
+    const float l = glm::length(glm::vec3(planes[k]));
+    if (l > 0 && std::isfinite(l)) planes[k] /= l;
+  }
+}
+}  // namespace
+
+// The original's resize: the current and previous slots both get this pose.
+void SceneImpl::ResetHistory(const glm::mat4& view, const glm::mat4& viewProj) {
+  history.frameIndex = 0;
+  history.view = view;
+  history.started = true;
+  for (Entry& e : entries)
+    for (DrawItem& it : e.items) it.wvp[0] = it.wvp[1] = viewProj * e.transform * e.globals[it.node];
+}
+
+// The original's OnFrameMove: the next slot of the ring gets this frame's
+// matrices, and the TAA target remembers which slot it was drawn with.
+void SceneImpl::FrameMove(const glm::mat4& view, const glm::mat4& viewProj, int target) {
+  history.previous = history.frameIndex;
+  history.frameIndex = (history.frameIndex + 1) % 3;
+  history.current = history.frameIndex;
+  history.track[target & 1] = history.current;
+  history.view = view;
+  for (Entry& e : entries)
+    for (DrawItem& it : e.items) it.wvp[history.current] = viewProj * e.transform * e.globals[it.node];
+}
+
+// The original's OnFramePaused: nothing moves; the target is redrawn with the
+// matrices it was last drawn with and the slot before them, so its velocity
+// (and the motion blur) stays that of the frame before the pause.
+void SceneImpl::FramePaused(int target) {
+  history.current = history.track[target & 1];
+  history.previous = (history.current + 2) % 3;
+}
+
+// The original culls only meshes whose box centre is behind the eye: wholly
+// behind (box radius), or projected off the screen. With the frustum-cull fix,
+// bounding spheres against the six frustum planes instead.
+bool SceneImpl::Culled(const Entry& e, const DrawItem& it, const glm::mat4& world, const glm::vec4 planes[6],
+                       bool frustum) const {
+  const GpuMesh& m = e.meshes[it.mesh];
+  if (frustum) {
+    const glm::vec3 c = glm::vec3(world * glm::vec4(m.sphereCenter, 1.f));
+    const float r = m.sphereRadius * MaxScale(world);
+    for (int k = 0; k < 6; ++k)
+      if (glm::dot(glm::vec3(planes[k]), c) + planes[k].w < -r) return true;
+    return false;
+  }
+  const float depth = -(history.view * world * glm::vec4(m.boxCenter, 1.f)).z;  // right-handed view: -z ahead
+  if (depth >= 0.f) return false;
+  const float radius = glm::length(glm::mat3(world) * m.boxExtents);
+  if (radius + depth < 0.f) return true;
+  const glm::mat4& wvp = it.wvp[history.current];
+  const glm::vec4 clip = wvp * glm::vec4(m.boxCenter, 1.f);
+  const glm::vec3 ndc = glm::vec3(clip) / clip.w;
+  const float r = glm::length(glm::mat3(wvp) * m.boxExtents);  // the original's clip-space radius
+  return ndc.x + r < -1.f || ndc.y + r < -1.f || ndc.x - r > 1.f || ndc.y - r > 1.f;
+}
+
+void SceneImpl::DrawItemNow(d3dl::DeviceContext* ctx, const SceneRenderParams& p, const Entry& e, const DrawItem& it,
+                            const glm::mat4& world, const glm::mat4& jitter, const glm::vec3& eye) {
+  const GpuMesh& m = e.meshes[it.mesh];
+  const GpuMaterial& mat = e.materials[m.material < e.materials.size() ? m.material : 0];
+  const int variant = VariantIndex(mat.hasNormal, mat.hasSpecular, p.writeVelocity);
+  d3dl::PixelShader* shader = Variant(variant);
+  d3dl::VertexShader* vshader = nullptr;
+  d3dl::InputLayout* il = nullptr;
+  if (!shader || !VertexStage(variant, &vshader, &il)) return;
+  d3dl::MAPPED_SUBRESOURCE map;
+  if (FAILED(ctx->Map(objectCB.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &map))) return;
+  // Both matrices jittered alike, so the jitter never shows as velocity.
+  const ObjectConstants oc{jitter * it.wvp[history.current], jitter * it.wvp[history.previous], world, mat.tint,
+                           glm::vec4(eye, 1.f)};
+  std::memcpy(map.pData, &oc, sizeof oc);
+  ctx->Unmap(objectCB.Get(), 0);
+  ctx->IASetInputLayout(il);
+  ctx->VSSetShader(vshader);
+  ctx->PSSetShader(shader);
+  d3dl::ShaderResourceView* views[3] = {mat.diffuse.Get(), mat.normal.Get(), mat.specular.Get()};
+  ctx->PSSetShaderResources(0, 3, views);
+  ctx->RSSetState(mat.twoSided ? rsNone.Get() : rsBack.Get());
+  d3dl::Buffer* vb = m.vb.Get();
+  UINT stride = sizeof(SceneVertex), offset = 0;
+  ctx->IASetVertexBuffers(0, 1, &vb, &stride, &offset);
+  ctx->IASetIndexBuffer(m.ib.Get(), m.indexFormat, 0);
+  ctx->DrawIndexed(m.indexCount, 0, 0);
+  ++stats.drawsIssued;
+}
+
+// One entry's draws. A DECAL entry draws all its meshes (blended, in the
+// description's order, as the original); other entries draw their opaque
+// meshes, or with blendedOnly the alpha-blended materials of model formats the
+// original never loaded, after everything else.
+void SceneImpl::DrawEntry(d3dl::DeviceContext* ctx, const SceneRenderParams& p, Entry& e, bool blendedOnly,
+                          const glm::mat4& jitter, const glm::vec3& eye, const glm::vec4 planes[6]) {
+  const bool decalEntry = e.desc.type == EntryType::Decal;
+  if (e.desc.hidden || (blendedOnly && decalEntry)) return;
+  if (e.desc.type == EntryType::Camera && !p.showCameras) return;
+  d3dl::Buffer* light = e.desc.type == EntryType::Unlit ? unlitCB.Get() : litCB.Get();
+  ctx->PSSetConstantBuffers(1, 1, &light);
+  for (const DrawItem& it : e.items) {
+    const GpuMesh& m = e.meshes[it.mesh];
+    const GpuMaterial& mat = e.materials[m.material < e.materials.size() ? m.material : 0];
+    if (!decalEntry && mat.blend != blendedOnly) continue;
+    const glm::mat4 world = e.transform * e.globals[it.node];
+    if (Culled(e, it, world, planes, p.frustumCulling)) {
+      ++stats.drawsCulled;
+      continue;
+    }
+    DrawItemNow(ctx, p, e, it, world, jitter, eye);
+  }
+}
+
+void Scene::Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p) {
+  SceneImpl& s = *impl_;
+  s.stats.drawsIssued = s.stats.drawsCulled = 0;
+  if (!ctx) return;
+  const glm::mat4 viewProj = p.proj * p.view;
+  if (p.paused && s.history.started) {
+    s.FramePaused(p.target);
+  } else {
+    if (p.resetHistory || !s.history.started) s.ResetHistory(p.view, viewProj);
+    s.FrameMove(p.view, viewProj, p.target);
+  }
+  const glm::mat4 jitter = glm::translate(glm::mat4(1.f), glm::vec3(p.jitterNdc, 0.f));
+  const glm::vec3 eye = p.shadingEye ? *p.shadingEye : glm::vec3(glm::inverse(s.history.view)[3]);
+  glm::vec4 planes[6];
+  FrustumPlanes(p.proj * s.history.view, planes);
+  ctx->BeginEvent("Scene");
+  ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+  d3dl::Buffer* cb = s.objectCB.Get();
+  ctx->VSSetConstantBuffers(0, 1, &cb);
+  ctx->PSSetConstantBuffers(0, 1, &cb);
+  d3dl::SamplerState* smp = p.mipBiasSampler ? s.samplerBias.Get() : s.samplerAniso.Get();
+  ctx->PSSetSamplers(0, 1, &smp);
+  for (Entry& e : s.entries) {
+    const bool decal = e.desc.type == EntryType::Decal;
+    ctx->OMSetDepthStencilState(decal ? s.dsDecal.Get() : s.dsOpaque.Get(), 0);
+    ctx->OMSetBlendState(decal ? s.bsDecal.Get() : nullptr, nullptr, 0xffffffffu);
+    s.DrawEntry(ctx, p, e, false, jitter, eye, planes);
+  }
+  ctx->OMSetDepthStencilState(s.dsDecal.Get(), 0);
+  ctx->OMSetBlendState(s.bsDecal.Get(), nullptr, 0xffffffffu);
+  for (Entry& e : s.entries) s.DrawEntry(ctx, p, e, true, jitter, eye, planes);
+  ctx->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
+  ctx->OMSetDepthStencilState(nullptr, 0);
+  ctx->RSSetState(nullptr);
+  d3dl::ShaderResourceView* none[3] = {};
+  ctx->PSSetShaderResources(0, 3, none);
+  ctx->EndEvent();
+}
+
+}  // namespace drr

@@ -1,0 +1,149 @@
+// Private to the scene renderer: the loaded entries, their GPU meshes and
+// materials, the per-draw matrix history and the renderer's states. Scene.cpp
+// loads and lists cameras; SceneDraw.cpp moves frames, culls and draws.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "d3dl/D3DLike.h"
+#include "scene/ModelLoader.h"
+#include "scene/Scene.h"
+#include "scene/SceneDescription.h"
+
+namespace drr {
+
+using d3dl::ComPtr;
+
+// Per-object constants (b0, VS and PS).
+struct ObjectConstants {
+  glm::mat4 worldViewProj;
+  glm::mat4 prevWorldViewProj;
+  glm::mat4 world;
+  glm::vec4 diffuseTint;
+  glm::vec4 eyePosition;
+};
+static_assert(sizeof(ObjectConstants) == 224);
+
+// Per-type constants (b1, PS): the original's colours with alpha 1, and the
+// light direction with the specular power in w.
+struct LightingConstants {
+  glm::vec4 diffuse, ambient, specular, directionAndPower;
+};
+
+inline int VariantIndex(bool normal, bool specular, bool velocity) {
+  return (normal ? 4 : 0) | (specular ? 2 : 0) | (velocity ? 1 : 0);
+}
+
+struct GpuMesh {
+  ComPtr<d3dl::Buffer> vb, ib;
+  d3dl::DXGI_FORMAT indexFormat = d3dl::DXGI_FORMAT_R32_UINT;
+  uint32_t indexCount = 0;
+  uint32_t material = 0;
+  glm::vec3 boxCenter{0.f}, boxExtents{0.f};  // the original culls with the bounding box
+  glm::vec3 sphereCenter{0.f};                // the frustum-cull fix with the sphere
+  float sphereRadius = 0.f;
+};
+
+struct GpuMaterial {
+  ComPtr<d3dl::ShaderResourceView> diffuse, normal, specular;
+  bool hasNormal = false, hasSpecular = false, blend = false, twoSided = false;
+  glm::vec4 tint{1.f};
+};
+
+// The original keeps three world-view-projection matrices per draw: the
+// current frame's, the previous frame's, and the one before, so that a paused
+// TAA target can be redrawn with the matrices it was last drawn with.
+struct DrawItem {
+  int node = 0;
+  int mesh = 0;
+  glm::mat4 wvp[3] = {glm::mat4(1.f), glm::mat4(1.f), glm::mat4(1.f)};  // un-jittered
+};
+
+struct Entry {
+  SceneEntry desc;
+  ModelData model;
+  glm::mat4 transform{1.f};
+  std::vector<GpuMesh> meshes;
+  std::vector<GpuMaterial> materials;
+  std::vector<glm::mat4> globals;
+  std::vector<DrawItem> items;
+};
+
+struct CameraRef {
+  std::string name;
+  int entry = -1;    // -1: automatic camera (fixed pose)
+  int camera = -1;   // index into the entry model's cameras, -1 = its last node with a mesh
+  CameraPose fixed;  // automatic camera
+  bool fileFov = false;  // a single model's own camera: its field of view
+};
+
+// The matrix ring of the original's Scene (m_CurrentFrameIndex, m_TrackIndex).
+struct MatrixHistory {
+  int current = 0, previous = 0;  // slots of DrawItem::wvp used by this frame's draws
+  int frameIndex = 0;             // slot written by the last frame move
+  int track[2] = {0, 0};          // slot last written for each TAA target
+  bool started = false;           // a frame move has filled the slots
+  glm::mat4 view{1.f};            // the view of the last frame move (culling)
+};
+
+struct SceneImpl {
+  ComPtr<d3dl::Device> device;
+  SceneLoadOptions opts;
+  ShaderLibrary shaders;
+  std::vector<Entry> entries;
+  std::vector<CameraRef> cameras;
+  std::vector<std::string> warnings;
+  glm::vec3 boundsMin{0.f}, boundsMax{0.f};
+  glm::vec3 originalCentre{0.f};
+  MatrixHistory history;
+
+  // Vertex shader variants by (NORMAL_MAP, WRITE_VELOCITY): index n*2+v.
+  std::vector<uint32_t> vsCode[4];
+  ComPtr<d3dl::VertexShader> vs[4];
+  ComPtr<d3dl::InputLayout> layout[4];
+  std::vector<uint32_t> psCode[8];
+  bool psWanted[8] = {};
+  ComPtr<d3dl::PixelShader> ps[8];
+  ComPtr<d3dl::Buffer> objectCB, litCB, unlitCB;
+  ComPtr<d3dl::SamplerState> samplerAniso, samplerBias;
+  ComPtr<d3dl::RasterizerState> rsBack, rsNone;
+  ComPtr<d3dl::DepthStencilState> dsOpaque, dsDecal;
+  ComPtr<d3dl::BlendState> bsDecal;
+
+  SceneStats stats;
+  std::map<const TextureData*, ComPtr<d3dl::ShaderResourceView>> srvs;
+  uint64_t gpuTextureBytes = 0;
+
+  void Warn(const std::string& w);
+  bool CreateShaders(std::string* error);
+  bool ReadEntries(const std::string& path, bool single, std::string* error);
+  bool LoadEntry(Entry& e, TextureCache& cache, std::string* error);
+  bool UploadMesh(const Entry& e, const MeshData& m, GpuMesh* g, std::string* error);
+  bool UploadMaterials(Entry& e, TextureCache& cache, std::string* error);
+  bool CreateConstantBuffers();
+  bool CreateStates();
+  void ListCamerasAndBounds();
+  void ComputeOriginalCentre();
+  CameraRef AutomaticCamera() const;
+  ComPtr<d3dl::ShaderResourceView> Upload(const std::shared_ptr<const TextureData>& t, std::string* error);
+  d3dl::PixelShader* Variant(int v);
+  bool VertexStage(int v, d3dl::VertexShader** shader, d3dl::InputLayout** il);
+
+  // SceneDraw.cpp
+  void ResetHistory(const glm::mat4& view, const glm::mat4& viewProj);
+  void FrameMove(const glm::mat4& view, const glm::mat4& viewProj, int target);
+  void FramePaused(int target);
+  bool Culled(const Entry& e, const DrawItem& it, const glm::mat4& world, const glm::vec4 planes[6],
+              bool frustum) const;
+  void DrawEntry(d3dl::DeviceContext* ctx, const SceneRenderParams& p, Entry& e, bool blendedOnly,
+                 const glm::mat4& jitter, const glm::vec3& eye, const glm::vec4 planes[6]);
+  void DrawItemNow(d3dl::DeviceContext* ctx, const SceneRenderParams& p, const Entry& e, const DrawItem& it,
+                   const glm::mat4& world, const glm::mat4& jitter, const glm::vec3& eye);
+};
+
+}  // namespace drr

@@ -1,0 +1,245 @@
+// The sample's scene, cameras and frame against the original (in process,
+// under validation): the default camera is the moving cinematic one, a pause
+// keeps the last frame's velocity, and each fix of this area changes what it
+// says and nothing else.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+#include "DynamicResolutionRendering.h"
+
+using namespace drr;
+
+namespace {
+
+Options SmallOptions() {
+  Options o;
+  o.headless = true;
+  o.width = 160;
+  o.height = 90;
+  o.control = ControlMode::Manual;
+  o.gui = false;
+  o.time = 3.0;
+  return o;
+}
+
+// Renders n frames and returns the last one's back buffer.
+Image Frames(Sample& s, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (i == n - 1) s.RequestCapture();
+    EXPECT_TRUE(s.RenderFrame());
+  }
+  return s.CapturedBackBuffer();
+}
+
+// Pixels whose colour differs, and the largest channel difference.
+struct Diff {
+  uint64_t differing = 0;
+  int maxAbs = 0;
+};
+Diff Compare(const Image& a, const Image& b) {
+  Diff d;
+  EXPECT_EQ(a.width, b.width);
+  EXPECT_EQ(a.height, b.height);
+  if (a.pixels.size() != b.pixels.size()) return {~0ull, 256};
+  for (size_t p = 0; p < a.pixels.size() / 4; ++p) {
+    int m = 0;
+    for (int c = 0; c < 3; ++c) m = std::max(m, std::abs(int(a.pixels[p * 4 + c]) - int(b.pixels[p * 4 + c])));
+    d.differing += m > 0;
+    d.maxAbs = std::max(d.maxAbs, m);
+  }
+  return d;
+}
+
+// Largest |velocity| (UV units) of a captured velocity target.
+float MaxVelocity(const Image& v) {
+  float m = 0.f;
+  for (uint32_t y = 0; y < v.height; ++y)
+    for (uint32_t x = 0; x < v.width; ++x) m = std::max({m, std::fabs(v.Float(x, y, 0)), std::fabs(v.Float(x, y, 1))});
+  return m;
+}
+
+class SceneFrame : public ::testing::Test {
+ protected:
+  void Start(Sample& s, const Options& o) {
+    std::string err;
+    ASSERT_EQ(s.Init(o, &err), 0) << err;
+  }
+  void Finish(Sample& s) {
+    EXPECT_EQ(s.ValidationMessages(), 0u) << "validation messages were reported";
+    s.Shutdown();
+  }
+};
+
+}  // namespace
+
+// The original's camera list: 0 First Person, 1.. the CAMERA entries in file
+// order; its default, 1, is the Arena's animated cinematic camera.
+TEST_F(SceneFrame, DefaultCameraIsTheMovingCinematicCamera) {
+  Sample s;
+  Start(s, SmallOptions());
+  EXPECT_EQ(s.GetCameras().Current(), 1);
+  EXPECT_EQ(s.GetCameras().Name(0), "First Person");
+  EXPECT_EQ(s.GetCameras().Name(1), "camera_cinematic");
+  EXPECT_EQ(s.GetCameras().Count(), 4);
+  const Image at3 = Frames(s, 2);
+  Options o = s.Settings();
+  o.time = 10.0;
+  s.ApplySettings(o);
+  const Image at10 = Frames(s, 2);
+  const Diff d = Compare(at3, at10);
+  std::printf("[camera] default camera, t=3 vs t=10: %llu of %u px differ\n", (unsigned long long)d.differing,
+              at3.width * at3.height);
+  EXPECT_GT(d.differing, uint64_t(at3.width) * at3.height / 2) << "the default camera must move over time";
+  Finish(s);
+}
+
+// frustum-cull: fewer draws, the same pixels (culling is conservative).
+TEST_F(SceneFrame, FrustumCullFixDrawsLessAndChangesNoPixel) {
+  for (int camera : {1, 2}) {
+    Options o = SmallOptions();
+    o.camera = camera;
+    Sample s;
+    Start(s, o);
+    const Image original = Frames(s, 2);
+    const SceneStats before = s.GetScene()->Stats();
+    o.fixes.Set(Fix::FrustumCull, true);
+    s.ApplySettings(o);
+    const Image fixed = Frames(s, 2);
+    const SceneStats after = s.GetScene()->Stats();
+    std::printf("[frustum-cull] camera %d: draws %u (culled %u) -> %u (culled %u)\n", camera, before.drawsIssued,
+                before.drawsCulled, after.drawsIssued, after.drawsCulled);
+    if (camera == 1) EXPECT_LT(after.drawsIssued, before.drawsIssued);  // t=3: meshes beside the view
+    EXPECT_LE(after.drawsIssued, before.drawsIssued);
+    EXPECT_EQ(after.drawsIssued + after.drawsCulled, before.drawsIssued + before.drawsCulled);
+    EXPECT_EQ(Compare(original, fixed).differing, 0u);
+    Finish(s);
+  }
+}
+
+// camera-eye: specular lighting moves with the viewing camera; from the
+// first-person camera (whose eye the original uses anyway) nothing changes.
+TEST_F(SceneFrame, CameraEyeFixChangesSpecularOfSceneCamerasOnly) {
+  for (int camera : {0, 2}) {
+    Options o = SmallOptions();
+    o.camera = camera;
+    Sample s;
+    Start(s, o);
+    const Image original = Frames(s, 2);
+    o.fixes.Set(Fix::CameraEye, true);
+    s.ApplySettings(o);
+    const Diff d = Compare(original, Frames(s, 2));
+    std::printf("[camera-eye] camera %d: %llu px differ (max %d)\n", camera, (unsigned long long)d.differing, d.maxAbs);
+    if (camera == 0) EXPECT_EQ(d.differing, 0u);
+    else EXPECT_GT(d.differing, 0u);
+    Finish(s);
+  }
+}
+
+// camera-cut: the original's first frame after a camera change has the
+// velocity of the jump between the cameras; the fix starts from zero. The
+// frame after is the same either way.
+TEST_F(SceneFrame, CameraCutFixRestartsVelocityForOneFrame) {
+  Image afterCut[2];
+  for (bool fix : {false, true}) {
+    Options o = SmallOptions();
+    o.camera = 2;
+    o.motionBlur = true;          // the velocity target is captured
+    o.filter = Filter::Bilinear;  // no TAA history: the frame after the cut depends on that frame only
+    o.fixes.Set(Fix::CameraCut, fix);
+    Sample s;
+    Start(s, o);
+    Frames(s, 3);
+    o.camera = 3;
+    s.ApplySettings(o);
+    Frames(s, 1);
+    const float cutVelocity = MaxVelocity(s.CapturedVelocity());
+    afterCut[fix] = Frames(s, 1);
+    const float nextVelocity = MaxVelocity(s.CapturedVelocity());
+    std::printf("[camera-cut] fix %d: largest velocity on the cut %.4f, next frame %.4f\n", int(fix), cutVelocity,
+                nextVelocity);
+    if (fix) EXPECT_EQ(cutVelocity, 0.f);
+    else EXPECT_GT(cutVelocity, 0.05f);
+    EXPECT_EQ(nextVelocity, 0.f);  // time is fixed: nothing moves
+    Finish(s);
+  }
+  EXPECT_EQ(Compare(afterCut[0], afterCut[1]).differing, 0u);
+}
+
+// taa-flip: with dynamic resolution off the original still flips its targets
+// for TAA Basic, so a paused scene alternates between its last two frames; the
+// fix holds it. With dynamic resolution on the fix changes nothing.
+TEST_F(SceneFrame, TaaFlipFixStopsThePausedFlickerWithDynamicResolutionOff) {
+  Image last[2][2];  // [dynamic][fix]
+  for (bool dynamic : {false, true})
+    for (bool fix : {false, true}) {
+      Options o = SmallOptions();
+      o.time = 2.0;
+      o.fixedDt = 1.0 / 15.0;  // the cinematic camera moves until paused
+      o.filter = Filter::TAABasic;
+      o.dynamicResolution = dynamic;
+      o.fixes.Set(Fix::TaaFlip, fix);
+      Sample s;
+      Start(s, o);
+      Frames(s, 4);
+      o.pause = true;
+      s.ApplySettings(o);
+      const Image a = Frames(s, 2), b = Frames(s, 1);
+      last[dynamic][fix] = b;
+      const Diff d = Compare(a, b);
+      std::printf("[taa-flip] dynamic %d fix %d: consecutive paused frames differ in %llu px\n", int(dynamic),
+                  int(fix), (unsigned long long)d.differing);
+      if (!dynamic && !fix) EXPECT_GT(d.differing, 0u);
+      else EXPECT_EQ(d.differing, 0u);
+      Finish(s);
+    }
+  EXPECT_EQ(Compare(last[1][0], last[1][1]).differing, 0u);
+}
+
+// srgb-targets: the colour targets become sRGB (same size), the image changes
+// only by 8-bit quantisation.
+TEST_F(SceneFrame, SrgbTargetsFixChangesOnlyTheColourFormat) {
+  Image frame[2];
+  uint64_t bytes[2] = {};
+  for (bool fix : {false, true}) {
+    Options o = SmallOptions();
+    o.camera = 2;
+    o.fixes.Set(Fix::SrgbTargets, fix);
+    Sample s;
+    Start(s, o);
+    frame[fix] = Frames(s, 2);
+    EXPECT_EQ(s.CapturedSceneColor().format,
+              fix ? d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB : d3dl::DXGI_FORMAT_R8G8B8A8_UNORM);
+    bytes[fix] = s.RenderTargetBytes();
+    Finish(s);
+  }
+  const Diff d = Compare(frame[0], frame[1]);
+  std::printf("[srgb-targets] %llu px differ (max %d)\n", (unsigned long long)d.differing, d.maxAbs);
+  EXPECT_EQ(bytes[0], bytes[1]);
+  EXPECT_GT(d.differing, 0u);
+  EXPECT_LE(d.maxAbs, 16) << "only the quantisation of dark tones may differ";
+}
+
+// The original's pause: the matrices freeze with the frame before the pause,
+// so the velocity (and the motion blur) stays, and the image is still.
+TEST_F(SceneFrame, PauseFreezesTheFrameWithItsVelocity) {
+  Options o = SmallOptions();
+  o.fixedDt = 1.0 / 15.0;
+  o.motionBlur = true;
+  Sample s;
+  Start(s, o);
+  Frames(s, 3);
+  const float moving = MaxVelocity(s.CapturedVelocity());
+  o.pause = true;
+  s.ApplySettings(o);
+  const Image a = Frames(s, 1);
+  const float paused = MaxVelocity(s.CapturedVelocity());
+  const Image b = Frames(s, 1);
+  std::printf("[pause] largest velocity moving %.4f, paused %.4f\n", moving, paused);
+  EXPECT_GT(paused, 0.f);
+  EXPECT_NEAR(paused, moving, moving * 0.5f);
+  EXPECT_EQ(Compare(a, b).differing, 0u);
+  Finish(s);
+}
