@@ -155,18 +155,22 @@ class FixedFunctionBlit {
           d3dl::SUCCEEDED(device_->CreateQuery(&d, end_.GetAddressOf()));
   }
 
-  // Times `frames` blits of (0,0,vpW,vpH) of `scene` (the whole dynamic RT,
-  // sRGB bytes) to a bbW x bbH target; returns the times and the last image.
+  // Times `frames` blits of (0,0,vpW,vpH) of `scene` (the whole dynamic RT in
+  // its own format: UNORM holds linear values, UNORM_SRGB encoded ones) to a
+  // bbW x bbH sRGB target, as the scale pass writes the sRGB back buffer;
+  // returns the times and the last image.
   bool Run(const Image& scene, uint32_t vpW, uint32_t vpH, uint32_t bbW, uint32_t bbH, int frames,
            std::vector<double>* ms, Image* image, std::string* error) {
-    if (!ok_ || scene.Empty() || vpW == 0 || vpH == 0 || vpW > scene.width || vpH > scene.height) {
+    const bool rgba8 = scene.format == d3dl::DXGI_FORMAT_R8G8B8A8_UNORM ||
+                       scene.format == d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
+    if (!ok_ || scene.Empty() || !rgba8 || vpW == 0 || vpH == 0 || vpW > scene.width || vpH > scene.height) {
       *error = "fixed-function blit: no queries or no scene colour";
       return false;
     }
     d3dl::TEXTURE2D_DESC d;
     d.Width = scene.width;
     d.Height = scene.height;
-    d.Format = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
+    d.Format = scene.format;
     d.BindFlags = d3dl::BIND_SHADER_RESOURCE | d3dl::BIND_RENDER_TARGET;
     d3dl::SUBRESOURCE_DATA init{scene.pixels.data(), scene.width * 4, 0};
     d3dl::ComPtr<d3dl::Texture2D> src, dst;
@@ -176,6 +180,7 @@ class FixedFunctionBlit {
     }
     d.Width = bbW;
     d.Height = bbH;
+    d.Format = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
     if (d3dl::FAILED(device_->CreateTexture2D(&d, nullptr, dst.GetAddressOf()))) {
       *error = "fixed-function blit: cannot create the destination texture";
       return false;

@@ -392,7 +392,7 @@ void WriteGhosting(const BenchResults& res, std::ostringstream& md) {
   if (rows.empty()) return;
   const BenchPlan& plan = *res.plan;
   md << "### Ghosting on the moving cinematic camera\n\n"
-     << "Camera 0 animated by " << Num(plan.ghostStep, 4) << " s per frame (`fixedDt`), "
+     << "The cinematic camera (1) animated by " << Num(plan.ghostStep, 4) << " s per frame (`fixedDt`), "
      << plan.ghostFrames << " frames after switching the filter, captured at animation time "
      << Num(rows.front()->animTime, 4) << " s and compared with the reference rendered at that time; "
         "scale 0.71, motion blur off (the reference has none). PSNR/SSIM: against the reference. "

@@ -91,6 +91,7 @@ int main(int argc, char** argv) {
 
   size_t rows = 0, blitRows = 0, repeatRows = 0, ghostRows = 0;
   std::map<double, double> pointPsnr;  // static view, filter point
+  std::map<double, double> bilinearPsnr, blitPsnr;  // static view: the linear resolve and the blit
   std::string firstView;
   while (std::getline(lines, line)) {
     if (line.empty()) continue;
@@ -127,6 +128,8 @@ int main(int argc, char** argv) {
       if (!(g >= 0 && g <= 1)) Fail(where + ": ghost fraction not in [0, 1]");
     }
     if (view == firstView && filter == "point") pointPsnr[Parse(f[col["scale"]])] = psnr;
+    if (view == firstView && filter == "bilinear") bilinearPsnr[Parse(f[col["scale"]])] = psnr;
+    if (view == firstView && filter == "fixed-function-blit") blitPsnr[Parse(f[col["scale"]])] = psnr;
   }
   if (rows == 0) Fail("results.csv has no rows");
   if (repeatRows == 0) Fail("no reference-repeat row");
@@ -143,6 +146,13 @@ int main(int argc, char** argv) {
     prev = psnr;
   }
   if (inRange < 2) Fail("fewer than two point rows between 0.3 and 1.0 on the static view");
+  // The blit is a linear filter of the same scene colour into the same sRGB
+  // back buffer: its image must be as good as the bilinear resolve's (a wrong
+  // format on either side costs it ten decibels or more).
+  for (const auto& [scale, psnr] : blitPsnr)
+    if (bilinearPsnr.count(scale) && !(std::abs(psnr - bilinearPsnr[scale]) < 1.0))
+      Fail("fixed-function-blit PSNR " + std::to_string(psnr) + " is not within 1 dB of bilinear's " +
+           std::to_string(bilinearPsnr[scale]) + " at scale " + std::to_string(scale));
 
   // JSON: the repeat row is identical, zero validation messages, row count.
   const size_t rr = json.find("\"filter\": \"reference-repeat\"");
