@@ -23,8 +23,10 @@
 
 #include "imageio/Srgb.h"
 #include "DynamicResolutionRendering.h"
+#include "SampleTestKit.h"
 
 using namespace drr;
+using namespace drr::testkit;
 
 namespace {
 
@@ -56,30 +58,6 @@ void RenderFrames(Sample& s, int n) {
     if (i == n - 1) s.RequestCapture();
     ASSERT_TRUE(s.RenderFrame());
   }
-}
-
-struct Diff {
-  int maxAbs = 0;
-  uint64_t differing = 0;
-  double meanAbs = 0;
-};
-
-Diff Compare(const Image& a, const Image& b) {
-  Diff d;
-  if (a.width != b.width || a.height != b.height) {
-    d.maxAbs = 256;
-    return d;
-  }
-  double sum = 0;
-  for (size_t p = 0; p < size_t(a.width) * a.height; ++p) {
-    int m = 0;
-    for (int c = 0; c < 3; ++c) m = std::max(m, std::abs(int(a.pixels[p * 4 + c]) - int(b.pixels[p * 4 + c])));
-    d.maxAbs = std::max(d.maxAbs, m);
-    d.differing += m > 0;
-    sum += m;
-  }
-  d.meanAbs = sum / (double(a.width) * a.height);
-  return d;
 }
 
 class SampleFixture : public ::testing::Test {

@@ -9,8 +9,10 @@
 #include <cstdlib>
 
 #include "DynamicResolutionRendering.h"
+#include "SampleTestKit.h"
 
 using namespace drr;
+using namespace drr::testkit;
 
 namespace {
 
@@ -23,34 +25,6 @@ Options SmallOptions() {
   o.gui = false;
   o.time = 3.0;
   return o;
-}
-
-// Renders n frames and returns the last one's back buffer.
-Image Frames(Sample& s, int n) {
-  for (int i = 0; i < n; ++i) {
-    if (i == n - 1) s.RequestCapture();
-    EXPECT_TRUE(s.RenderFrame());
-  }
-  return s.CapturedBackBuffer();
-}
-
-// Pixels whose colour differs, and the largest channel difference.
-struct Diff {
-  uint64_t differing = 0;
-  int maxAbs = 0;
-};
-Diff Compare(const Image& a, const Image& b) {
-  Diff d;
-  EXPECT_EQ(a.width, b.width);
-  EXPECT_EQ(a.height, b.height);
-  if (a.pixels.size() != b.pixels.size()) return {~0ull, 256};
-  for (size_t p = 0; p < a.pixels.size() / 4; ++p) {
-    int m = 0;
-    for (int c = 0; c < 3; ++c) m = std::max(m, std::abs(int(a.pixels[p * 4 + c]) - int(b.pixels[p * 4 + c])));
-    d.differing += m > 0;
-    d.maxAbs = std::max(d.maxAbs, m);
-  }
-  return d;
 }
 
 // Largest |velocity| (UV units) of a captured velocity target.
@@ -84,11 +58,11 @@ TEST_F(SceneFrame, DefaultCameraIsTheMovingCinematicCamera) {
   EXPECT_EQ(s.GetCameras().Name(0), "First Person");
   EXPECT_EQ(s.GetCameras().Name(1), "camera_cinematic");
   EXPECT_EQ(s.GetCameras().Count(), 4);
-  const Image at3 = Frames(s, 2);
+  const Image at3 = RenderAndCapture(s, 2);
   Options o = s.Settings();
   o.time = 10.0;
   s.ApplySettings(o);
-  const Image at10 = Frames(s, 2);
+  const Image at10 = RenderAndCapture(s, 2);
   const Diff d = Compare(at3, at10);
   std::printf("[camera] default camera, t=3 vs t=10: %llu of %u px differ\n", (unsigned long long)d.differing,
               at3.width * at3.height);
@@ -103,11 +77,11 @@ TEST_F(SceneFrame, FrustumCullFixDrawsLessAndChangesNoPixel) {
     o.camera = camera;
     Sample s;
     Start(s, o);
-    const Image original = Frames(s, 2);
+    const Image original = RenderAndCapture(s, 2);
     const SceneStats before = s.GetScene()->Stats();
     o.fixes.Set(Fix::FrustumCull, true);
     s.ApplySettings(o);
-    const Image fixed = Frames(s, 2);
+    const Image fixed = RenderAndCapture(s, 2);
     const SceneStats after = s.GetScene()->Stats();
     std::printf("[frustum-cull] camera %d: draws %u (culled %u) -> %u (culled %u)\n", camera, before.drawsIssued,
                 before.drawsCulled, after.drawsIssued, after.drawsCulled);
@@ -127,10 +101,10 @@ TEST_F(SceneFrame, CameraEyeFixChangesSpecularOfSceneCamerasOnly) {
     o.camera = camera;
     Sample s;
     Start(s, o);
-    const Image original = Frames(s, 2);
+    const Image original = RenderAndCapture(s, 2);
     o.fixes.Set(Fix::CameraEye, true);
     s.ApplySettings(o);
-    const Diff d = Compare(original, Frames(s, 2));
+    const Diff d = Compare(original, RenderAndCapture(s, 2));
     std::printf("[camera-eye] camera %d: %llu px differ (max %d)\n", camera, (unsigned long long)d.differing, d.maxAbs);
     if (camera == 0) EXPECT_EQ(d.differing, 0u);
     else EXPECT_GT(d.differing, 0u);
@@ -151,12 +125,12 @@ TEST_F(SceneFrame, CameraCutFixRestartsVelocityForOneFrame) {
     o.fixes.Set(Fix::CameraCut, fix);
     Sample s;
     Start(s, o);
-    Frames(s, 3);
+    RenderAndCapture(s, 3);
     o.camera = 3;
     s.ApplySettings(o);
-    Frames(s, 1);
+    RenderAndCapture(s, 1);
     const float cutVelocity = MaxVelocity(s.CapturedVelocity());
-    afterCut[fix] = Frames(s, 1);
+    afterCut[fix] = RenderAndCapture(s, 1);
     const float nextVelocity = MaxVelocity(s.CapturedVelocity());
     std::printf("[camera-cut] fix %d: largest velocity on the cut %.4f, next frame %.4f\n", int(fix), cutVelocity,
                 nextVelocity);
@@ -183,10 +157,10 @@ TEST_F(SceneFrame, TaaFlipFixStopsThePausedFlickerWithDynamicResolutionOff) {
       o.fixes.Set(Fix::TaaFlip, fix);
       Sample s;
       Start(s, o);
-      Frames(s, 4);
+      RenderAndCapture(s, 4);
       o.pause = true;
       s.ApplySettings(o);
-      const Image a = Frames(s, 2), b = Frames(s, 1);
+      const Image a = RenderAndCapture(s, 2), b = RenderAndCapture(s, 1);
       last[dynamic][fix] = b;
       const Diff d = Compare(a, b);
       std::printf("[taa-flip] dynamic %d fix %d: consecutive paused frames differ in %llu px\n", int(dynamic),
@@ -209,7 +183,7 @@ TEST_F(SceneFrame, SrgbTargetsFixChangesOnlyTheColourFormat) {
     o.fixes.Set(Fix::SrgbTargets, fix);
     Sample s;
     Start(s, o);
-    frame[fix] = Frames(s, 2);
+    frame[fix] = RenderAndCapture(s, 2);
     EXPECT_EQ(s.CapturedSceneColor().format,
               fix ? d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB : d3dl::DXGI_FORMAT_R8G8B8A8_UNORM);
     bytes[fix] = s.RenderTargetBytes();
@@ -230,13 +204,13 @@ TEST_F(SceneFrame, PauseFreezesTheFrameWithItsVelocity) {
   o.motionBlur = true;
   Sample s;
   Start(s, o);
-  Frames(s, 3);
+  RenderAndCapture(s, 3);
   const float moving = MaxVelocity(s.CapturedVelocity());
   o.pause = true;
   s.ApplySettings(o);
-  const Image a = Frames(s, 1);
+  const Image a = RenderAndCapture(s, 1);
   const float paused = MaxVelocity(s.CapturedVelocity());
-  const Image b = Frames(s, 1);
+  const Image b = RenderAndCapture(s, 1);
   std::printf("[pause] largest velocity moving %.4f, paused %.4f\n", moving, paused);
   EXPECT_GT(paused, 0.f);
   EXPECT_NEAR(paused, moving, moving * 0.5f);

@@ -1,0 +1,51 @@
+// Small helpers shared by the whole-sample render tests: render n frames and
+// capture the last, and compare two captured back buffers pixel by pixel.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+
+#include "DynamicResolutionRendering.h"
+
+namespace drr::testkit {
+
+// Renders n frames and returns the back buffer of the last (with the GUI, if on).
+inline Image RenderAndCapture(Sample& s, int n) {
+  for (int i = 0; i < n; ++i) {
+    if (i == n - 1) s.RequestCapture();
+    EXPECT_TRUE(s.RenderFrame());
+  }
+  return s.CapturedBackBuffer();
+}
+
+// Largest RGB difference, pixels that differ and the mean of the per-pixel
+// largest difference, over the pixels at least `border` inside the edges.
+// Images of different sizes: maxAbs 256 and every pixel counted as differing.
+struct Diff {
+  int maxAbs = 0;
+  uint64_t differing = 0;
+  double meanAbs = 0;
+};
+inline Diff Compare(const Image& a, const Image& b, uint32_t border = 0) {
+  Diff d;
+  if (a.width != b.width || a.height != b.height || a.pixels.size() != b.pixels.size()) return {256, ~0ull, 256.0};
+  uint64_t counted = 0;
+  double sum = 0;
+  for (uint32_t y = border; y + border < a.height; ++y)
+    for (uint32_t x = border; x + border < a.width; ++x) {
+      int m = 0;
+      const size_t p = (size_t(y) * a.width + x) * 4;  // 8-bit RGBA or BGRA, both the same layout
+      for (int c = 0; c < 3; ++c) m = std::max(m, std::abs(int(a.pixels[p + c]) - int(b.pixels[p + c])));
+      d.maxAbs = std::max(d.maxAbs, m);
+      d.differing += m > 0;
+      sum += m;
+      ++counted;
+    }
+  d.meanAbs = counted ? sum / double(counted) : 0.0;
+  return d;
+}
+
+}  // namespace drr::testkit
