@@ -25,6 +25,8 @@ bool ReadFrom(OIIO::ImageInput* in, const std::string& name, ImageFileData* imag
   image->channels = uint32_t(std::min(spec.nchannels, 4));
   image->isFloat = spec.format.basetype != OIIO::TypeDesc::UINT8 &&
                    spec.format.basetype != OIIO::TypeDesc::INT8;
+  image->linear = spec.format.basetype == OIIO::TypeDesc::HALF || spec.format.basetype == OIIO::TypeDesc::FLOAT ||
+                  spec.format.basetype == OIIO::TypeDesc::DOUBLE;
   const size_t count = size_t(image->width) * image->height * image->channels;
   bool ok;
   if (image->isFloat) {

@@ -34,9 +34,20 @@ bool Decode(const uint8_t* bytes, size_t size, const std::string& name, ImageFil
   image->width = uint32_t(w);
   image->height = uint32_t(h);
   image->channels = uint32_t(std::clamp(n, 1, 4));
-  image->isFloat = stbi_is_hdr_from_memory(bytes, len) || stbi_is_16_bit_from_memory(bytes, len);
+  image->linear = stbi_is_hdr_from_memory(bytes, len);
+  const bool is16 = !image->linear && stbi_is_16_bit_from_memory(bytes, len);
+  image->isFloat = image->linear || is16;
   const size_t count = size_t(w) * h * image->channels;
-  if (image->isFloat) {
+  if (is16) {  // stbi_loadf would apply its own gamma to these: keep the stored values
+    stbi_us* data = stbi_load_16_from_memory(bytes, len, &w, &h, &n, int(image->channels));
+    if (!data) {
+      if (error) *error = name + ": " + stbi_failure_reason();
+      return false;
+    }
+    image->f32.resize(count);
+    for (size_t i = 0; i < count; ++i) image->f32[i] = data[i] / 65535.f;
+    stbi_image_free(data);
+  } else if (image->isFloat) {
     float* data = stbi_loadf_from_memory(bytes, len, &w, &h, &n, int(image->channels));
     if (!data) {
       if (error) *error = name + ": " + stbi_failure_reason();
