@@ -133,7 +133,10 @@ bool RunWorker(const std::string& path, std::vector<std::string> args, const Imp
   const std::string worker = ImportWorkerPath();
   args.insert(args.begin(), {worker, std::to_string(limits.memoryMiB), std::to_string(limits.cpuSeconds)});
   Child child;
-  if (!Spawn(args, limits, &child, error)) return false;
+  if (!Spawn(args, limits, &child, error)) {
+    *error = path + ": " + *error;
+    return false;
+  }
   const Stop stop = ReadReply(child.out, limits, reply);
   if (stop != Stop::None) kill(child.pid, SIGKILL);
   close(child.out);
