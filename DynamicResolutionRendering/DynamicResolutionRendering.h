@@ -132,6 +132,11 @@ class Sample {
   FramePasses m_Passes;
   GuiPanel m_Gui;
   std::unique_ptr<Scene> m_Scene;
+  // Fallback textures, rejected transforms, cut scales, ignored options: on
+  // stderr unless --quiet, in --stats and in the report.
+  std::vector<std::string> m_Warnings;
+  void Warn(const std::string& message);
+  void WarnIfScaleCut(const Options& options);
   Cameras m_Cameras;
   float m_ZoomCentre[2] = {-1.f, -1.f};
 

@@ -129,7 +129,8 @@ constexpr Spec kSpecs[] = {
     Flag("--screenshot-no-gui", &Options::screenshotNoGui, true, "the screenshot excludes the GUI"),
     Path("--report", "PATH", &Options::report, "JSON report (options, adapter, GPU times, scales, RT bytes)"),
     Flag("--validation", &Options::validation, true, "Vulkan core + sync validation; exit code 3 on any message"),
-    Flag("--stats", &Options::stats, true, "print the scene statistics"),
+    Flag("--stats", &Options::stats, true, "print the scene statistics and the warnings"),
+    Flag("--quiet", &Options::quiet, true, "no warnings on the console (--stats and the report keep them)"),
     Int("--anisotropy", "N", &Options::anisotropy, 0, 16,
         "scene sampler: 0 auto (x16 on GPUs, trilinear on CPU\n"
         "rasterisers such as lavapipe), 1 trilinear, 2..16 (default 0)"),

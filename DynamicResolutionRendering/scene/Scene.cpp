@@ -364,6 +364,7 @@ bool SceneImpl::ReadEntries(const std::string& path, bool single, std::string* e
   }
   SceneDescription desc;
   if (!LoadSceneDescription(path, {}, &desc, error)) return false;
+  for (const auto& w : desc.warnings) Warn(w);
   for (auto& d : desc.entries) {
     Entry e;
     e.desc = d;
