@@ -4,6 +4,7 @@
 // enum options come from the enums' own name tables (FilterOption in ResolveFilters.cpp,
 // ControlModeOption and ControlLawOption in ResolutionController.cpp).
 #include "Options.h"
+#include "scene/ImportLimits.h"
 
 #include "Json.h"
 
@@ -328,6 +329,7 @@ std::string Usage() {
     const std::size_t used = 2 + std::string_view(f.name).size();
     u << "  " << f.name << std::string(used + 2 <= kHelpColumn ? kHelpColumn - used : 1, ' ') << f.help << '\n';
   }
+  u << "\n" << ImportLimitsHelp();
   u << "\n"
        "  --bench [--quick] --out DIR   measure image error against run time instead of running\n"
        "                           the sample (see --bench --help)\n";

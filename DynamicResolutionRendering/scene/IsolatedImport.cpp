@@ -161,18 +161,6 @@ ImportLimits ImportLimits::FromEnvironment() {
   return l;
 }
 
-std::string ImportLimitsHelp() {
-  const ImportLimits d;
-  return "Model and texture files are decoded in a separate process (drr_import_worker) whose limits\n"
-         "are set by environment variables (positive integers):\n"
-         "  DRR_IMPORT_MEMORY_MB        address space of the worker (default " + std::to_string(d.memoryMiB) + ")\n"
-         "  DRR_IMPORT_CPU_SECONDS      CPU time per file (default " + std::to_string(d.cpuSeconds) + ")\n"
-         "  DRR_IMPORT_TIMEOUT_SECONDS  wall time per file (default " + std::to_string(d.wallSeconds) + ")\n"
-         "  DRR_IMPORT_REPLY_MB         decoded geometry/pixels per file (default " + std::to_string(d.replyMiB) + ")\n"
-         "  DRR_IMPORT_WORKER           path of the worker (default: next to this program)\n"
-         "A file that crashes the decoder or exceeds a limit is reported as an error naming it.\n";
-}
-
 std::string ImportWorkerPath() {
   if (const char* v = std::getenv("DRR_IMPORT_WORKER"); v && *v) return v;
   std::error_code ec;

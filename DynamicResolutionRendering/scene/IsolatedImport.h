@@ -16,23 +16,11 @@
 #include <memory>
 #include <string>
 
+#include "scene/ImportLimits.h"
 #include "scene/ModelLoader.h"
 #include "scene/TextureLoader.h"
 
 namespace drr {
-
-struct ImportLimits {
-  uint64_t memoryMiB = 4096;  // address space of the worker (RLIMIT_AS)
-  uint32_t cpuSeconds = 60;   // CPU time of the worker (RLIMIT_CPU)
-  uint32_t wallSeconds = 120; // wall time, for a worker blocked without using CPU
-  uint64_t replyMiB = 2048;   // largest reply accepted (decoded geometry and pixels)
-  // The defaults, overridden by DRR_IMPORT_MEMORY_MB, DRR_IMPORT_CPU_SECONDS,
-  // DRR_IMPORT_TIMEOUT_SECONDS and DRR_IMPORT_REPLY_MB (positive integers).
-  static ImportLimits FromEnvironment();
-};
-
-// One paragraph for --help: the variables above and their defaults.
-std::string ImportLimitsHelp();
 
 // The worker's path: $DRR_IMPORT_WORKER, else drr_import_worker next to the
 // running executable, else the one of the build tree.

@@ -328,3 +328,12 @@ TEST(SampleOptions, FixListParsesAndRoundTrips) {
     EXPECT_NE(m.find("--fix"), std::string::npos) << m;
   }
 }
+
+TEST(SampleOptions, QuietIsOffByDefaultAndParsed) {
+  Options o;
+  std::string m;
+  ASSERT_EQ(Parse({}, &o, &m), ParseStatus::Ok);
+  EXPECT_FALSE(o.quiet);
+  ASSERT_EQ(Parse({"--quiet"}, &o, &m), ParseStatus::Ok) << m;
+  EXPECT_TRUE(o.quiet);
+}
