@@ -513,7 +513,7 @@ int Sample::Run() {
   return rc;
 }
 
-void Sample::Shutdown() {
+bool Sample::Shutdown() {
   if (m_Device.Device()) m_Device.Device()->WaitIdle();
   if (m_Device.Context()) m_Device.Context()->ClearState();
   m_Log.DropPending();
@@ -521,8 +521,9 @@ void Sample::Shutdown() {
   m_Gui.Release();
   m_Passes.Release();
   ReleaseDynamicResolution();
-  m_Device.Release();
+  const bool clean = m_Device.Release();
   m_Window.Destroy();
+  return clean;
 }
 
 }  // namespace drr

@@ -51,7 +51,8 @@ class Sample {
   // Runs the configured number of frames (or until the window closes), writes
   // the screenshot and the report; returns the exit code.
   int Run();
-  void Shutdown();
+  // False when the shutdown was not clean (DeviceResources::Release).
+  bool Shutdown();
 
   // --- test hooks -----------------------------------------------------------
   // The next RenderFrame reads back the back buffer (with and without the

@@ -48,6 +48,13 @@ case $case_ in
   headless_ignores_window_options)
     run --window-test; has "warning: --window-test is ignored without a window"
     run --fullscreen; has "warning: --fullscreen is ignored without a window" ;;
+  clean_shutdown)
+    # Frames with every pass that holds queries or copies, under validation:
+    # the device is destroyed at exit and destroying it raises no message
+    # (the layer reports undestroyed objects then).
+    "$exe" --headless --width 96 --height 64 --frames 30 --validation --zoom --filter taa \
+      --screenshot "$dir/s.png" --report "$dir/r.json" > "$dir/out.txt" 2>&1; echo $? > "$dir/rc"
+    want_rc 0; hasnt "shutdown:"; hasnt "d3dl validation" ;;
   *) echo "unknown case $case_"; exit 2 ;;
 esac
 echo "ok: $case_"
