@@ -5,6 +5,7 @@
 # loads each through the probe (so through the import worker) with
 # Tests/scene/run_testmodels.sh: exits non-zero on any crash or hang.
 # Not part of CI's time; used for the reliability counts in Docs/Reliability.md.
+# DRR_PROBE_ARGS=--in-process measures the loaders without the isolation (before).
 set -euo pipefail
 probe=$1; count=${2:-300}; src=${3:-/usr/share/assimp/models}
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"

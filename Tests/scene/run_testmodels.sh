@@ -30,7 +30,7 @@ for f in "${files[@]}"; do
   (( (idx - 1) % shards == shard )) || continue
   n=$((n + 1))
   : > "$rssfile"
-  out=$(timeout -k 5 "$limit" "${timecmd[@]}" "$probe" --quiet "$f" 2>&1); rc=$?
+  out=$(timeout -k 5 "$limit" "${timecmd[@]}" "$probe" --quiet ${DRR_PROBE_ARGS:-} "$f" 2>&1); rc=$?
   rss=$(tail -n1 "$rssfile" 2>/dev/null); [[ "$rss" =~ ^[0-9]+$ ]] || rss=0
   (( rss > peak )) && peak=$rss
   echo "RSS_KB $rss $f" >> "$log"
