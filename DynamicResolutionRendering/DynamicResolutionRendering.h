@@ -86,6 +86,8 @@ class Sample {
     return m_Log.SaveScreenshot(path, noGui, error);
   }
   bool WriteReport(const std::string& path, std::string* error) const;
+  // Test hook (soak, tests): resizes the back buffer as a window resize does.
+  bool Resize(uint32_t w, uint32_t h) { return ResizeSwapChain(w, h); }
   // F4: recompiles every shader of the sample from its HLSL source
   // (ShaderLibrary::DefaultSourceDir(); the .spv files when the sources are
   // absent). On any error the old shaders stay and the message is shown.
