@@ -6,10 +6,12 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <vector>
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/socket.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -48,60 +50,100 @@ std::vector<std::string> WorkerEnvironment(const ImportLimits& limits) {
   return env;
 }
 
-struct Child {
-  pid_t pid = -1;
-  int out = -1;  // read end of the worker's stdout
+// The worker serves one request after another over a socket (a socket, not
+// pipes, so that writing to a worker that died is an error, not SIGPIPE).
+// It is started on the first request, kept for the next ones (starting it
+// costs more than most decodes), and replaced after any request that did
+// not succeed: a crash, a limit, or an error that may have left it damaged.
+class Worker {
+ public:
+  ~Worker() { Stop(); }
+  // Sends the request's fields and reads the reply; false with *error set
+  // (naming path) when the worker died, passed a limit or could not start.
+  bool Request(const std::string& path, const std::vector<std::string>& fields, const ImportLimits& limits,
+               std::vector<uint8_t>* reply, std::string* error);
+
+ private:
+  enum class Stop_ { None, Timeout, TooLarge, Broken };
+  bool Start(const ImportLimits& limits, std::string* error);
+  Stop_ Exchange(const std::string& request, const ImportLimits& limits, std::vector<uint8_t>* reply);
+  int Stop(bool kill = false);  // the wait status
+  pid_t pid_ = -1;
+  int fd_ = -1;
+  ImportLimits limits_;
 };
 
-bool Spawn(const std::vector<std::string>& args, const ImportLimits& limits, Child* child, std::string* error) {
-  int fds[2];
-  if (pipe2(fds, O_CLOEXEC) != 0) {
-    *error = std::string("cannot create a pipe for the import worker: ") + std::strerror(errno);
+bool Worker::Start(const ImportLimits& limits, std::string* error) {
+  int sv[2];
+  if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0) {
+    *error = std::string("cannot create a socket for the import worker: ") + std::strerror(errno);
     return false;
   }
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_adddup2(&fa, fds[1], 1);
+  posix_spawn_file_actions_adddup2(&fa, sv[1], 0);  // requests
+  posix_spawn_file_actions_adddup2(&fa, sv[1], 1);  // replies
   posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+  const std::vector<std::string> args = {ImportWorkerPath(), std::to_string(limits.memoryMiB),
+                                         std::to_string(limits.cpuSeconds)};
   std::vector<char*> argv, envp;
   for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
   argv.push_back(nullptr);
   const std::vector<std::string> env = WorkerEnvironment(limits);
   for (const auto& e : env) envp.push_back(const_cast<char*>(e.c_str()));
   envp.push_back(nullptr);
-  const int rc = posix_spawn(&child->pid, args[0].c_str(), &fa, nullptr, argv.data(), envp.data());
+  const int rc = posix_spawn(&pid_, args[0].c_str(), &fa, nullptr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&fa);
-  close(fds[1]);
+  close(sv[1]);
   if (rc != 0) {
-    close(fds[0]);
+    close(sv[0]);
+    pid_ = -1;
     *error = "cannot start the import worker " + args[0] + ": " + std::strerror(rc);
     return false;
   }
-  child->out = fds[0];
+  fd_ = sv[0];
+  limits_ = limits;
   return true;
 }
 
-enum class Stop { None, Timeout, TooLarge };
+int Worker::Stop(bool kill) {
+  if (pid_ < 0) return 0;
+  if (kill) ::kill(pid_, SIGKILL);
+  close(fd_);  // a live worker reads end-of-file and exits
+  int status = 0;
+  while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {}
+  pid_ = -1;
+  fd_ = -1;
+  return status;
+}
 
-// Reads the reply until the worker closes its end, the wall-time limit passes
-// or the reply grows past its limit.
-Stop ReadReply(int fd, const ImportLimits& limits, std::vector<uint8_t>* reply) {
+// Writes the request, then reads the reply (a 64-bit length, then the bytes)
+// within the wall-time and size limits.
+Worker::Stop_ Worker::Exchange(const std::string& request, const ImportLimits& limits, std::vector<uint8_t>* reply) {
+  if (send(fd_, request.data(), request.size(), MSG_NOSIGNAL) != ssize_t(request.size())) return Stop_::Broken;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(limits.wallSeconds);
-  const uint64_t cap = limits.replyMiB << 20;
+  uint64_t length = 0;
+  size_t headerRead = 0;
   uint8_t buf[1 << 16];
   for (;;) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    if (left.count() <= 0) return Stop::Timeout;
-    pollfd p{fd, POLLIN, 0};
-    int pr = poll(&p, 1, int(std::min<int64_t>(left.count(), 1000)));
-    if (pr < 0 && errno != EINTR) return Stop::None;
+    if (left.count() <= 0) return Stop_::Timeout;
+    pollfd p{fd_, POLLIN, 0};
+    const int pr = poll(&p, 1, int(std::min<int64_t>(left.count(), 1000)));
+    if (pr < 0 && errno != EINTR) return Stop_::Broken;
     if (pr <= 0) continue;
-    ssize_t n = read(fd, buf, sizeof buf);
+    const size_t want = headerRead < 8 ? 8 - headerRead : std::min<uint64_t>(sizeof buf, length - reply->size());
+    const ssize_t n = recv(fd_, buf, want, 0);
     if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return Stop::None;
-    if (reply->size() + size_t(n) > cap) return Stop::TooLarge;
-    reply->insert(reply->end(), buf, buf + n);
+    if (n <= 0) return Stop_::Broken;
+    if (headerRead < 8) {
+      std::memcpy(reinterpret_cast<uint8_t*>(&length) + headerRead, buf, size_t(n));
+      headerRead += size_t(n);
+      if (headerRead == 8 && length > (limits.replyMiB << 20)) return Stop_::TooLarge;
+    } else {
+      reply->insert(reply->end(), buf, buf + n);
+    }
+    if (headerRead == 8 && reply->size() == length) return Stop_::None;
   }
 }
 
@@ -111,9 +153,9 @@ std::string SignalText(int sig) {
 }
 
 // Why the worker ended without a usable reply, as a sentence.
-std::string Failure(Stop stop, int status, const ImportLimits& limits) {
-  if (stop == Stop::Timeout) return "the import did not finish within " + std::to_string(limits.wallSeconds) + " s (killed)";
-  if (stop == Stop::TooLarge) return "the decoded data exceeds " + std::to_string(limits.replyMiB) + " MiB (killed)";
+std::string Failure(bool timeout, bool tooLarge, int status, const ImportLimits& limits) {
+  if (timeout) return "the import did not finish within " + std::to_string(limits.wallSeconds) + " s (killed)";
+  if (tooLarge) return "the decoded data exceeds " + std::to_string(limits.replyMiB) + " MiB (killed)";
   if (WIFSIGNALED(status)) {
     const int sig = WTERMSIG(status);
     if (sig == SIGXCPU || sig == SIGKILL)
@@ -126,27 +168,43 @@ std::string Failure(Stop stop, int status, const ImportLimits& limits) {
   return "the import worker gave no reply";
 }
 
-// Runs the worker with args (after the worker's path and the limits); true
-// with the reply when the worker exited normally and wrote one.
-bool RunWorker(const std::string& path, std::vector<std::string> args, const ImportLimits& limits,
-               std::vector<uint8_t>* reply, std::string* error) {
-  const std::string worker = ImportWorkerPath();
-  args.insert(args.begin(), {worker, std::to_string(limits.memoryMiB), std::to_string(limits.cpuSeconds)});
-  Child child;
-  if (!Spawn(args, limits, &child, error)) {
+bool Worker::Request(const std::string& path, const std::vector<std::string>& fields, const ImportLimits& limits,
+                     std::vector<uint8_t>* reply, std::string* error) {
+  std::string request;
+  for (const auto& f : fields) {
+    if (f.find_first_of("\t\n") != std::string::npos) {
+      *error = path + ": the path contains a tab or a line break, which the import worker cannot be given";
+      return false;
+    }
+    request += (request.empty() ? "" : "\t") + f;
+  }
+  request += '\n';
+  const bool sameLimits = limits.memoryMiB == limits_.memoryMiB && limits.cpuSeconds == limits_.cpuSeconds &&
+                          limits.wallSeconds == limits_.wallSeconds && limits.replyMiB == limits_.replyMiB;
+  if (pid_ >= 0 && !sameLimits) Stop();
+  if (pid_ < 0 && !Start(limits, error)) {
     *error = path + ": " + *error;
     return false;
   }
-  const Stop stop = ReadReply(child.out, limits, reply);
-  if (stop != Stop::None) kill(child.pid, SIGKILL);
-  close(child.out);
-  int status = 0;
-  while (waitpid(child.pid, &status, 0) < 0 && errno == EINTR) {}
-  const bool exited = stop == Stop::None && WIFEXITED(status);
-  // A worker that reports an error (exit 1) still sends a well-formed reply.
-  if (exited && (WEXITSTATUS(status) == 0 || WEXITSTATUS(status) == 1) && !reply->empty()) return true;
-  *error = path + ": " + Failure(stop, status, limits);
+  const Stop_ stop = Exchange(request, limits, reply);
+  if (stop == Stop_::None) {
+    // A worker's error reply (not status 0) may follow damage: start afresh next time.
+    if (reply->size() < 9 || (*reply)[8] != 0) Stop();
+    return true;
+  }
+  const int status = Stop(stop != Stop_::Broken);
+  *error = path + ": " + Failure(stop == Stop_::Timeout, stop == Stop_::TooLarge, status, limits);
+  reply->clear();
   return false;
+}
+
+// One worker for the process; imports are serialised through it.
+bool RunWorker(const std::string& path, const std::vector<std::string>& fields, const ImportLimits& limits,
+               std::vector<uint8_t>* reply, std::string* error) {
+  static std::mutex mutex;
+  static Worker worker;
+  std::lock_guard<std::mutex> lock(mutex);
+  return worker.Request(path, fields, limits, reply, error);
 }
 
 }  // namespace
