@@ -1,12 +1,18 @@
 #include "DeviceResources.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 
 namespace drr {
 
 namespace {
+// Validation messages logged so far; those of vkDestroyDevice (undestroyed
+// objects) arrive when no device is left to ask for its statistics.
+std::atomic<uint64_t> g_validationLogged{0};
+
 void LogToStderr(d3dl::LogLevel level, const char* message, void*) {
+  if (level == d3dl::LogLevel::Validation) ++g_validationLogged;
   const char* tag = level == d3dl::LogLevel::Validation ? "validation"
                     : level == d3dl::LogLevel::Error    ? "error"
                     : level == d3dl::LogLevel::Warning  ? "warning"
@@ -72,12 +78,23 @@ bool DeviceResources::Resize(uint32_t w, uint32_t h) {
   return CreateBackBufferViews();
 }
 
-void DeviceResources::Release() {
+bool DeviceResources::Release() {
+  if (!m_Device) return true;
+  const uint64_t before = g_validationLogged.load();
+  const unsigned devicesBefore = d3dl::LiveDeviceCount();
   m_BackBufferRTV = nullptr;
   m_BackBuffer = nullptr;
   m_SwapChain = nullptr;
   m_Context = nullptr;
   m_Device = nullptr;
+  const uint64_t messages = g_validationLogged.load() - before;
+  const bool destroyed = d3dl::LiveDeviceCount() < devicesBefore;
+  if (!destroyed)
+    std::fprintf(stderr, "error: shutdown: the Vulkan device was not destroyed (an object still holds it)\n");
+  if (messages != 0)
+    std::fprintf(stderr, "error: shutdown: %llu validation messages while destroying the device\n",
+                 (unsigned long long)messages);
+  return destroyed && messages == 0;
 }
 
 uint64_t DeviceResources::ValidationMessages() const {

@@ -24,7 +24,9 @@ class DeviceResources {
   bool Create(bool validation, AppWindow& window, uint32_t width, uint32_t height, std::string* error);
   // Clears the context state and re-creates the back buffer at w x h.
   bool Resize(uint32_t w, uint32_t h);
-  void Release();
+  // Releases everything; false (with a message on stderr) when the device
+  // outlived its last reference or destroying it raised validation messages.
+  bool Release();
 
   d3dl::Device* Device() const { return m_Device.Get(); }
   d3dl::DeviceContext* Context() const { return m_Context.Get(); }

@@ -51,6 +51,8 @@ int Sample::Init(const Options& options, std::string* error) {
   }
   m_Window.Start(options.headless);
   m_Options.headless = m_Window.Headless();
+  if (m_Options.headless && (options.windowTest || options.fullscreen))
+    Warn(std::string(options.windowTest ? "--window-test" : "--fullscreen") + " is ignored without a window (--headless)");
   m_Gui.enabled = options.gui;
 
   if (!m_Device.Create(options.validation, m_Window, options.width, options.height, error)) return 1;
@@ -75,6 +77,7 @@ int Sample::Init(const Options& options, std::string* error) {
     return 1;
   }
   m_DynamicResolution.SetScale(options.scaleX, options.scaleY);
+  WarnIfScaleCut(options);
   if (options.fullscreen) m_Window.ToggleFullscreen();
   m_LastFrameTime = std::chrono::steady_clock::now();
   return 0;
@@ -100,7 +103,30 @@ bool Sample::LoadScene(std::string* error) {
     return false;
   }
   m_Cameras.Init(m_Scene.get());
+  for (const std::string& w : m_Scene->Warnings()) Warn("scene: " + w);
   return true;
+}
+
+void Sample::Warn(const std::string& message) {
+  m_Warnings.push_back(message);
+  if (!m_Options.quiet) std::fprintf(stderr, "warning: %s\n", message.c_str());
+}
+
+// A scale above what the 8192-pixel render targets allow at this back buffer
+// is cut; with the aspect lock both axes take the smaller cut, so the aspect
+// ratio stays, and the user is told.
+void Sample::WarnIfScaleCut(const Options& options) {
+  const float maxX = m_DynamicResolution.GetMaxScalingX(), maxY = m_DynamicResolution.GetMaxScalingY();
+  if (options.scaleX <= maxX * 1.0001f && options.scaleY <= maxY * 1.0001f) return;
+  float sx = std::min(options.scaleX, maxX), sy = std::min(options.scaleY, maxY);
+  if (m_Options.aspectLock) sx = sy = std::min(sx, sy);
+  m_DynamicResolution.SetScale(sx, sy);
+  char text[256];
+  std::snprintf(text, sizeof text,
+                "scale %g x %g exceeds the %u-pixel render-target limit at %ux%u; using %g x %g", options.scaleX,
+                options.scaleY, kMaxRTSize, m_Device.Width(), m_Device.Height(), m_DynamicResolution.GetScaleX(),
+                m_DynamicResolution.GetScaleY());
+  Warn(text);
 }
 
 bool Sample::ResizeSwapChain(uint32_t w, uint32_t h) {
@@ -484,6 +510,7 @@ bool Sample::WriteReport(const std::string& path, std::string* error) const {
   info.finalScale[0] = m_DynamicResolution.GetScaleX();
   info.finalScale[1] = m_DynamicResolution.GetScaleY();
   info.scene = m_Scene.get();
+  info.warnings = &m_Warnings;
   return m_Log.WriteReport(path, info, error);
 }
 
@@ -519,13 +546,17 @@ int Sample::Run() {
     std::printf("render targets %.1f MiB (the original allocates %.1f MiB for this mode)\n",
                 RenderTargetBytes() / 1048576.0, original / 1048576.0);
   }
+  if (m_Options.stats) {
+    std::printf("warnings: %zu\n", m_Warnings.size());
+    for (const std::string& w : m_Warnings) std::printf("  %s\n", w.c_str());
+  }
   const uint64_t messages = ValidationMessages();
   if (messages > 0) std::fprintf(stderr, "validation messages: %llu\n", (unsigned long long)messages);
   if (m_Options.validation && messages > 0) rc = 3;
   return rc;
 }
 
-void Sample::Shutdown() {
+bool Sample::Shutdown() {
   if (m_Device.Device()) m_Device.Device()->WaitIdle();
   if (m_Device.Context()) m_Device.Context()->ClearState();
   m_Log.DropPending();
@@ -533,8 +564,9 @@ void Sample::Shutdown() {
   m_Gui.Release();
   m_Passes.Release();
   ReleaseDynamicResolution();
-  m_Device.Release();
+  const bool clean = m_Device.Release();
   m_Window.Destroy();
+  return clean;
 }
 
 }  // namespace drr

@@ -51,7 +51,8 @@ class Sample {
   // Runs the configured number of frames (or until the window closes), writes
   // the screenshot and the report; returns the exit code.
   int Run();
-  void Shutdown();
+  // False when the shutdown was not clean (DeviceResources::Release).
+  bool Shutdown();
 
   // --- test hooks -----------------------------------------------------------
   // The next RenderFrame reads back the back buffer (with and without the
@@ -87,6 +88,8 @@ class Sample {
     return m_Log.SaveScreenshot(path, noGui, error);
   }
   bool WriteReport(const std::string& path, std::string* error) const;
+  // Test hook (soak, tests): resizes the back buffer as a window resize does.
+  bool Resize(uint32_t w, uint32_t h) { return ResizeSwapChain(w, h); }
   // F4: recompiles every shader of the sample from its HLSL source
   // (ShaderLibrary::DefaultSourceDir(); the .spv files when the sources are
   // absent). On any error the old shaders stay and the message is shown.
@@ -148,6 +151,11 @@ class Sample {
   FramePasses m_Passes;
   GuiPanel m_Gui;
   std::unique_ptr<Scene> m_Scene;
+  // Fallback textures, rejected transforms, cut scales, ignored options: on
+  // stderr unless --quiet, in --stats and in the report.
+  std::vector<std::string> m_Warnings;
+  void Warn(const std::string& message);
+  void WarnIfScaleCut(const Options& options);
   Cameras m_Cameras;
   float m_ZoomCentre[2] = {0.5f, 0.5f};  // UV of the back buffer, as the original's
 

@@ -187,6 +187,10 @@ bool FrameLog::WriteReport(const std::string& path, const ReportInfo& info, std:
     j.BeginObject("scene_stats").Inline().Value("draws_issued", st.drawsIssued).Value("draws_culled", st.drawsCulled);
     j.Value("triangles", st.triangles).Value("texture_bytes", st.textureBytes).EndObject();
   }
+  j.BeginArray("warnings");
+  if (info.warnings)
+    for (const std::string& w : *info.warnings) j.Value({}, w);
+  j.EndArray();
   j.BeginArray("frames");
   for (const FrameRecord& r : m_Frames) WriteFrame(j, r);
   j.EndArray().EndObject();

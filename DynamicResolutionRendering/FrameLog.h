@@ -51,6 +51,7 @@ struct ReportInfo {
   int64_t framesRendered = 0, framesMinimised = 0;
   float finalScale[2] = {1, 1};
   const Scene* scene = nullptr;
+  const std::vector<std::string>* warnings = nullptr;
 };
 
 class FrameLog {

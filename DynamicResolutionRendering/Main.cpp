@@ -28,7 +28,9 @@ int SampleMain(int argc, char** argv) {
     return rc;
   }
   const int rc = sample.Run();
-  sample.Shutdown();
+  // A device left alive or validation messages while destroying it (objects
+  // not destroyed) count as validation failures.
+  if (!sample.Shutdown() && rc == 0 && options.validation) return 3;
   return rc;
 }
 

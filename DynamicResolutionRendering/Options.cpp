@@ -4,6 +4,7 @@
 // enum options come from the enums' own name tables (FilterOption in ResolveFilters.cpp,
 // ControlModeOption and ControlLawOption in ResolutionController.cpp).
 #include "Options.h"
+#include "scene/ImportLimits.h"
 
 #include "Json.h"
 
@@ -129,7 +130,8 @@ constexpr Spec kSpecs[] = {
     Flag("--screenshot-no-gui", &Options::screenshotNoGui, true, "the screenshot excludes the GUI"),
     Path("--report", "PATH", &Options::report, "JSON report (options, adapter, GPU times, scales, RT bytes)"),
     Flag("--validation", &Options::validation, true, "Vulkan core + sync validation; exit code 3 on any message"),
-    Flag("--stats", &Options::stats, true, "print the scene statistics"),
+    Flag("--stats", &Options::stats, true, "print the scene statistics and the warnings"),
+    Flag("--quiet", &Options::quiet, true, "no warnings on the console (--stats and the report keep them)"),
     Int("--anisotropy", "N", &Options::anisotropy, 0, 16,
         "scene sampler: 0 auto (x16 on GPUs, trilinear on CPU\n"
         "rasterisers such as lavapipe), 1 trilinear, 2..16 (default 0)"),
@@ -327,6 +329,7 @@ std::string Usage() {
     const std::size_t used = 2 + std::string_view(f.name).size();
     u << "  " << f.name << std::string(used + 2 <= kHelpColumn ? kHelpColumn - used : 1, ' ') << f.help << '\n';
   }
+  u << "\n" << ImportLimitsHelp();
   u << "\n"
        "  --bench [--quick] --out DIR   measure image error against run time instead of running\n"
        "                           the sample (see --bench --help)\n";

@@ -48,6 +48,7 @@ struct Options {
   std::string report;
   bool validation = false;
   bool stats = false;
+  bool quiet = false;  // no warnings on the console (still in --stats and the report)
   // Scene sampler anisotropy: 0 = auto (x16 as the original on GPUs; trilinear
   // on CPU rasterisers, whose anisotropic filter is pathologically slow, see
   // Docs/Lavapipe-Performance.md), 1 = trilinear, 2..16 = anisotropic.

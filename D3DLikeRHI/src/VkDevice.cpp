@@ -31,8 +31,12 @@ ValidationMode ResolveValidation(ValidationMode m) {
 ObjectRoot::ObjectRoot(DeviceImpl* dev) : dev_(dev), uid_(dev->NextUid()) { dev_->ChildCreated(); }
 ObjectRoot::~ObjectRoot() { dev_->ChildDestroyed(); }
 
-DeviceImpl::DeviceImpl() = default;
-DeviceImpl::~DeviceImpl() = default;
+namespace {
+std::atomic<UINT> g_liveDevices{0};
+}  // namespace
+
+DeviceImpl::DeviceImpl() { ++g_liveDevices; }
+DeviceImpl::~DeviceImpl() { --g_liveDevices; }
 
 void DeviceImpl::Log(LogLevel level, const char* fmt, ...) {
   char buf[2048];
@@ -250,6 +254,8 @@ void DeviceImpl::WaitIdle() {
 }
 
 }  // namespace impl
+
+UINT LiveDeviceCount() { return impl::g_liveDevices.load(); }
 
 HRESULT CreateDevice(const DEVICE_CREATE_DESC* desc, Device** device, DeviceContext** context) {
   if (device) *device = nullptr;

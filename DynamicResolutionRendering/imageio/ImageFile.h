@@ -15,6 +15,9 @@ namespace drr {
 struct ImageFileData {
   uint32_t width = 0, height = 0, channels = 0;  // channels 1..4
   bool isFloat = false;                           // f32 holds the data, else u8
+  // f32 holds linear light (EXR, HDR, half/float TIFF); 16-bit integer files
+  // come back as float too but keep their stored (sRGB-encoded) values.
+  bool linear = false;
   std::vector<uint8_t> u8;
   std::vector<float> f32;
 };
@@ -24,7 +27,7 @@ struct ImageFileData {
 inline constexpr uint32_t kMaxImageDimension = 16384;
 
 // Reads a whole image (first subimage, mip 0). 8-bit data stays 8-bit;
-// high-dynamic-range sources (EXR, HDR, 16/32-bit) come back as float.
+// 16-bit and high-dynamic-range sources (EXR, HDR, 32-bit) come back as float.
 // On failure returns false and names the file and the reason.
 bool ReadImageFile(const std::string& path, ImageFileData* image, std::string* error,
                    uint32_t maxDimension = kMaxImageDimension);

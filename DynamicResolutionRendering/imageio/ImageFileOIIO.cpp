@@ -1,4 +1,9 @@
 // OpenImageIO backend of ImageFile.h.
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
@@ -25,6 +30,8 @@ bool ReadFrom(OIIO::ImageInput* in, const std::string& name, ImageFileData* imag
   image->channels = uint32_t(std::min(spec.nchannels, 4));
   image->isFloat = spec.format.basetype != OIIO::TypeDesc::UINT8 &&
                    spec.format.basetype != OIIO::TypeDesc::INT8;
+  image->linear = spec.format.basetype == OIIO::TypeDesc::HALF || spec.format.basetype == OIIO::TypeDesc::FLOAT ||
+                  spec.format.basetype == OIIO::TypeDesc::DOUBLE;
   const size_t count = size_t(image->width) * image->height * image->channels;
   bool ok;
   if (image->isFloat) {
@@ -76,6 +83,22 @@ bool ReadImageMemory(const void* data, size_t size, const std::string& name, Ima
 }
 
 namespace {
+// Writes the encoded bytes with every error checked (a full disk, /dev/full):
+// OpenImageIO's own file writers can report success after a failed write.
+bool WriteBytes(const std::string& path, const std::vector<unsigned char>& bytes, std::string* error) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) {
+    if (error) *error = path + ": cannot open for writing (" + std::strerror(errno) + ")";
+    return false;
+  }
+  bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  ok = std::fflush(f) == 0 && ok;
+  const int err = errno;
+  ok = std::fclose(f) == 0 && ok;
+  if (!ok && error) *error = path + ": write failed (" + std::strerror(errno ? errno : err) + ")";
+  return ok;
+}
+
 bool Write(const std::string& path, uint32_t w, uint32_t h, uint32_t channels,
            OIIO::TypeDesc type, const void* pixels, size_t rowPitch, std::string* error) {
   auto out = OIIO::ImageOutput::create(path);
@@ -85,12 +108,15 @@ bool Write(const std::string& path, uint32_t w, uint32_t h, uint32_t channels,
   }
   OIIO::ImageSpec spec(int(w), int(h), int(channels), type);
   spec.attribute("oiio:UnassociatedAlpha", 1);  // the pixels are not premultiplied
+  std::vector<unsigned char> encoded;
+  OIIO::Filesystem::IOVecOutput memory(encoded);
+  const bool inMemory = out->supports("ioproxy") && out->set_ioproxy(&memory);
   if (!out->open(path, spec) ||
-      !out->write_image(type, pixels, OIIO::AutoStride, OIIO::stride_t(rowPitch))) {
+      !out->write_image(type, pixels, OIIO::AutoStride, OIIO::stride_t(rowPitch)) || !out->close()) {
     if (error) *error = path + ": " + out->geterror();
     return false;
   }
-  return out->close();
+  return inMemory ? WriteBytes(path, encoded, error) : true;
 }
 }  // namespace
 

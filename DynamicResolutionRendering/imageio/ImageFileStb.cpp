@@ -4,6 +4,8 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -34,9 +36,20 @@ bool Decode(const uint8_t* bytes, size_t size, const std::string& name, ImageFil
   image->width = uint32_t(w);
   image->height = uint32_t(h);
   image->channels = uint32_t(std::clamp(n, 1, 4));
-  image->isFloat = stbi_is_hdr_from_memory(bytes, len) || stbi_is_16_bit_from_memory(bytes, len);
+  image->linear = stbi_is_hdr_from_memory(bytes, len);
+  const bool is16 = !image->linear && stbi_is_16_bit_from_memory(bytes, len);
+  image->isFloat = image->linear || is16;
   const size_t count = size_t(w) * h * image->channels;
-  if (image->isFloat) {
+  if (is16) {  // stbi_loadf would apply its own gamma to these: keep the stored values
+    stbi_us* data = stbi_load_16_from_memory(bytes, len, &w, &h, &n, int(image->channels));
+    if (!data) {
+      if (error) *error = name + ": " + stbi_failure_reason();
+      return false;
+    }
+    image->f32.resize(count);
+    for (size_t i = 0; i < count; ++i) image->f32[i] = data[i] / 65535.f;
+    stbi_image_free(data);
+  } else if (image->isFloat) {
     float* data = stbi_loadf_from_memory(bytes, len, &w, &h, &n, int(image->channels));
     if (!data) {
       if (error) *error = name + ": " + stbi_failure_reason();
@@ -74,6 +87,28 @@ bool ReadImageMemory(const void* data, size_t size, const std::string& name, Ima
   return Decode(static_cast<const uint8_t*>(data), size, name, image, error, maxDimension);
 }
 
+namespace {
+void Append(void* context, void* data, int size) {
+  auto* v = static_cast<std::vector<uint8_t>*>(context);
+  v->insert(v->end(), static_cast<uint8_t*>(data), static_cast<uint8_t*>(data) + size);
+}
+
+// Writes the encoded bytes with every error checked (stb's own file writers
+// do not check fwrite/fclose, so a full disk would look like success).
+bool WriteBytes(const std::string& path, const std::vector<uint8_t>& bytes, std::string* error) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) {
+    if (error) *error = path + ": cannot open for writing (" + std::strerror(errno) + ")";
+    return false;
+  }
+  bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  ok = std::fflush(f) == 0 && ok;
+  ok = std::fclose(f) == 0 && ok;
+  if (!ok && error) *error = path + ": write failed (" + std::strerror(errno) + ")";
+  return ok;
+}
+}  // namespace
+
 bool WriteImageFile(const std::string& path, uint32_t width, uint32_t height, uint32_t channels,
                     const uint8_t* pixels, std::string* error, uint32_t rowPitch) {
   std::string ext = std::filesystem::path(path).extension().string();
@@ -81,23 +116,27 @@ bool WriteImageFile(const std::string& path, uint32_t width, uint32_t height, ui
   const int w = int(width), h = int(height), c = int(channels);
   const int pitch = int(rowPitch ? rowPitch : width * channels);
   int ok = 0;
+  std::vector<uint8_t> encoded;
   if (ext == ".png") {
-    ok = stbi_write_png(path.c_str(), w, h, c, pixels, pitch);
+    ok = stbi_write_png_to_func(Append, &encoded, w, h, c, pixels, pitch);
   } else {
     // The other writers take tightly packed rows.
     std::vector<uint8_t> packed(size_t(width) * height * channels);
     for (uint32_t y = 0; y < height; ++y)
       std::memcpy(&packed[size_t(y) * width * channels], pixels + size_t(y) * pitch, width * channels);
-    if (ext == ".jpg" || ext == ".jpeg") ok = stbi_write_jpg(path.c_str(), w, h, c, packed.data(), 95);
-    else if (ext == ".tga") ok = stbi_write_tga(path.c_str(), w, h, c, packed.data());
-    else if (ext == ".bmp") ok = stbi_write_bmp(path.c_str(), w, h, c, packed.data());
+    if (ext == ".jpg" || ext == ".jpeg") ok = stbi_write_jpg_to_func(Append, &encoded, w, h, c, packed.data(), 95);
+    else if (ext == ".tga") ok = stbi_write_tga_to_func(Append, &encoded, w, h, c, packed.data());
+    else if (ext == ".bmp") ok = stbi_write_bmp_to_func(Append, &encoded, w, h, c, packed.data());
     else {
       if (error) *error = path + ": format not supported by the stb image backend (use .png, .jpg, .tga, .bmp)";
       return false;
     }
   }
-  if (!ok && error) *error = path + ": cannot write the file";
-  return ok != 0;
+  if (!ok) {
+    if (error) *error = path + ": cannot encode the image";
+    return false;
+  }
+  return WriteBytes(path, encoded, error);
 }
 
 bool WriteImageFileFloat(const std::string& path, uint32_t width, uint32_t height,
@@ -106,9 +145,12 @@ bool WriteImageFileFloat(const std::string& path, uint32_t width, uint32_t heigh
     if (error) *error = path + ": the stb image backend writes float images only as .hdr";
     return false;
   }
-  const int ok = stbi_write_hdr(path.c_str(), int(width), int(height), int(channels), pixels);
-  if (!ok && error) *error = path + ": cannot write the file";
-  return ok != 0;
+  std::vector<uint8_t> encoded;
+  if (!stbi_write_hdr_to_func(Append, &encoded, int(width), int(height), int(channels), pixels)) {
+    if (error) *error = path + ": cannot encode the image";
+    return false;
+  }
+  return WriteBytes(path, encoded, error);
 }
 
 std::string ImageFileBackend() { return "stb"; }

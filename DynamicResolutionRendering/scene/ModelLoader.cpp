@@ -618,6 +618,26 @@ bool LoadModel(const std::string& path, const ModelLoadOptions& opts, ModelData*
   return true;
 }
 
+ModelData CopyWithoutGeometry(const ModelData& model) {
+  ModelData copy;
+  copy.file = model.file;
+  copy.materials = model.materials;
+  copy.nodes = model.nodes;
+  copy.animations = model.animations;
+  copy.cameras = model.cameras;
+  copy.warnings = model.warnings;
+  copy.meshes.reserve(model.meshes.size());
+  for (const MeshData& m : model.meshes) {
+    MeshData g;
+    g.name = m.name;
+    g.material = m.material;
+    g.boundsMin = m.boundsMin, g.boundsMax = m.boundsMax;
+    g.sphereCenter = m.sphereCenter, g.sphereRadius = m.sphereRadius;
+    copy.meshes.push_back(std::move(g));
+  }
+  return copy;
+}
+
 int AttachAnimations(ModelData* model, const ModelData& source) {
   int matched = 0;
   model->animations.clear();
@@ -651,6 +671,23 @@ uint64_t TextureCache::LoadedBytes() const {
   return b;
 }
 
+bool TextureCache::Load(const ModelData& model, const std::string& ref, TextureKind kind, TextureData* tex,
+                        std::string* err) {
+  if (ref[0] != '*') return loader_ ? loader_(ref, kind, opts_, tex, err) : LoadTextureFile(ref, kind, opts_, tex, err);
+  char* end = nullptr;
+  long idx = std::strtol(ref.c_str() + 1, &end, 10);
+  if (*end != '\0' || idx < 0 || idx >= static_cast<long>(model.embedded.size()) || model.embedded[idx].bytes.empty()) {
+    const bool known = *end == '\0' && idx >= 0 && idx < static_cast<long>(model.embedded.size());
+    *err = known && !model.embedded[idx].error.empty() ? model.embedded[idx].error
+                                                       : model.file + ": embedded texture " + ref + " is missing";
+    return false;
+  }
+  const EmbeddedTexture& et = model.embedded[idx];
+  std::string name = model.file + " (embedded texture " + ref + ")";
+  return et.width ? MakeTextureRGBA8(et.bytes.data(), et.width, et.height, name, kind, opts_, tex, err)
+                  : LoadTextureMemory(et.bytes.data(), et.bytes.size(), et.hint, name, kind, opts_, tex, err);
+}
+
 std::shared_ptr<const TextureData> TextureCache::Get(const ModelData& model, const std::string& ref, TextureKind kind,
                                                      std::vector<std::string>* warnings) {
   if (ref.empty()) return Fallback(kind);
@@ -661,20 +698,11 @@ std::shared_ptr<const TextureData> TextureCache::Get(const ModelData& model, con
   auto tex = std::make_shared<TextureData>();
   std::string err;
   bool ok;
-  if (ref[0] == '*') {
-    char* end = nullptr;
-    long idx = std::strtol(ref.c_str() + 1, &end, 10);
-    if (*end != '\0' || idx < 0 || idx >= static_cast<long>(model.embedded.size()) || model.embedded[idx].bytes.empty()) {
-      err = model.file + ": embedded texture " + ref + " is missing";
-      ok = false;
-    } else {
-      const EmbeddedTexture& et = model.embedded[idx];
-      std::string name = model.file + " (embedded texture " + ref + ")";
-      ok = et.width ? MakeTextureRGBA8(et.bytes.data(), et.width, et.height, name, kind, opts_, tex.get(), &err)
-                    : LoadTextureMemory(et.bytes.data(), et.bytes.size(), et.hint, name, kind, opts_, tex.get(), &err);
-    }
-  } else {
-    ok = LoadTextureFile(ref, kind, opts_, tex.get(), &err);
+  try {
+    ok = Load(model, ref, kind, tex.get(), &err);
+  } catch (const std::bad_alloc&) {
+    err = (ref[0] == '*' ? model.file + " (embedded texture " + ref + ")" : ref) + ": out of memory while converting the texture";
+    ok = false;
   }
   if (!ok) {
     failed_.insert(failKey);

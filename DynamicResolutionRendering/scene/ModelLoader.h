@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -75,6 +76,7 @@ struct EmbeddedTexture {
   std::string hint;             // "png", "jpg", ... ("" for raw texels)
   std::vector<uint8_t> bytes;   // compressed file bytes, or RGBA8 texels
   uint32_t width = 0, height = 0;  // raw texels only
+  std::string error;            // why the import worker could not decode it (bytes then empty)
 };
 
 struct ModelData {
@@ -108,6 +110,11 @@ struct ModelLoadOptions {
 // no usable meshes, limits exceeded). Repairs are listed in out->warnings.
 bool LoadModel(const std::string& path, const ModelLoadOptions& opts, ModelData* out, std::string* error);
 
+// The model without its meshes' vertices and indices and without its embedded
+// textures (names, materials, bounds kept): what a scene entry needs once the
+// geometry and textures are on the GPU.
+ModelData CopyWithoutGeometry(const ModelData& model);
+
 // Uses the animations of 'source' for 'model', mapping channels by node name.
 // Returns the number of channels that found their node.
 int AttachAnimations(ModelData* model, const ModelData& source);
@@ -122,7 +129,12 @@ bool RepairMesh(MeshData* mesh, std::vector<std::string>* messages);
 // textures become the kind's fallback with exactly one warning naming the file.
 class TextureCache {
  public:
-  explicit TextureCache(TextureLoadOptions opts = {}) : opts_(opts) {}
+  // Decodes a texture file into *out (mips built by the cache) or returns false with *error.
+  using FileLoader = std::function<bool(const std::string& path, TextureKind kind, const TextureLoadOptions& opts,
+                                        TextureData* out, std::string* error)>;
+  // loader: how files are decoded; empty = in this process (LoadTextureFile).
+  // The sample passes IsolatedTextureLoader() (IsolatedImport.h).
+  explicit TextureCache(TextureLoadOptions opts = {}, FileLoader loader = {}) : opts_(opts), loader_(std::move(loader)) {}
   // ref: as in MaterialData; empty ref returns the fallback without a warning.
   std::shared_ptr<const TextureData> Get(const ModelData& model, const std::string& ref, TextureKind kind,
                                          std::vector<std::string>* warnings);
@@ -131,7 +143,9 @@ class TextureCache {
   uint64_t LoadedBytes() const;
 
  private:
+  bool Load(const ModelData& model, const std::string& ref, TextureKind kind, TextureData* tex, std::string* err);
   TextureLoadOptions opts_;
+  FileLoader loader_;
   std::map<std::string, std::shared_ptr<const TextureData>> cache_;
   std::map<int, std::shared_ptr<const TextureData>> fallbacks_;
   std::set<std::string> failed_;

@@ -13,6 +13,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "d3dl/D3DLike.h"
+#include "scene/IsolatedImport.h"
 #include "scene/ModelLoader.h"
 #include "scene/SceneDescription.h"
 #include "scene/SceneImpl.h"
@@ -213,23 +214,33 @@ bool SceneImpl::UploadMaterials(Entry& e, TextureCache& cache, std::string* erro
 }
 
 bool SceneImpl::LoadEntry(Entry& e, TextureCache& cache, std::string* error) {
-  if (!LoadModel(e.desc.meshFile, {}, &e.model, error)) return false;
+  const std::shared_ptr<const ModelData> model = models.Get(e.desc.meshFile, {}, error);
+  if (!model) return false;
+  e.model = CopyWithoutGeometry(*model);  // the geometry lives in the shared GPU buffers
   if (!e.desc.animFile.empty() && fs::path(e.desc.animFile) != fs::path(e.desc.meshFile)) {
-    ModelData anim;
     ModelLoadOptions ao;
     ao.animationsOnly = true;
-    if (!LoadModel(e.desc.animFile, ao, &anim, error)) return false;
-    if (AttachAnimations(&e.model, anim) == 0)
+    const std::shared_ptr<const ModelData> anim = models.Get(e.desc.animFile, ao, error);
+    if (!anim) return false;
+    if (AttachAnimations(&e.model, *anim) == 0)
       Warn(e.desc.animFile + ": no animation channel matches a node of " + e.desc.meshFile);
   }
-  for (const auto& w : e.model.warnings) Warn(e.desc.meshFile + ": " + w);
   e.transform = e.desc.Transform();
-  for (const MeshData& m : e.model.meshes) {
-    GpuMesh g;
-    if (!UploadMesh(e, m, &g, error)) return false;
-    e.meshes.push_back(std::move(g));
+  auto [shared, firstUse] = uploaded.try_emplace(e.desc.meshFile);
+  if (firstUse) {
+    for (const auto& w : model->warnings) Warn(e.desc.meshFile + ": " + w);
+    e.model.embedded = model->embedded;  // decoded once: later entries find them in the texture cache
+    for (const MeshData& m : model->meshes) {
+      GpuMesh g;
+      if (!UploadMesh(e, m, &g, error)) return false;
+      shared->second.push_back(std::move(g));
+    }
+  } else {
+    stats.triangles += model->Triangles();
   }
+  e.meshes = shared->second;
   if (!UploadMaterials(e, cache, error)) return false;
+  std::vector<EmbeddedTexture>().swap(e.model.embedded);
   // Draw items: every (node, mesh) pair.
   for (size_t n = 0; n < e.model.nodes.size(); ++n)
     for (uint32_t m : e.model.nodes[n].meshes) e.items.push_back({int(n), int(m)});
@@ -250,6 +261,7 @@ bool SceneImpl::ReadEntries(const std::string& path, bool single, std::string* e
   }
   SceneDescription desc;
   if (!LoadSceneDescription(path, {}, &desc, error)) return false;
+  for (const auto& w : desc.warnings) Warn(w);
   for (auto& d : desc.entries) {
     Entry e;
     e.desc = d;
@@ -395,7 +407,7 @@ std::unique_ptr<Scene> Scene::Load(d3dl::Device* device, const std::string& path
 
   const bool single = !IsSceneDescriptionPath(path);
   if (!s.ReadEntries(path, single, error)) return nullptr;
-  TextureCache cache;
+  TextureCache cache({}, IsolatedTextureLoader());
   for (auto& e : s.entries)
     if (!s.LoadEntry(e, cache, error)) return nullptr;
   s.stats.texturesLoaded = uint32_t(cache.LoadedCount());

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -277,6 +278,25 @@ bool ResolveFiles(const std::string& folder, const ParseOptions& opts, int animL
   return true;
 }
 
+// Resets a translation or scale out of the drawable range to the identity,
+// with a warning naming the line.
+void RejectAbsurdTransform(const std::string& file, SceneEntry* e, std::vector<std::string>* warnings) {
+  auto describe = [](const glm::vec3& v) {
+    char b[96];
+    std::snprintf(b, sizeof b, "%g,%g,%g", v.x, v.y, v.z);
+    return std::string(b);
+  };
+  const glm::vec3 t = glm::abs(e->translate), s = glm::abs(e->scale);
+  if (std::max({t.x, t.y, t.z}) > kMaxTranslate) {
+    warnings->push_back(Loc(file, e->line) + "translate=" + describe(e->translate) + " is beyond +-1e7, ignored");
+    e->translate = glm::vec3(0.f);
+  }
+  if (std::max({s.x, s.y, s.z}) > kMaxEntryScale || std::min({s.x, s.y, s.z}) < kMinEntryScale) {
+    warnings->push_back(Loc(file, e->line) + "scale=" + describe(e->scale) + " is outside [1e-6, 1e6], ignored");
+    e->scale = glm::vec3(1.f);
+  }
+}
+
 bool ParseEntries(const std::string& text, const ParseOptions& opts, SceneDescription* out, ParseFailure* why) {
   std::vector<Token> tokens;
   if (!Tokenise(text, opts, &tokens, why)) return false;
@@ -290,6 +310,7 @@ bool ParseEntries(const std::string& text, const ParseOptions& opts, SceneDescri
     int animLine = 0;
     if (!ReadEntry(tokens, &k, &e, &animLine, why) || !ResolveFiles(out->folder, opts, animLine, &e, why)) return false;
     if (e.name.empty()) e.name = fs::path(e.meshPath).stem().string();
+    RejectAbsurdTransform(out->file, &e, &out->warnings);
     out->entries.push_back(std::move(e));
   }
   return true;

@@ -47,7 +47,14 @@ struct SceneDescription {
   std::string file;   // path of the description
   std::string folder; // folder the paths are relative to
   std::vector<SceneEntry> entries;
+  // "file:line: ..." for options that were ignored (transforms out of range).
+  std::vector<std::string> warnings;
 };
+
+// Transforms beyond these bounds put a model where float arithmetic cannot
+// draw it (a blank frame): they are ignored with a warning.
+inline constexpr float kMaxTranslate = 1e7f;          // per component
+inline constexpr float kMinEntryScale = 1e-6f, kMaxEntryScale = 1e6f;  // |scale| per axis
 
 struct ParseOptions {
   bool checkFiles = true;        // the mesh and animation files must exist

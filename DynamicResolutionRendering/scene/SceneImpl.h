@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "d3dl/D3DLike.h"
+#include "scene/IsolatedImport.h"
 #include "scene/ModelLoader.h"
 #include "scene/Scene.h"
 #include "scene/SceneDescription.h"
@@ -116,6 +117,8 @@ struct SceneImpl {
   ComPtr<d3dl::BlendState> bsDecal;
 
   SceneStats stats;
+  ModelCache models;                                     // one import per distinct file
+  std::map<std::string, std::vector<GpuMesh>> uploaded;  // one upload per distinct file
   std::map<const TextureData*, ComPtr<d3dl::ShaderResourceView>> srvs;
   uint64_t gpuTextureBytes = 0;
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <new>
 
 #include "imageio/ImageFile.h"
 #include "imageio/Srgb.h"
@@ -109,9 +110,11 @@ bool ConvertImage(const ImageFileData& img, const std::string& name, TextureKind
   const uint32_t w = img.width, h = img.height;
   const int nc = int(img.channels);
   const bool isFloat = img.isFloat;
+  if ((isFloat ? img.f32.size() : img.u8.size()) < size_t(w) * h * nc) {
+    *error = name + ": decoded image is smaller than its size says";
+    return false;
+  }
   auto sample = [&](size_t i) { return isFloat ? img.f32[i] : img.u8[i] / 255.f; };
-  std::vector<float> px(size_t(w) * h * nc);
-  for (size_t i = 0; i < px.size(); ++i) px[i] = sample(i);
   const int alphaIdx = nc == 2 ? 1 : (nc >= 4 ? 3 : -1);
   TextureMip m;
   m.width = w;
@@ -119,16 +122,16 @@ bool ConvertImage(const ImageFileData& img, const std::string& name, TextureKind
   m.rgba.resize(size_t(w) * h * 4);
   bool anyAlpha = false;
   for (size_t i = 0; i < size_t(w) * h; ++i) {
-    const float* s = &px[i * nc];
+    const size_t s = i * nc;
     float rgb[3];
-    if (nc <= 2) rgb[0] = rgb[1] = rgb[2] = s[0];
-    else { rgb[0] = s[0]; rgb[1] = s[1]; rgb[2] = s[2]; }
-    float a = alphaIdx >= 0 ? s[alphaIdx] : 1.f;
+    if (nc <= 2) rgb[0] = rgb[1] = rgb[2] = sample(s);
+    else { rgb[0] = sample(s); rgb[1] = sample(s + 1); rgb[2] = sample(s + 2); }
+    float a = alphaIdx >= 0 ? sample(s + alphaIdx) : 1.f;
     uint8_t* d = &m.rgba[i * 4];
     for (int c = 0; c < 3; ++c) {
       float v = std::isfinite(rgb[c]) ? rgb[c] : 0.f;
-      // 8-bit files keep their stored (sRGB) values; float (HDR/EXR) data is linear.
-      d[c] = (isFloat && kind == TextureKind::Color) ? LinearToSrgb8(v) : ToByte(v);
+      // Integer files (8- or 16-bit) keep their stored (sRGB) values; float (HDR/EXR) data is linear.
+      d[c] = (img.linear && kind == TextureKind::Color) ? LinearToSrgb8(v) : ToByte(v);
     }
     d[3] = ToByte(std::isfinite(a) ? a : 1.f);
     anyAlpha |= d[3] < 255;
@@ -141,6 +144,18 @@ bool ConvertImage(const ImageFileData& img, const std::string& name, TextureKind
   out->mips.push_back(std::move(m));
   if (opts.generateMips) GenerateMipChain(out);
   return true;
+}
+
+// Runs a decoding step; running out of memory (a header that claims more
+// texels than fit) becomes an error naming the file instead of an abort.
+template <class F>
+bool Guarded(const std::string& name, std::string* error, F step) {
+  try {
+    return step();
+  } catch (const std::bad_alloc&) {
+    *error = name + ": out of memory while decoding or converting the texture";
+    return false;
+  }
 }
 
 }  // namespace
@@ -178,13 +193,15 @@ bool LoadTextureFile(const std::string& path, TextureKind kind, const TextureLoa
     *error = path + ": texture has zero size (empty file)";
     return false;
   }
-  ImageFileData img;
-  std::string reason;
-  if (!ReadImageFile(path, &img, &reason, opts.maxDimension)) {
-    *error = path + ": unsupported texture format or unreadable image (" + reason + ")";
-    return false;
-  }
-  return ConvertImage(img, path, kind, opts, out, error);
+  return Guarded(path, error, [&] {
+    ImageFileData img;
+    std::string reason;
+    if (!ReadImageFile(path, &img, &reason, opts.maxDimension)) {
+      *error = path + ": unsupported texture format or unreadable image (" + reason + ")";
+      return false;
+    }
+    return ConvertImage(img, path, kind, opts, out, error);
+  });
 }
 
 bool LoadTextureMemory(const void* data, size_t size, const std::string& formatHint, const std::string& name,
@@ -196,13 +213,15 @@ bool LoadTextureMemory(const void* data, size_t size, const std::string& formatH
   std::string hint = formatHint.empty() ? "png" : formatHint;
   for (auto& c : hint) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (hint == "jpeg") hint = "jpg";
-  ImageFileData img;
-  std::string reason;
-  if (!ReadImageMemory(data, size, "embedded." + hint, &img, &reason, opts.maxDimension)) {
-    *error = name + ": unsupported embedded texture format '" + hint + "' (" + reason + ")";
-    return false;
-  }
-  return ConvertImage(img, name, kind, opts, out, error);
+  return Guarded(name, error, [&] {
+    ImageFileData img;
+    std::string reason;
+    if (!ReadImageMemory(data, size, "embedded." + hint, &img, &reason, opts.maxDimension)) {
+      *error = name + ": unsupported embedded texture format '" + hint + "' (" + reason + ")";
+      return false;
+    }
+    return ConvertImage(img, name, kind, opts, out, error);
+  });
 }
 
 bool MakeTextureRGBA8(const uint8_t* rgba, uint32_t width, uint32_t height, const std::string& name, TextureKind kind,

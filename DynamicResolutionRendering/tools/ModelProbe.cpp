@@ -1,5 +1,6 @@
 // drr_model_probe: loads a model (or a scene description) on the CPU exactly as
-// the scene does (Assimp + textures through ImageFile.h) and prints counts.
+// the scene does (through the import worker, IsolatedImport.h, unless
+// --in-process) and prints counts.
 // Exit 0 on success, 1 on a clean failure (the message says why), 2 on bad usage.
 #include <chrono>
 #include <cstdio>
@@ -14,6 +15,7 @@
 
 #include <assimp/Importer.hpp>
 
+#include "scene/IsolatedImport.h"
 #include "scene/ModelLoader.h"
 #include "scene/SceneDescription.h"
 
@@ -23,15 +25,17 @@ namespace {
 
 int Usage() {
   std::fprintf(stderr,
-               "usage: drr_model_probe [--quiet] [--no-textures] [--max-memory-mb N] <model file | scene_description.txt>\n"
-               "       (address space limited to min(8 GiB, 3/4 of RAM) by default, 0 = no limit, so files\n"
-               "        that claim absurd element counts fail with 'out of memory' instead of thrashing)\n"
+               "usage: drr_model_probe [--quiet] [--no-textures] [--in-process [--max-memory-mb N]]\n"
+               "                       <model file | scene_description.txt>\n"
+               "       Files are decoded by drr_import_worker under its limits (DRR_IMPORT_* variables).\n"
+               "       --in-process decodes them here instead, with the address space limited to\n"
+               "       min(8 GiB, 3/4 of RAM) by default (--max-memory-mb, 0 = no limit).\n"
                "       drr_model_probe --list-extensions   (the model file extensions Assimp imports)\n");
   return 2;
 }
 
 struct ProbeArgs {
-  bool quiet = false, textures = true;
+  bool quiet = false, textures = true, inProcess = false;
   long long maxMemMb = -1;  // -1: the default limit, 0: none
   std::string path;
 };
@@ -52,6 +56,7 @@ int ParseArgs(int argc, char** argv, ProbeArgs* args) {
     std::string a = argv[i];
     if (a == "--quiet") args->quiet = true;
     else if (a == "--no-textures") args->textures = false;
+    else if (a == "--in-process") args->inProcess = true;
     else if (a == "--max-memory-mb" && i + 1 < argc) args->maxMemMb = std::atoll(argv[++i]);
     else if (a == "--list-extensions") {
       ListExtensions();
@@ -97,9 +102,13 @@ bool ReadItems(const std::string& path, std::vector<Item>* items) {
 }
 
 // The model with its animation file's animations attached, as the scene loads it.
-bool LoadItem(const Item& it, ModelData* m) {
+bool Load(bool inProcess, const std::string& path, const ModelLoadOptions& o, ModelData* m, std::string* err) {
+  return inProcess ? LoadModel(path, o, m, err) : ImportModelIsolated(path, o, ImportLimits::FromEnvironment(), m, err);
+}
+
+bool LoadItem(const Item& it, bool inProcess, ModelData* m) {
   std::string err;
-  if (!LoadModel(it.mesh, {}, m, &err)) {
+  if (!Load(inProcess, it.mesh, {}, m, &err)) {
     std::fprintf(stderr, "error: %s\n", err.c_str());
     return false;
   }
@@ -107,7 +116,7 @@ bool LoadItem(const Item& it, ModelData* m) {
     ModelData a;
     ModelLoadOptions ao;
     ao.animationsOnly = true;
-    if (!LoadModel(it.anim, ao, &a, &err)) {
+    if (!Load(inProcess, it.anim, ao, &a, &err)) {
       std::fprintf(stderr, "error: %s\n", err.c_str());
       return false;
     }
@@ -159,17 +168,17 @@ struct Totals {
 int main(int argc, char** argv) {
   ProbeArgs args;
   if (const int rc = ParseArgs(argc, argv, &args); rc != kRun) return rc;
-  LimitAddressSpace(args.maxMemMb);
+  if (args.inProcess) LimitAddressSpace(args.maxMemMb);
 
   auto t0 = std::chrono::steady_clock::now();
   std::vector<Item> items;
   if (!ReadItems(args.path, &items)) return 1;
-  TextureCache cache;
+  TextureCache cache({}, args.inProcess ? TextureCache::FileLoader() : IsolatedTextureLoader());
   Totals total;
   std::vector<std::string> warnings;
   for (const auto& it : items) {
     ModelData m;
-    if (!LoadItem(it, &m)) return 1;
+    if (!LoadItem(it, args.inProcess, &m)) return 1;
     for (auto& w : m.warnings) warnings.push_back(it.mesh + ": " + w);
     if (args.textures) LoadTextures(m, cache, &warnings);
     total.Add(m);

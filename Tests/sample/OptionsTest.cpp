@@ -224,7 +224,7 @@ TEST(SampleOptions, HelpAndParserShareOneTable) {
       EXPECT_EQ(m.find("unknown option"), std::string::npos) << word << ": " << m;
     }
   }
-  EXPECT_EQ(shown, 37);  // every option of the sample once (-h is --help's other name)
+  EXPECT_EQ(shown, 38);  // every option of the sample once (-h is --help's other name)
   for (const FixInfo& f : FixTable()) EXPECT_NE(help.find(std::string("  ") + f.name + " "), std::string::npos);
   for (int f = 0; f < static_cast<int>(Filter::Count); ++f)
     EXPECT_NE(help.find(FilterOption(static_cast<Filter>(f))), std::string::npos);
@@ -340,4 +340,13 @@ TEST(SampleOptions, FixListParsesAndRoundTrips) {
     EXPECT_EQ(ParseCommandLine(std::vector<std::string>{"--fix", bad}, &o, &m), ParseStatus::Error) << bad;
     EXPECT_NE(m.find("--fix"), std::string::npos) << m;
   }
+}
+
+TEST(SampleOptions, QuietIsOffByDefaultAndParsed) {
+  Options o;
+  std::string m;
+  ASSERT_EQ(Parse({}, &o, &m), ParseStatus::Ok);
+  EXPECT_FALSE(o.quiet);
+  ASSERT_EQ(Parse({"--quiet"}, &o, &m), ParseStatus::Ok) << m;
+  EXPECT_TRUE(o.quiet);
 }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "scene/IsolatedImport.h"
 #include "scene/ModelLoader.h"
 #include "scene/TextureLoader.h"
 
@@ -120,7 +121,9 @@ TEST(BadInput, HugeCountsFailCleanly) {
                                      "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n";
   ModelData m;
   std::string err;
-  EXPECT_FALSE(LoadModel((dir / "huge.ply").string(), {}, &m, &err));
+  // Through the import worker, as the sample loads them: in process, Assimp's
+  // allocation for the claimed counts is an abort under AddressSanitizer.
+  EXPECT_FALSE(ImportModelIsolated((dir / "huge.ply").string(), {}, ImportLimits::FromEnvironment(), &m, &err));
   EXPECT_NE(err.find("huge.ply"), std::string::npos) << err;
   // A binary STL that claims more triangles than the file holds.
   {
@@ -130,7 +133,7 @@ TEST(BadInput, HugeCountsFailCleanly) {
     uint32_t n = 0xfffffff0u;
     f.write(reinterpret_cast<const char*>(&n), 4);
   }
-  EXPECT_FALSE(LoadModel((dir / "huge.stl").string(), {}, &m, &err));
+  EXPECT_FALSE(ImportModelIsolated((dir / "huge.stl").string(), {}, ImportLimits::FromEnvironment(), &m, &err));
   EXPECT_NE(err.find("huge.stl"), std::string::npos) << err;
   // Our own limits.
   WriteBinaryStl(dir / "ok.stl", {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 1, 1, 0, 1, 0, 1, 1}});

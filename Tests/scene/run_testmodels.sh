@@ -4,10 +4,18 @@
 # folder that falls in this shard with drr_model_probe, each in its own process
 # under `timeout`, and classifies it: loaded (exit 0), clean failure (exit 1
 # with an "error:" message), crash (killed by a signal or any other exit),
-# hang (timeout). Exits non-zero if anything crashed or hung.
+# hang (timeout). Exits non-zero if anything crashed or hung. The probe decodes
+# through the import worker (IsolatedImport.h), whose limits are set below the
+# script's, so a file that hangs Assimp is a clean failure; the log records the
+# peak RSS of probe + worker per file (GNU time, when installed).
 set -u
 probe=$1; dir=$2; shard=${3:-0}; shards=${4:-1}; log=${5:-/dev/null}
-limit=${DRR_PROBE_TIMEOUT:-20}
+limit=${DRR_PROBE_TIMEOUT:-60}
+export DRR_IMPORT_CPU_SECONDS=${DRR_IMPORT_CPU_SECONDS:-10} DRR_IMPORT_TIMEOUT_SECONDS=${DRR_IMPORT_TIMEOUT_SECONDS:-20}
+export DRR_IMPORT_MEMORY_MB=${DRR_IMPORT_MEMORY_MB:-4096}
+timecmd=(); rssfile=$(mktemp); trap 'rm -f "$rssfile"' EXIT
+[[ -x /usr/bin/time ]] && timecmd=(/usr/bin/time -q -f %M -o "$rssfile")
+peak=0
 mapfile -t exts < <("$probe" --list-extensions | sed -n 's/^\*\.//p' | tr 'A-Z' 'a-z' | sort -u)
 declare -A ok_ext=()
 for e in "${exts[@]}"; do ok_ext[$e]=1; done
@@ -21,7 +29,11 @@ for f in "${files[@]}"; do
   idx=$((idx + 1))
   (( (idx - 1) % shards == shard )) || continue
   n=$((n + 1))
-  out=$(timeout -k 5 "$limit" "$probe" --quiet "$f" 2>&1); rc=$?
+  : > "$rssfile"
+  out=$(timeout -k 5 "$limit" "${timecmd[@]}" "$probe" --quiet ${DRR_PROBE_ARGS:-} "$f" 2>&1); rc=$?
+  rss=$(tail -n1 "$rssfile" 2>/dev/null); [[ "$rss" =~ ^[0-9]+$ ]] || rss=0
+  (( rss > peak )) && peak=$rss
+  echo "RSS_KB $rss $f" >> "$log"
   if (( rc == 0 )); then
     loaded=$((loaded + 1)); echo "LOADED  $f" >> "$log"
   elif (( rc == 124 || rc == 137 )); then
@@ -33,5 +45,5 @@ for f in "${files[@]}"; do
   fi
 done
 secs=$(( $(date +%s) - start ))
-echo "assimp-testmodels shard $shard/$shards: $n files: $loaded loaded, $failed clean failures, $crashed crashes, $hung hangs (${secs}s, limit ${limit}s per file; log: $log)"
+echo "assimp-testmodels shard $shard/$shards: $n files: $loaded loaded, $failed clean failures, $crashed crashes, $hung hangs, peak RSS $((peak / 1024)) MiB (${secs}s, limit ${limit}s per file; log: $log)"
 (( crashed == 0 && hung == 0 ))

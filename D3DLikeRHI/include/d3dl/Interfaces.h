@@ -238,5 +238,8 @@ class Device : public Unknown {
 // Creates the Vulkan instance, picks an adapter and creates the device and
 // its immediate context. On failure the log callback says why.
 HRESULT CreateDevice(const DEVICE_CREATE_DESC* desc, Device** device, DeviceContext** context);
+// Devices of this process not yet destroyed (vkDestroyDevice not yet called):
+// 0 after a clean shutdown; otherwise some object still holds its device.
+UINT LiveDeviceCount();
 
 }  // namespace d3dl
