@@ -9,6 +9,8 @@
 
 #include "imageio/ImageFile.h"
 
+#include "imageio/FileBytes.h"
+
 namespace drr {
 
 namespace {
@@ -83,21 +85,6 @@ bool ReadImageMemory(const void* data, size_t size, const std::string& name, Ima
 }
 
 namespace {
-// Writes the encoded bytes with every error checked (a full disk, /dev/full):
-// OpenImageIO's own file writers can report success after a failed write.
-bool WriteBytes(const std::string& path, const std::vector<unsigned char>& bytes, std::string* error) {
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) {
-    if (error) *error = path + ": cannot open for writing (" + std::strerror(errno) + ")";
-    return false;
-  }
-  bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-  ok = std::fflush(f) == 0 && ok;
-  const int err = errno;
-  ok = std::fclose(f) == 0 && ok;
-  if (!ok && error) *error = path + ": write failed (" + std::strerror(errno ? errno : err) + ")";
-  return ok;
-}
 
 bool Write(const std::string& path, uint32_t w, uint32_t h, uint32_t channels,
            OIIO::TypeDesc type, const void* pixels, size_t rowPitch, std::string* error) {
@@ -116,7 +103,7 @@ bool Write(const std::string& path, uint32_t w, uint32_t h, uint32_t channels,
     if (error) *error = path + ": " + out->geterror();
     return false;
   }
-  return inMemory ? WriteBytes(path, encoded, error) : true;
+  return inMemory ? WriteFileBytes(path, encoded, error) : true;
 }
 }  // namespace
 

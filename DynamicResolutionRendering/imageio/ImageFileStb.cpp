@@ -13,6 +13,8 @@
 
 #include "imageio/ImageFile.h"
 
+#include "imageio/FileBytes.h"
+
 namespace drr {
 
 namespace {
@@ -93,20 +95,6 @@ void Append(void* context, void* data, int size) {
   v->insert(v->end(), static_cast<uint8_t*>(data), static_cast<uint8_t*>(data) + size);
 }
 
-// Writes the encoded bytes with every error checked (stb's own file writers
-// do not check fwrite/fclose, so a full disk would look like success).
-bool WriteBytes(const std::string& path, const std::vector<uint8_t>& bytes, std::string* error) {
-  std::FILE* f = std::fopen(path.c_str(), "wb");
-  if (!f) {
-    if (error) *error = path + ": cannot open for writing (" + std::strerror(errno) + ")";
-    return false;
-  }
-  bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-  ok = std::fflush(f) == 0 && ok;
-  ok = std::fclose(f) == 0 && ok;
-  if (!ok && error) *error = path + ": write failed (" + std::strerror(errno) + ")";
-  return ok;
-}
 }  // namespace
 
 bool WriteImageFile(const std::string& path, uint32_t width, uint32_t height, uint32_t channels,
@@ -136,7 +124,7 @@ bool WriteImageFile(const std::string& path, uint32_t width, uint32_t height, ui
     if (error) *error = path + ": cannot encode the image";
     return false;
   }
-  return WriteBytes(path, encoded, error);
+  return WriteFileBytes(path, encoded, error);
 }
 
 bool WriteImageFileFloat(const std::string& path, uint32_t width, uint32_t height,
@@ -150,7 +138,7 @@ bool WriteImageFileFloat(const std::string& path, uint32_t width, uint32_t heigh
     if (error) *error = path + ": cannot encode the image";
     return false;
   }
-  return WriteBytes(path, encoded, error);
+  return WriteFileBytes(path, encoded, error);
 }
 
 std::string ImageFileBackend() { return "stb"; }

@@ -1,0 +1,24 @@
+#include "imageio/FileBytes.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+namespace drr {
+
+bool WriteFileBytes(const std::string& path, const std::vector<uint8_t>& bytes, std::string* error) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) {
+    if (error) *error = path + ": cannot open for writing (" + std::strerror(errno) + ")";
+    return false;
+  }
+  errno = 0;
+  bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+  ok = std::fflush(f) == 0 && ok;
+  const int writeErr = errno;
+  ok = std::fclose(f) == 0 && ok;
+  if (!ok && error) *error = path + ": write failed (" + std::strerror(errno ? errno : writeErr) + ")";
+  return ok;
+}
+
+}  // namespace drr
