@@ -22,14 +22,20 @@ struct Log {
     if (level == LogLevel::Validation || level == LogLevel::Error) self->validation.push_back(message ? message : "");
   }
 };
+
+// A device description whose validation messages go to *log.
+DEVICE_CREATE_DESC LoggingDesc(Log* log) {
+  DEVICE_CREATE_DESC desc;
+  desc.Validation = ValidationMode::FromEnvironment;
+  desc.Log = &Log::Thunk;
+  desc.LogUser = log;
+  return desc;
+}
 }  // namespace
 
 TEST(RhiShutdown, DeviceIsDestroyedWithUnreadQueriesInFlight) {
   Log log;
-  DEVICE_CREATE_DESC desc;
-  desc.Validation = ValidationMode::FromEnvironment;
-  desc.Log = &Log::Thunk;
-  desc.LogUser = &log;
+  const DEVICE_CREATE_DESC desc = LoggingDesc(&log);
   const UINT before = LiveDeviceCount();
   {
     ComPtr<Device> device;
@@ -56,10 +62,7 @@ TEST(RhiShutdown, DeviceIsDestroyedWithUnreadQueriesInFlight) {
 
 TEST(RhiShutdown, DeviceReleasedBeforeItsChildrenIsDestroyedWithTheLastChild) {
   Log log;
-  DEVICE_CREATE_DESC desc;
-  desc.Validation = ValidationMode::FromEnvironment;
-  desc.Log = &Log::Thunk;
-  desc.LogUser = &log;
+  const DEVICE_CREATE_DESC desc = LoggingDesc(&log);
   const UINT before = LiveDeviceCount();
   ComPtr<Device> device;
   ComPtr<DeviceContext> context;
