@@ -321,13 +321,8 @@ void Sample::RunResolutionControl() {
 
 void Sample::UpdateStats() {
   const FrameTimers& t = m_Passes.Timers();
-  m_Stats.frameMs = t.frame.AverageMs();
-  m_Stats.clearMs = t.clear.AverageMs();
-  m_Stats.sceneMs = t.scene.AverageMs();
-  m_Stats.postPMs = t.postP.AverageMs();
-  m_Stats.scaleMs = t.scale.AverageMs();
-  m_Stats.vsyncMs = 1000.0 * TargetFrameSeconds(m_RefreshHz, m_Options.control);
-  m_Stats.fps = m_LastFrameSeconds > 0 ? 1.0 / m_LastFrameSeconds : 0.0;
+  m_Stats.timing = {t.frame.AverageMs(), t.clear.AverageMs(), t.scene.AverageMs(), t.postP.AverageMs(),
+                    t.scale.AverageMs(), m_RefreshHz};
   m_Stats.scaleX = m_DynamicResolution.GetScaleX();
   m_Stats.scaleY = m_DynamicResolution.GetScaleY();
 }
@@ -341,6 +336,7 @@ FrameSetup Sample::MakeFrameSetup() {
   s.psClear = m_Options.psClear;
   s.markOutside = m_Options.debugMarkerOutside;
   s.filter = m_Options.filter;
+  s.fixes = m_Options.fixes;
   const DynamicResolution& dr = m_DynamicResolution;
   const DynamicViewport v = dr.GetViewport();
   s.backBufferViewport = {0, 0, float(m_Device.Width()), float(m_Device.Height()), 0, 1};
@@ -349,7 +345,7 @@ FrameSetup Sample::MakeFrameSetup() {
   m_History.Advance(s, s.dynamic ? glm::vec2(dr.GetRTScaleX(), dr.GetRTScaleY()) : glm::vec2(1.f),
                     m_Options.symmetricTAA);
   FillConstants(s, m_History, glm::vec2(dr.GetDynamicBufferWidth(), dr.GetDynamicBufferHeight()),
-                glm::vec2(m_Device.Width(), m_Device.Height()), m_Options.fixes);
+                glm::vec2(m_Device.Width(), m_Device.Height()));
   // The original's paused TAA resolve reads target 0 as the current frame.
   s.pausedSwap = m_Options.pause && s.taa && s.cur == 1;
   return s;
@@ -425,7 +421,6 @@ void Sample::RenderGui(double elapsed) {
   v.scaleY = m_DynamicResolution.GetScaleY();
   v.backBufferW = m_Device.Width();
   v.backBufferH = m_Device.Height();
-  v.refreshHz = m_RefreshHz;
   v.dxutFps = m_Fps.Fps();
   v.vsync = m_Window.Handle() && m_Options.vsync;  // as Present is called
   d3dl::TEXTURE2D_DESC bd;
@@ -492,7 +487,7 @@ bool Sample::WriteReport(const std::string& path, std::string* error) const {
   ReportInfo info;
   info.options = &m_Options;
   info.refreshHz = m_RefreshHz;
-  info.budgetMs = m_Stats.vsyncMs > 0 ? m_Stats.vsyncMs : 1000.0 / m_RefreshHz;
+  info.budgetMs = 1000.0 * TargetFrameSeconds(m_RefreshHz, m_Options.control);
   info.lawLatencyFrames = m_LawLatency;
   info.adapter = m_Device.Adapter().Description;
   info.driver = m_Device.Adapter().Driver;

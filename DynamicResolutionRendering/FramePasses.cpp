@@ -187,7 +187,7 @@ void TemporalHistory::Advance(FrameSetup& s, glm::vec2 ratio, bool symmetric) {
   s.prev = (s.taa && valid) ? 1 - current : current;
 }
 
-void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dyn, glm::vec2 bb, FixSet fixes) {
+void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dyn, glm::vec2 bb) {
   constexpr float kClearColor[4] = {0.0f, 0.1f, 0.1f, 1.0f};
   DynamicConstants& dc = s.dc;
   dc = {{h.ratioCurr.x, h.ratioCurr.y}, {h.ratioPrev.x, h.ratioPrev.y}, {h.jitterCurr.x, h.jitterCurr.y},
@@ -195,8 +195,7 @@ void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dyn, glm::
   std::memcpy(dc.clearColor, kClearColor, sizeof kClearColor);
   s.fc = {{bb.x, bb.y}, {1.0f / bb.x, 1.0f / bb.y}, {}, 0, {}};
   std::memcpy(s.fc.clearColor, kClearColor, sizeof kClearColor);
-  dc.fixes = s.fc.fixes = fixes.bits;
-  s.fixes = fixes;
+  dc.fixes = s.fc.fixes = s.fixes.bits;
 }
 
 SceneTargets ChooseSceneTargets(RenderTargetSet& rts, const FrameSetup& s, const BackBuffer& bb) {

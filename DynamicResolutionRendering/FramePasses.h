@@ -85,9 +85,8 @@ struct TemporalHistory {
   // ratios; s.cur and s.prev; the viewport is already in s.
   void Advance(FrameSetup& s, glm::vec2 ratio, bool symmetric);
 };
-// The constants of both post-processing paths for this frame.
-void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dynamicRT, glm::vec2 backBuffer,
-                   FixSet fixes);
+// The constants of both post-processing paths for this frame (the fixes from s.fixes).
+void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dynamicRT, glm::vec2 backBuffer);
 
 SceneTargets ChooseSceneTargets(RenderTargetSet& targets, const FrameSetup& setup, const BackBuffer& bb);
 

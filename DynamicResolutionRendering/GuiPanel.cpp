@@ -106,8 +106,7 @@ void GuiPanel::Panel(const GuiView& v) {
   staticRect = {top.x, top.y, top.x + kPanelWidth, ImGui::GetCursorScreenPos().y - 2.0f};
   const bool sliderMoved = ScaleSliders(v, &o);
   FilterAndControl(&o);
-  const SampleStats& st = *v.stats;
-  for (const std::string& line : TimingLines({st.frameMs, st.clearMs, st.sceneMs, st.postPMs, st.scaleMs, v.refreshHz}))
+  for (const std::string& line : TimingLines(v.stats->timing))
     ImGui::TextUnformatted(line.c_str());
   PortSection(&o);
   ImGui::End();

@@ -18,10 +18,10 @@ struct ImGuiContext;
 
 namespace drr {
 
-// Everything the GUI shows as statistics (refreshed by Sample::UpdateStats).
+// Everything the GUI shows as statistics (refreshed by Sample::UpdateStats):
+// the timing lines and the scale the sliders' labels show.
 struct SampleStats {
-  double frameMs = 0, clearMs = 0, sceneMs = 0, postPMs = 0, scaleMs = 0, vsyncMs = 0;
-  double fps = 0;
+  TimingStats timing;
   float scaleX = 1, scaleY = 1;
 };
 
@@ -33,7 +33,6 @@ struct GuiView {
   std::function<std::string(int)> cameraName;
   float scaleX = 1, scaleY = 1;  // the applied dynamic scale
   uint32_t backBufferW = 0, backBufferH = 0;
-  double refreshHz = 60.0;  // the display's (the original's g_VSyncFrameRate)
   double dxutFps = 0.0;  // DXUT's one-second figure (the coordinator's DxutFpsCounter)
   bool vsync = true, softwareAdapter = false;
   std::string backBufferFormat, adapter, lastMessage;

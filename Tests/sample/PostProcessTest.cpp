@@ -54,21 +54,12 @@ uint64_t PixelsBeyondLinearRounding(const Image& a, const Image& b) {
   return beyond;
 }
 
-class PostFixture : public ::testing::Test {
+class PostFixture : public SampleTest {
  protected:
-  void Start(const Options& o) {
-    std::string err;
-    ASSERT_EQ(sample.Init(o, &err), 0) << err;
-  }
-  void TearDown() override {
-    EXPECT_EQ(sample.ValidationMessages(), 0u) << "validation messages were reported";
-    sample.Shutdown();
-  }
   Image RenderWith(Options& o, int n = 2) {
     sample.ApplySettings(o);
     return RenderAndCapture(sample, n);
   }
-  Sample sample;
 };
 
 }  // namespace
@@ -83,7 +74,7 @@ TEST_F(PostFixture, PointEqualsBilinearWhenSuperSampledAtTwo) {
   o.scaleX = o.scaleY = 2.0f;
   o.motionBlur = false;
   o.filter = Filter::Point;
-  Start(o);
+  StartSample(o);
   const Image point = RenderAndCapture(sample, 2);
   o.filter = Filter::Bilinear;
   const Image bilinear = RenderWith(o);
@@ -123,7 +114,7 @@ TEST_F(PostFixture, TAAJitterMovesTheSceneRightAndUp) {
   Options o = TinyOptions(320, 180);
   o.motionBlur = false;  // the scene draws into the final targets, captured as scene colour
   o.filter = Filter::TAA;
-  Start(o);
+  StartSample(o);
   RenderAndCapture(sample, 3);
   const Image a = sample.CapturedSceneColor();
   RenderAndCapture(sample, 1);
@@ -220,7 +211,7 @@ TEST_F(PostFixture, BicubicIsTheOriginalsFormula) {
   o.motionBlur = false;  // the scene draws straight into the final RT that the resolve reads
   o.filter = Filter::Bicubic;
   o.scaleX = o.scaleY = 0.5f;
-  Start(o);
+  StartSample(o);
   const Image bb = RenderAndCapture(sample, 2);
   const Image& rt = sample.CapturedSceneColor();
   const DynamicResolution& dr = sample.GetDynamicResolution();
@@ -258,7 +249,7 @@ TEST_F(PostFixture, NoiseChangesEveryFrameNoiseOffsetDoesNot) {
   Options o = TinyOptions();
   o.scaleX = o.scaleY = 0.5f;  // noise strength 2 - 0.5 - 0.5 = 1
   o.filter = Filter::NoiseOffset;
-  Start(o);
+  StartSample(o);
   const Image a = RenderAndCapture(sample, 2), b = RenderAndCapture(sample, 1);
   const Diff offset = Compare(a, b);
   o.filter = Filter::Noise;
@@ -283,7 +274,7 @@ TEST_F(PostFixture, ApiClearCoversTheWholeTarget) {
   o.scaleX = o.scaleY = 0.5f;
   o.debugMarkerOutside = true;  // magenta outside the viewport before the clear
   o.psClear = false;
-  Start(o);
+  StartSample(o);
   RenderAndCapture(sample, 2);
   // The clear colour's green, 0.1, as the scene colour target stores it:
   // linear in the original's UNORM target, encoded in an sRGB one.
@@ -328,7 +319,7 @@ TEST_F(PostFixture, FixNoneShowsRTChangesOnlyNoneWithoutMotionBlur) {
   o.scaleX = o.scaleY = 0.5f;
   o.filter = Filter::None;
   o.motionBlur = false;
-  Start(o);
+  StartSample(o);
   EXPECT_TRUE(AllBlack(RenderAndCapture(sample, 2))) << "the original's None without motion blur";
   o.fixes.Set(Fix::NoneShowsRT, true);
   const Image fixed = RenderWith(o);
@@ -434,7 +425,7 @@ TEST_F(PostFixture, FixUvInsetChangesOnlyTheViewportEdge) {
   o.motionBlur = false;
   o.debugMarkerOutside = true;
   o.filter = Filter::Bilinear;
-  Start(o);
+  StartSample(o);
   for (Filter f : {Filter::Point, Filter::Bilinear, Filter::Bicubic, Filter::NoiseOffset}) {
     o.filter = f;
     o.fixes = {};

@@ -60,18 +60,7 @@ void RenderFrames(Sample& s, int n) {
   }
 }
 
-class SampleFixture : public ::testing::Test {
- protected:
-  void StartSample(const Options& o) {
-    std::string err;
-    ASSERT_EQ(sample.Init(o, &err), 0) << err;
-  }
-  void TearDown() override {
-    EXPECT_EQ(sample.ValidationMessages(), 0u) << "validation messages were reported";
-    sample.Shutdown();
-  }
-  Sample sample;
-};
+using SampleFixture = SampleTest;
 
 }  // namespace
 

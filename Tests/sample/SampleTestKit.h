@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <string>
 
 #include "DynamicResolutionRendering.h"
 
@@ -47,5 +48,20 @@ inline Diff Compare(const Image& a, const Image& b, uint32_t border = 0) {
   d.meanAbs = counted ? sum / double(counted) : 0.0;
   return d;
 }
+
+// One sample per test, started by the test and shut down after it; any
+// validation message fails the test.
+class SampleTest : public ::testing::Test {
+ protected:
+  void StartSample(const Options& o) {
+    std::string err;
+    ASSERT_EQ(sample.Init(o, &err), 0) << err;
+  }
+  void TearDown() override {
+    EXPECT_EQ(sample.ValidationMessages(), 0u) << "validation messages were reported";
+    sample.Shutdown();
+  }
+  Sample sample;
+};
 
 }  // namespace drr::testkit
