@@ -7,8 +7,11 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${ASAN_BUILD_DIR:-$root/build-asan}"
 start=$(date +%s)
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DDRR_SANITIZE=ON \
-  -DDRR_FUZZ_SECONDS="${DRR_FUZZ_SECONDS:-30}" >/dev/null
+# -O1 with line tables only: about half the compile time of -O2 -g, and the
+# sanitizers' reports still name file and line. Assertions stay on.
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Sanitize \
+  -DCMAKE_CXX_FLAGS_SANITIZE="-O1 -g1" -DCMAKE_C_FLAGS_SANITIZE="-O1 -g1" \
+  -DDRR_SANITIZE=ON -DDRR_FUZZ_SECONDS="${DRR_FUZZ_SECONDS:-30}" >/dev/null
 cmake --build "$build" --parallel "$(nproc)"
 built=$(date +%s)
 export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=1:abort_on_error=1:strict_string_checks=1:verify_asan_link_order=0"
