@@ -77,7 +77,9 @@ if command -v xdotool >/dev/null; then
   if [ -n "${wid:-}" ]; then
     xdotool windowsize "$wid" 1 1; sleep 0.5
     xdotool windowsize "$wid" 500 300; sleep 0.5
-    xdotool windowminimize "$wid"; sleep 0.5
+    # Minimised long enough for a frame in flight to finish first, even in the
+    # sanitizer build on a loaded machine (0.5 s was seen to be too short there).
+    xdotool windowminimize "$wid"; sleep 3
     xdotool windowactivate "$wid" 2>/dev/null; sleep 0.3
     # Real key events (XTEST) go to the focused window: Escape closes the sample.
     xdotool windowactivate --sync "$wid" 2>/dev/null; xdotool key Escape
