@@ -1,0 +1,27 @@
+// Quad-domain hull shader, integer partitioning; the factors come from b1.
+#include "tess_common.hlsli"
+
+cbuffer Factors : register(b1) {
+  float4 edgeFactors;    // left, bottom, right, top (D3D SV_TessFactor order)
+  float2 insideFactors;  // u, v
+};
+
+QuadPatchFactors PatchFactors(InputPatch<ControlPoint, 4> patch) {
+  QuadPatchFactors f;
+  f.edges[0] = edgeFactors.x;
+  f.edges[1] = edgeFactors.y;
+  f.edges[2] = edgeFactors.z;
+  f.edges[3] = edgeFactors.w;
+  f.inside[0] = insideFactors.x;
+  f.inside[1] = insideFactors.y;
+  return f;
+}
+
+[domain("quad")]
+[partitioning("integer")]
+[outputtopology("triangle_cw")]
+[outputcontrolpoints(4)]
+[patchconstantfunc("PatchFactors")]
+ControlPoint main(InputPatch<ControlPoint, 4> patch, uint i : SV_OutputControlPointID) {
+  return patch[i];
+}
