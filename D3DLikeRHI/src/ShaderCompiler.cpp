@@ -166,6 +166,15 @@ HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
   return S_OK;
 }
 
+bool ShaderStageFromGlslangName(const std::string& name, ShaderStage* stage) {
+  static const std::pair<const char*, ShaderStage> kNames[] = {
+      {"vert", ShaderStage::Vertex}, {"frag", ShaderStage::Pixel},     {"tesc", ShaderStage::Hull},
+      {"tese", ShaderStage::Domain}, {"geom", ShaderStage::Geometry}, {"comp", ShaderStage::Compute}};
+  for (const auto& [n, s] : kNames)
+    if (name == n) return *stage = s, true;
+  return false;
+}
+
 HRESULT ReadSpirvFile(const std::string& path, std::vector<uint32_t>* spirv, std::string* error) {
   std::ifstream f(path, std::ios::binary | std::ios::ate);
   if (!f) {

@@ -2,7 +2,7 @@
 #include "tess_common.hlsli"
 
 cbuffer Factors : register(b1) {
-  float4 edgeFactors;    // left, bottom, right, top (D3D SV_TessFactor order)
+  float4 edgeFactors;    // SV_TessFactor[0..3]: the edges u = 0, v = 0, u = 1, v = 1
   float2 insideFactors;  // u, v
 };
 
