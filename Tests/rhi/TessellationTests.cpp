@@ -178,6 +178,44 @@ TEST_F(RhiTessellation, DomainShaderPlacesAndColoursThePatch) {
   ExpectNoErrors();
 }
 
+// The tessellator's winding is read in the domain with its origin at the
+// upper left (u right, v down: D3D11's and Vulkan's default). This patch's
+// v runs up the screen, so "triangle_cw" triangles appear counter-clockwise:
+// back faces under the default rasterizer state; "triangle_ccw" ones are drawn.
+TEST_F(RhiTessellation, OutputTopologyWindingDecidesCulling) {
+  auto rt = MakeRenderTarget(kW, kH);
+  Bind(rt, kW, kH);
+  LoadQuadPatchShaders();
+  const float placement[4] = {1, 1, 0, 0};
+  const QuadFactors f{{3, 3, 3, 3}, {3, 3}};
+  auto factorsCB = MakeCB(32, USAGE_DEFAULT, &f);
+  auto placementCB = MakeCB(16, USAGE_DEFAULT, placement);
+  auto colour = Texels({0xffffffffu});
+  auto smp = MakeSampler(FILTER_MIN_MAG_MIP_POINT);
+  ShaderCompileDesc cd;
+  cd.SourcePath = std::string(DRR_RHI_TEST_SHADER_SOURCE_DIR) + "/tess_quad_hs.hlsl";
+  cd.Stage = ShaderStage::Hull;
+  cd.Defines = {{"OUTPUT_TOPOLOGY", "\"triangle_ccw\""}};
+  std::vector<uint32_t> code;
+  std::string errors;
+  ASSERT_EQ(CompileHLSL(cd, &code, &errors), S_OK) << errors;
+  ComPtr<HullShader> ccw;
+  ASSERT_EQ(device()->CreateHullShader(code.data(), code.size() * 4, ccw.ReleaseAndGetAddressOf()), S_OK);
+  for (HullShader* hs : {hs_.Get(), ccw.Get()}) {
+    const bool clockwise = hs == hs_.Get();
+    SCOPED_TRACE(clockwise ? "triangle_cw" : "triangle_ccw");
+    context()->ClearRenderTargetView(rt.rtv.Get(), kBlack);
+    BindQuadPatch(factorsCB.Get(), placementCB.Get(), colour.Get(), smp.Get());
+    context()->HSSetShader(hs);
+    context()->RSSetState(nullptr);  // CULL_BACK, clockwise front faces
+    const auto s = Statistics([&] { context()->Draw(4, 0); });
+    EXPECT_EQ(s.CInvocations, 18u);
+    auto img = ReadBack(rt.texture.Get());
+    EXPECT_EQ(img.RGBA8(32, 32)[0], clockwise ? 0 : 255);
+  }
+  ExpectNoErrors();
+}
+
 // Points -> quads in the GS (half-size and target size from b0, colour
 // texel [SV_PrimitiveID] of t2 through s3), against a CPU raster.
 TEST_F(RhiTessellation, GeometryShaderExpandsPointsToQuads) {

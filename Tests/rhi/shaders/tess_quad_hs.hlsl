@@ -1,5 +1,10 @@
 // Quad-domain hull shader, integer partitioning; the factors come from b1.
+// OUTPUT_TOPOLOGY may name "triangle_ccw" instead.
 #include "tess_common.hlsli"
+
+#ifndef OUTPUT_TOPOLOGY
+#define OUTPUT_TOPOLOGY "triangle_cw"
+#endif
 
 cbuffer Factors : register(b1) {
   float4 edgeFactors;    // SV_TessFactor[0..3]: the edges u = 0, v = 0, u = 1, v = 1
@@ -19,7 +24,7 @@ QuadPatchFactors PatchFactors(InputPatch<ControlPoint, 4> patch) {
 
 [domain("quad")]
 [partitioning("integer")]
-[outputtopology("triangle_cw")]
+[outputtopology(OUTPUT_TOPOLOGY)]
 [outputcontrolpoints(4)]
 [patchconstantfunc("PatchFactors")]
 ControlPoint main(InputPatch<ControlPoint, 4> patch, uint i : SV_OutputControlPointID) {
