@@ -4,7 +4,7 @@
 # the same one D3DLikeRHI/include/d3dl/Bindings.h states and the RHI tests check:
 #
 #   binding = 64 * stage + classBase + slot
-#   stage:     VS = 0, PS = 1
+#   stage:     VS = 0, PS = 1, HS = 2, DS = 3, GS = 4
 #   classBase: b# (cbuffer) = 0   (slots 0..13)
 #              t# (texture) = 16  (slots 0..31)
 #              s# (sampler) = 48  (slots 0..15)
@@ -16,12 +16,19 @@ set(D3DL_CBUFFER_BASE 0)
 set(D3DL_TEXTURE_BASE 16)
 set(D3DL_SAMPLER_BASE 48)
 
-# d3dl_hlsl_shift_args(<out-var> <stage: vert|frag>)
+# d3dl_hlsl_shift_args(<out-var> <stage: vert|frag|tesc|tese|geom>)
+# (glslang's names of the VS, PS, HS, DS and GS stages)
 function(d3dl_hlsl_shift_args out stage)
   if(stage STREQUAL "vert")
     set(index 0)
   elseif(stage STREQUAL "frag")
     set(index 1)
+  elseif(stage STREQUAL "tesc")
+    set(index 2)
+  elseif(stage STREQUAL "tese")
+    set(index 3)
+  elseif(stage STREQUAL "geom")
+    set(index 4)
   else()
     message(FATAL_ERROR "d3dl: unsupported shader stage '${stage}'")
   endif()
@@ -36,7 +43,7 @@ function(d3dl_hlsl_shift_args out stage)
       PARENT_SCOPE)
 endfunction()
 
-# d3dl_compile_hlsl(OUTPUT <spv> SOURCE <hlsl> ENTRY <name> STAGE <vert|frag>
+# d3dl_compile_hlsl(OUTPUT <spv> SOURCE <hlsl> ENTRY <name> STAGE <vert|frag|tesc|tese|geom>
 #                   [DEFINES A=1 B ...] [DEPENDS extra headers...] [NO_SEMANTICS])
 # Produces one .spv; only this shader rebuilds when its source or headers change.
 # NO_SEMANTICS leaves out -fhlsl_functionality1 (no HLSL semantic strings in

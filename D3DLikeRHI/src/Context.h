@@ -26,6 +26,13 @@ class QueryImpl final : public Child<Query> {
   bool resolved = false;
   uint64_t value = 0;
   bool begun = false;
+  // Pipeline statistics (QueryStatistics.cpp): its own one-query pool, the
+  // counters it holds, whether a frame end cut it short.
+  ~QueryImpl() override;
+  VkQueryPool statsPool = VK_NULL_HANDLE;
+  VkQueryPipelineStatisticFlags statsFlags = 0;
+  bool statsCut = false;
+  QUERY_DATA_PIPELINE_STATISTICS stats{};
 };
 
 // What a context records with in one frame slot of the queue: its command
@@ -76,6 +83,19 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void PSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) override;
   void PSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) override;
   void PSSetSamplers(UINT startSlot, UINT num, SamplerState* const* samplers) override;
+  // Tessellation and geometry stages (ContextStages.cpp)
+  void HSSetShader(HullShader* shader) override;
+  void HSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) override;
+  void HSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) override;
+  void HSSetSamplers(UINT startSlot, UINT num, SamplerState* const* samplers) override;
+  void DSSetShader(DomainShader* shader) override;
+  void DSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) override;
+  void DSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) override;
+  void DSSetSamplers(UINT startSlot, UINT num, SamplerState* const* samplers) override;
+  void GSSetShader(GeometryShader* shader) override;
+  void GSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) override;
+  void GSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) override;
+  void GSSetSamplers(UINT startSlot, UINT num, SamplerState* const* samplers) override;
   void RSSetViewports(UINT num, const VIEWPORT* viewports) override;
   void RSSetScissorRects(UINT num, const RECT* rects) override;
   void RSSetState(RasterizerState* state) override;
@@ -144,6 +164,15 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void SetSamplers(ShaderStage stage, UINT start, UINT num, SamplerState* const* samplers);
   void UnbindAliasedSRVs();
   void CreateDefaultStates();
+
+  // ContextStages.cpp: the bound HS/DS/GS fit each other and the topology.
+  bool CheckStageTopology();
+  // QueryStatistics.cpp: one pipeline statistics query is active at a time;
+  // a frame end ends it (a Vulkan query cannot span command buffers).
+  void BeginStatistics(QueryImpl* q);
+  void EndStatistics(QueryImpl* q);
+  void CutStatisticsAtFrameEnd();
+  QueryImpl* activeStatistics_ = nullptr;  // referenced while active
 
   // ContextDraw.cpp
   inline bool Commit(bool indexed);
@@ -229,6 +258,11 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   // (no references held; see ForgetDiscardedConstants).
   std::vector<BufferImpl*> discardedCBs_;
 };
+
+// Pipeline statistics queries (QueryStatistics.cpp): the query's pool, and
+// its counters once the frame that ended it has completed (S_FALSE before).
+bool CreateStatisticsPool(DeviceImpl* dev, QueryImpl* q);
+HRESULT ReadStatistics(DeviceImpl& dev, QueryImpl* q, void* data);
 
 // An attachment of a rendering scope that keeps its contents (D3D11 targets
 // are never discarded).

@@ -2,28 +2,9 @@
 // The hot path (only constants changed) touches the dirty bits, the ring and
 // vkCmdBindDescriptorSets with new dynamic offsets, nothing else.
 #include "Context.h"
+#include "Topology.h"
 
 namespace d3dl::impl {
-namespace {
-VkPrimitiveTopology ToVkTopology(PRIMITIVE_TOPOLOGY t) {
-  switch (t) {
-    case PRIMITIVE_TOPOLOGY_POINTLIST: return VK_PRIMITIVE_TOPOLOGY_POINT_LIST;
-    case PRIMITIVE_TOPOLOGY_LINELIST: return VK_PRIMITIVE_TOPOLOGY_LINE_LIST;
-    case PRIMITIVE_TOPOLOGY_LINESTRIP: return VK_PRIMITIVE_TOPOLOGY_LINE_STRIP;
-    case PRIMITIVE_TOPOLOGY_TRIANGLESTRIP: return VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
-    default: return VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-  }
-}
-uint32_t TopologyClass(PRIMITIVE_TOPOLOGY t) {
-  switch (t) {
-    case PRIMITIVE_TOPOLOGY_POINTLIST: return 0;
-    case PRIMITIVE_TOPOLOGY_LINELIST:
-    case PRIMITIVE_TOPOLOGY_LINESTRIP: return 1;
-    default: return 2;
-  }
-}
-}  // namespace
-
 const char* OnceErrorMessage(OnceError e) {
   switch (e) {
     case OnceError::NoVertexShader: return "draw skipped: no vertex shader is bound";
@@ -37,6 +18,14 @@ const char* OnceErrorMessage(OnceError e) {
     case OnceError::IndexBufferNeverMapped: return "DrawIndexed skipped: the DYNAMIC index buffer was never mapped";
     case OnceError::DescriptorSetFailed: return "draw skipped: descriptor set allocation failed";
     case OnceError::TooManyTimestamps: return "End: more than 1024 timestamps in one frame; extra timestamps read as 0";
+    case OnceError::HullWithoutDomain: return "draw skipped: a hull shader is bound without a domain shader";
+    case OnceError::DomainWithoutHull: return "draw skipped: a domain shader is bound without a hull shader";
+    case OnceError::PatchListWithoutHull:
+      return "draw skipped: a patch-list topology needs a hull and a domain shader";
+    case OnceError::HullWithoutPatchList:
+      return "draw skipped: hull and domain shaders need a PRIMITIVE_TOPOLOGY_<n>_CONTROL_POINT_PATCHLIST topology";
+    case OnceError::GeometryInputMismatch:
+      return "draw skipped: the geometry shader's input primitive (point/line/triangle) differs from the topology's (or the tessellator's output)";
   }
   return "?";
 }
@@ -113,6 +102,7 @@ bool ContextImpl::CheckDrawState(bool indexed) {
     return ErrorOnce(OnceError::NoRenderTarget), false;
   if (indexed && !state_.ia.indexBuffer) return ErrorOnce(OnceError::NoIndexBuffer), false;
   if (state_.ia.topology == PRIMITIVE_TOPOLOGY_UNDEFINED) return ErrorOnce(OnceError::NoTopology), false;
+  if (!CheckStageTopology()) return false;
   const RasterizerStageState& rs = state_.rs;
   return !(rs.numViewports && (rs.viewport.Width <= 0.0f || rs.viewport.Height <= 0.0f));  // nothing to draw
 }
@@ -173,6 +163,7 @@ bool ContextImpl::BindPipeline(VkCommandBuffer cmd) {
   k.depth = in.depth->uid();
   k.raster = in.raster->uid();
   k.topologyClass = TopologyClass(state_.ia.topology);
+  k.patchControlPoints = PatchControlPoints(state_.ia.topology);
   k.numRT = om.numRenderTargets;
   for (uint32_t i = 0; i < om.numRenderTargets; ++i)
     k.rt[i] = om.renderTargets[i] ? om.renderTargets[i]->v.format : VK_FORMAT_UNDEFINED;

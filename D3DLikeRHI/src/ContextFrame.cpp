@@ -16,6 +16,7 @@ ContextImpl::ContextImpl(DeviceImpl* dev) : dev_(dev) {
 }
 
 ContextImpl::~ContextImpl() {
+  if (activeStatistics_) activeStatistics_->Release();
   SaveDiscardedConstants();
   ClearState();
   defaults_ = {};
@@ -85,6 +86,7 @@ void ContextImpl::BeginCommandFrame() {
 
 void ContextImpl::EndCommandFrame(TextureCore* present) {
   EndRendering();
+  CutStatisticsAtFrameEnd();
   if (present) UseTexture(present, SubresourceRange{}, usage::Present);
   FlushBarriers();
   SaveDiscardedConstants();  // their ring slices die with this frame

@@ -10,6 +10,7 @@ UINT QueryImpl::GetDataSize() const {
     case QUERY_EVENT: return sizeof(BOOL);
     case QUERY_TIMESTAMP: return sizeof(UINT64);
     case QUERY_TIMESTAMP_DISJOINT: return sizeof(QUERY_DATA_TIMESTAMP_DISJOINT);
+    case QUERY_PIPELINE_STATISTICS: return sizeof(QUERY_DATA_PIPELINE_STATISTICS);
   }
   return 0;
 }
@@ -20,6 +21,10 @@ HRESULT DeviceImpl::CreateQuery(const QUERY_DESC* desc, Query** out) {
   if (FAILED(hr)) return hr;
   auto* q = new QueryImpl(this);
   q->desc = *desc;
+  if (desc->Query == QUERY_PIPELINE_STATISTICS && !CreateStatisticsPool(this, q)) {
+    q->Release();
+    return E_OUTOFMEMORY;
+  }
   *out = q;
   return S_OK;
 }
@@ -27,12 +32,14 @@ HRESULT DeviceImpl::CreateQuery(const QUERY_DESC* desc, Query** out) {
 void ContextImpl::Begin(Query* query) {
   auto* q = static_cast<QueryImpl*>(query);
   if (!q || !ValidateBegin(*dev_, q->desc)) return;
+  if (q->desc.Query == QUERY_PIPELINE_STATISTICS) return BeginStatistics(q);
   q->begun = true;
 }
 
 void ContextImpl::End(Query* query) {
   auto* q = static_cast<QueryImpl*>(query);
   if (!q) return;
+  if (q->desc.Query == QUERY_PIPELINE_STATISTICS) return EndStatistics(q);
   q->resolved = false;
   q->serial = dev_->CurrentSerial();
   if (q->desc.Query == QUERY_TIMESTAMP) {
@@ -89,6 +96,7 @@ HRESULT ContextImpl::GetData(Query* query, void* data, UINT size, UINT flags) {
       if (data) FillDisjoint(*dev_, data);
       return S_OK;
     case QUERY_TIMESTAMP: return ReadTimestamp(*dev_, q, data);
+    case QUERY_PIPELINE_STATISTICS: return ReadStatistics(*dev_, q, data);
   }
   return E_INVALIDARG;
 }

@@ -2,19 +2,10 @@
 // dirty bits; Commit() in ContextDraw.cpp turns them into Vulkan commands.
 // Arguments are checked by Validate*.cpp first.
 #include "Context.h"
+#include "Topology.h"
 #include "Validate.h"
 
 namespace d3dl::impl {
-namespace {
-// Pipelines are built per point / line / triangle class; the exact topology
-// is dynamic state.
-uint32_t TopologyClassOf(PRIMITIVE_TOPOLOGY p) {
-  return p == PRIMITIVE_TOPOLOGY_POINTLIST                                     ? 0u
-         : (p == PRIMITIVE_TOPOLOGY_LINELIST || p == PRIMITIVE_TOPOLOGY_LINESTRIP) ? 1u
-                                                                                 : 2u;
-}
-}  // namespace
-
 void ContextImpl::CreateDefaultStates() {
   RASTERIZER_DESC rd;
   BLEND_DESC bd;
@@ -63,10 +54,14 @@ void ContextImpl::IASetIndexBuffer(Buffer* buffer, DXGI_FORMAT format, UINT offs
   dirty_ |= kIndexBuffer;
 }
 
+// Pipelines are built per point / line / triangle / patch class (and patch
+// size); the exact topology is dynamic state.
 void ContextImpl::IASetPrimitiveTopology(PRIMITIVE_TOPOLOGY t) {
+  if (!ValidateTopology(*dev_, t)) return;
   PRIMITIVE_TOPOLOGY& current = state_.ia.topology;
   if (t == current) return;
-  if (TopologyClassOf(t) != TopologyClassOf(current) || current == PRIMITIVE_TOPOLOGY_UNDEFINED)
+  if (TopologyClass(t) != TopologyClass(current) || PatchControlPoints(t) != PatchControlPoints(current) ||
+      current == PRIMITIVE_TOPOLOGY_UNDEFINED)
     dirty_ |= kPipeline;
   current = t;
   dirty_ |= kTopology;

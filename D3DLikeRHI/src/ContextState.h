@@ -84,6 +84,12 @@ enum class OnceError : uint32_t {
   IndexBufferNeverMapped,
   DescriptorSetFailed,
   TooManyTimestamps,
+  // Tessellation and geometry stages (CheckStageTopology)
+  HullWithoutDomain,
+  DomainWithoutHull,
+  PatchListWithoutHull,
+  HullWithoutPatchList,
+  GeometryInputMismatch,
 };
 const char* OnceErrorMessage(OnceError e);
 

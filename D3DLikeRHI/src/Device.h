@@ -15,6 +15,8 @@ struct DeviceFeatures {
   bool debugUtils = false, minmax = false, depthClamp = false, swapchain = false;
   bool surface = false;  // VK_KHR_surface enabled on the instance
   bool anisotropy = false, bc = false, fillNonSolid = false, mirrorOnce = false;
+  // Tessellation and geometry stages, pipeline statistics queries.
+  bool tessellation = false, geometry = false, pipelineStatistics = false;
 };
 
 // Bound where the shader expects a resource but none is bound.
@@ -56,6 +58,9 @@ class DeviceImpl final : public Device {
   HRESULT CreateRasterizerState(const RASTERIZER_DESC*, RasterizerState**) override;
   HRESULT CreateVertexShader(const void*, size_t, VertexShader**) override;
   HRESULT CreatePixelShader(const void*, size_t, PixelShader**) override;
+  HRESULT CreateHullShader(const void*, size_t, HullShader**) override;
+  HRESULT CreateDomainShader(const void*, size_t, DomainShader**) override;
+  HRESULT CreateGeometryShader(const void*, size_t, GeometryShader**) override;
   HRESULT CreateInputLayout(const INPUT_ELEMENT_DESC*, UINT, const void*, size_t,
                             InputLayout**) override;
   HRESULT CreateQuery(const QUERY_DESC*, Query**) override;

@@ -193,6 +193,13 @@ bool DeviceImpl::EnableFeatures(VkPhysicalDeviceFeatures2* e2, VkPhysicalDeviceV
   features_.bc = f.textureCompressionBC;
   features_.fillNonSolid = f.fillModeNonSolid;
   features_.depthClamp = f.depthClamp;
+  // Tessellation and geometry stages, pipeline statistics: only when reported.
+  e.tessellationShader = f.tessellationShader;
+  e.geometryShader = f.geometryShader;
+  e.pipelineStatisticsQuery = f.pipelineStatisticsQuery;
+  features_.tessellation = f.tessellationShader;
+  features_.geometry = f.geometryShader;
+  features_.pipelineStatistics = f.pipelineStatisticsQuery;
   if (!f12.hostQueryReset) {
     Log(LogLevel::Error, "adapter %s lacks hostQueryReset", props_.deviceName);
     return false;

@@ -2,6 +2,7 @@
 // reflected bindings of the bound shaders) and graphics pipelines keyed by a
 // packed state key. Both are created on first use and cached.
 #include "Context.h"
+#include "Topology.h"
 
 namespace d3dl::impl {
 
@@ -118,11 +119,11 @@ struct FixedFunction {
                            VK_DYNAMIC_STATE_PRIMITIVE_TOPOLOGY};
   VkPipelineDynamicStateCreateInfo dy{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
   VkPipelineRenderingCreateInfo ri{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+  VkPipelineTessellationStateCreateInfo ts{VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
 
   FixedFunction(const PipelineKey& key, const PipelineInputs& in, bool hasVertexBuffers) : rs(in.raster->ci), ds(in.depth->ci) {
-    ia.topology = key.topologyClass == 0   ? VK_PRIMITIVE_TOPOLOGY_POINT_LIST
-                  : key.topologyClass == 1 ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST
-                                           : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    ia.topology = ClassTopology(key.topologyClass);
+    ts.patchControlPoints = key.patchControlPoints;
     vp.viewportCount = 1;
     vp.scissorCount = 1;
     ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
@@ -174,6 +175,7 @@ VkPipeline PipelineCache::GetPipeline(const PipelineKey& key, const PipelineInpu
   ci.pStages = stages;
   ci.pVertexInputState = &vi;
   ci.pInputAssemblyState = &ff.ia;
+  ci.pTessellationState = key.topologyClass == kPatchClass ? &ff.ts : nullptr;
   ci.pViewportState = &ff.vp;
   ci.pRasterizationState = &ff.rs;
   ci.pMultisampleState = &ff.ms;

@@ -47,6 +47,7 @@ class SpirvModule {
   std::string entry;
   uint32_t model = 0;
   bool haveEntry = false;
+  std::vector<uint32_t> modes;  // execution modes of the entry point
 
  private:
   void Decorate(const uint32_t* a, uint32_t na);
@@ -97,6 +98,7 @@ bool SpirvModule::Parse(const uint32_t* words, size_t n, std::string* error) {
       entry = ReadSpirvString(a + 2, na - 2);
       for (size_t k = 2 + entry.size() / 4 + 1; k < na; ++k) interface_.push_back(a[k]);
     }
+    if (op == OpExecutionMode && na >= 2) modes.push_back(a[1]);
     if (op == OpDecorate && na >= 2) Decorate(a, na);
     if (op == OpMemberDecorate && na >= 4) {
       const uint64_t k = (uint64_t(a[0]) << 32) | a[1];
@@ -216,6 +218,37 @@ void SpirvModule::ReflectInterface(ShaderReflection* out) {
             [](const ReflectedInput& x, const ReflectedInput& y) { return x.location < y.location; });
 }
 
+bool StageOfModel(uint32_t model, ShaderStage* stage) {
+  switch (model) {
+    case spirv::ModelVertex: *stage = ShaderStage::Vertex; return true;
+    case spirv::ModelTessellationControl: *stage = ShaderStage::Hull; return true;
+    case spirv::ModelTessellationEvaluation: *stage = ShaderStage::Domain; return true;
+    case spirv::ModelGeometry: *stage = ShaderStage::Geometry; return true;
+    case spirv::ModelFragment: *stage = ShaderStage::Pixel; return true;
+    default: return false;
+  }
+}
+
+// The primitive classes (0 points, 1 lines, 2 triangles) of the execution
+// modes: a geometry shader's input, or the tessellation domain.
+void ReflectPrimitives(const std::vector<uint32_t>& modes, ShaderReflection* out) {
+  using namespace spirv;
+  const bool geometry = out->stage == ShaderStage::Geometry;
+  const bool tessellation = out->stage == ShaderStage::Hull || out->stage == ShaderStage::Domain;
+  for (uint32_t mode : modes) {
+    if (geometry) {
+      if (mode == ModeInputPoints) out->geometryInput = 0;
+      if (mode == ModeInputLines || mode == ModeInputLinesAdjacency) out->geometryInput = 1;
+      if (mode == ModeTriangles || mode == ModeInputTrianglesAdjacency) out->geometryInput = 2;
+      if (mode == ModeInputLinesAdjacency || mode == ModeInputTrianglesAdjacency) out->geometryAdjacency = true;
+    } else if (tessellation) {
+      if (mode == ModeIsolines) out->tessellationDomain = 1;
+      if (mode == ModeTriangles || mode == ModeQuads) out->tessellationDomain = 2;
+      if (mode == ModePointMode) out->tessellationPointMode = true;
+    }
+  }
+}
+
 }  // namespace
 
 bool ReflectSpirv(const uint32_t* words, size_t n, ShaderReflection* out, std::string* error) {
@@ -230,14 +263,12 @@ bool ReflectSpirv(const uint32_t* words, size_t n, ShaderReflection* out, std::s
     return false;
   }
   out->entry = m.entry;
-  if (m.model == 0) {
-    out->stage = ShaderStage::Vertex;
-  } else if (m.model == 4) {
-    out->stage = ShaderStage::Pixel;
-  } else {
-    *error = "unsupported execution model " + std::to_string(m.model) + " (only vertex and pixel shaders)";
+  if (!StageOfModel(m.model, &out->stage)) {
+    *error = "unsupported execution model " + std::to_string(m.model) +
+             " (only vertex, hull, domain, geometry and pixel shaders)";
     return false;
   }
+  ReflectPrimitives(m.modes, out);
   m.ReflectBindings(out);
   m.ReflectInterface(out);
   return true;

@@ -69,6 +69,20 @@ void EnsureGlslangInitialised() {
   std::call_once(once, [] { glslang::InitializeProcess(); });
 }
 
+// glslang's language of each stage (hull = tessellation control, domain =
+// tessellation evaluation).
+EShLanguage LanguageOf(ShaderStage stage) {
+  switch (stage) {
+    case ShaderStage::Vertex: return EShLangVertex;
+    case ShaderStage::Pixel: return EShLangFragment;
+    case ShaderStage::Hull: return EShLangTessControl;
+    case ShaderStage::Domain: return EShLangTessEvaluation;
+    case ShaderStage::Geometry: return EShLangGeometry;
+    case ShaderStage::Compute: return EShLangCompute;
+  }
+  return EShLangVertex;
+}
+
 }  // namespace
 
 HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
@@ -101,7 +115,7 @@ HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
   }
 
   EnsureGlslangInitialised();
-  const EShLanguage language = desc.Stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
+  const EShLanguage language = LanguageOf(desc.Stage);
   glslang::TShader shader(language);
   const std::string name = desc.SourcePath.empty() ? "<memory>" : desc.SourcePath;
   const char* text = source.c_str();
@@ -150,6 +164,15 @@ HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
   }
   err = log;  // warnings, if any
   return S_OK;
+}
+
+bool ShaderStageFromGlslangName(const std::string& name, ShaderStage* stage) {
+  static const std::pair<const char*, ShaderStage> kNames[] = {
+      {"vert", ShaderStage::Vertex}, {"frag", ShaderStage::Pixel},     {"tesc", ShaderStage::Hull},
+      {"tese", ShaderStage::Domain}, {"geom", ShaderStage::Geometry}, {"comp", ShaderStage::Compute}};
+  for (const auto& [n, s] : kNames)
+    if (name == n) return *stage = s, true;
+  return false;
 }
 
 HRESULT ReadSpirvFile(const std::string& path, std::vector<uint32_t>* spirv, std::string* error) {

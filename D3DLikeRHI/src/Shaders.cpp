@@ -78,6 +78,10 @@ bool ReflectStage(const std::vector<uint32_t>& words, ShaderStage stage, ShaderR
     *err = "the SPIR-V entry point '" + refl->entry + "' is a " + StageName(refl->stage) + " shader";
     return false;
   }
+  if (refl->geometryAdjacency) {
+    *err = "the geometry shader takes lineadj/triangleadj input; D3DLikeRHI has no adjacency topologies";
+    return false;
+  }
   return CheckBindings(*refl, stage, err);
 }
 
@@ -94,6 +98,9 @@ void ShaderImpl<Iface>::OnDebugName() {
 }
 template class ShaderImpl<VertexShader>;
 template class ShaderImpl<PixelShader>;
+template class ShaderImpl<HullShader>;
+template class ShaderImpl<DomainShader>;
+template class ShaderImpl<GeometryShader>;
 
 template <class Impl, class Iface>
 static HRESULT CreateShader(DeviceImpl* dev, const char* fn, ShaderStage stage, const void* code, size_t len,
@@ -129,6 +136,32 @@ HRESULT DeviceImpl::CreateVertexShader(const void* code, size_t len, VertexShade
 }
 HRESULT DeviceImpl::CreatePixelShader(const void* code, size_t len, PixelShader** out) {
   return CreateShader<PixelShaderImpl>(this, "CreatePixelShader", ShaderStage::Pixel, code, len, out);
+}
+
+// Tessellation and geometry stages: only on adapters that have them.
+namespace {
+bool StageSupported(DeviceImpl* dev, const char* fn, bool supported, const char* what, const char* feature) {
+  if (supported) return true;
+  dev->Log(LogLevel::Error, "%s: the adapter %s does not support %s (VkPhysicalDeviceFeatures::%s)", fn,
+           dev->props().deviceName, what, feature);
+  return false;
+}
+}  // namespace
+
+HRESULT DeviceImpl::CreateHullShader(const void* code, size_t len, HullShader** out) {
+  if (out) *out = nullptr;
+  if (!StageSupported(this, "CreateHullShader", features().tessellation, "tessellation", "tessellationShader")) return E_NOTIMPL;
+  return CreateShader<HullShaderImpl>(this, "CreateHullShader", ShaderStage::Hull, code, len, out);
+}
+HRESULT DeviceImpl::CreateDomainShader(const void* code, size_t len, DomainShader** out) {
+  if (out) *out = nullptr;
+  if (!StageSupported(this, "CreateDomainShader", features().tessellation, "tessellation", "tessellationShader")) return E_NOTIMPL;
+  return CreateShader<DomainShaderImpl>(this, "CreateDomainShader", ShaderStage::Domain, code, len, out);
+}
+HRESULT DeviceImpl::CreateGeometryShader(const void* code, size_t len, GeometryShader** out) {
+  if (out) *out = nullptr;
+  if (!StageSupported(this, "CreateGeometryShader", features().geometry, "geometry shaders", "geometryShader")) return E_NOTIMPL;
+  return CreateShader<GeometryShaderImpl>(this, "CreateGeometryShader", ShaderStage::Geometry, code, len, out);
 }
 
 }  // namespace d3dl::impl

@@ -23,12 +23,22 @@ struct ReflectedInput {
   std::string semantic;  // upper case, without the trailing index
   uint32_t index = 0;
 };
+// Primitive classes, as the pipeline cache groups topologies (Topology.h).
+inline constexpr uint32_t kNoPrimitive = ~0u;
 struct ShaderReflection {
   ShaderStage stage = ShaderStage::Vertex;
   std::string entry;
   std::vector<ReflectedBinding> bindings;
   std::vector<ReflectedInput> inputs;  // vertex shaders
   uint32_t outputLocations = 0;        // bit mask
+  // Tessellation and geometry: the primitive class a geometry shader takes
+  // (with adjacency flagged); the class of the domain a hull or domain shader
+  // declares (isolines: lines, triangles and quads: triangles) and its point
+  // mode (kNoPrimitive / false: not declared by this stage).
+  uint32_t geometryInput = kNoPrimitive;
+  bool geometryAdjacency = false;
+  uint32_t tessellationDomain = kNoPrimitive;
+  bool tessellationPointMode = false;
 };
 // Parses SPIR-V words. Returns false with a message for malformed code.
 bool ReflectSpirv(const uint32_t* words, size_t wordCount, ShaderReflection* out,
@@ -62,6 +72,9 @@ class ShaderImpl final : public Child<Iface>, public ShaderBase {
 };
 using VertexShaderImpl = ShaderImpl<VertexShader>;
 using PixelShaderImpl = ShaderImpl<PixelShader>;
+using HullShaderImpl = ShaderImpl<HullShader>;
+using DomainShaderImpl = ShaderImpl<DomainShader>;
+using GeometryShaderImpl = ShaderImpl<GeometryShader>;
 
 class InputLayoutImpl final : public Child<InputLayout> {
  public:

@@ -9,7 +9,7 @@
 namespace d3dl::impl {
 namespace spirv {
 enum : uint32_t {
-  OpName = 5, OpExtension = 10, OpEntryPoint = 15, OpTypeInt = 21, OpTypeFloat = 22, OpTypeVector = 23,
+  OpName = 5, OpExtension = 10, OpEntryPoint = 15, OpExecutionMode = 16, OpTypeInt = 21, OpTypeFloat = 22, OpTypeVector = 23,
   OpTypeMatrix = 24, OpTypeImage = 25, OpTypeSampler = 26, OpTypeSampledImage = 27,
   OpTypeArray = 28, OpTypeRuntimeArray = 29, OpTypeStruct = 30, OpTypePointer = 32,
   OpConstant = 43, OpVariable = 59, OpDecorate = 71, OpMemberDecorate = 72, OpDecorateId = 332,
@@ -19,6 +19,16 @@ enum : uint32_t {
   DecBlock = 2, DecBufferBlock = 3, DecArrayStride = 6, DecMatrixStride = 7, DecBuiltIn = 11,
   DecLocation = 30, DecBinding = 33, DecDescriptorSet = 34, DecOffset = 35,
   DecHlslCounterBuffer = 5634, DecUserSemantic = 5635, DecUserType = 5636,
+};
+// Execution models and the execution modes of the tessellation and geometry
+// stages that the reflection reads.
+enum : uint32_t {
+  ModelVertex = 0, ModelTessellationControl = 1, ModelTessellationEvaluation = 2, ModelGeometry = 3,
+  ModelFragment = 4,
+};
+enum : uint32_t {
+  ModePointMode = 10, ModeInputPoints = 19, ModeInputLines = 20, ModeInputLinesAdjacency = 21,
+  ModeTriangles = 22, ModeInputTrianglesAdjacency = 23, ModeQuads = 24, ModeIsolines = 25,
 };
 enum : uint32_t {
   StorageUniformConstant = 0, StorageInput = 1, StorageUniform = 2, StorageOutput = 3,

@@ -26,8 +26,10 @@ struct Usage {
 };
 
 namespace usage {
+// Every graphics shader stage (vertex, hull, domain and geometry are the
+// pre-rasterization stages; valid whether or not the device has them).
 inline constexpr VkPipelineStageFlags2 kShaderStages =
-    VK_PIPELINE_STAGE_2_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
+    VK_PIPELINE_STAGE_2_PRE_RASTERIZATION_SHADERS_BIT | VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
 inline constexpr Usage ShaderRead{kShaderStages, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
                                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, false};
 inline constexpr Usage ColorAttachment{

@@ -91,6 +91,8 @@ bool ValidateBlitRegion(DeviceImpl& dev, Texture2D* dst, const RECT& dstRect, Te
 // the blit enlarges or keeps the size on both axes, else its minification half.
 bool BlitIsLinear(const RECT& dstRect, const RECT& srcRect, FILTER filter);
 
+// "IASetPrimitiveTopology: topology N is not supported" outside 0..5, 33..64.
+bool ValidateTopology(DeviceImpl& dev, PRIMITIVE_TOPOLOGY t);
 bool ValidateBegin(DeviceImpl& dev, const QUERY_DESC& desc);
 bool ValidateGetData(DeviceImpl& dev, const QueryImpl* q, const void* data, UINT size);
 

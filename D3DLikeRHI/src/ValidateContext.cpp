@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "Topology.h"
 #include "Validate.h"
 
 namespace d3dl::impl {
@@ -432,7 +433,7 @@ bool ValidateBlitRegion(DeviceImpl& dev, Texture2D* dstTex, const RECT& dstRect,
 // ---------------------------------------------------------------------------
 // Queries
 bool ValidateBegin(DeviceImpl& dev, const QUERY_DESC& desc) {
-  if (desc.Query == QUERY_TIMESTAMP_DISJOINT) return true;
+  if (desc.Query == QUERY_TIMESTAMP_DISJOINT || desc.Query == QUERY_PIPELINE_STATISTICS) return true;
   dev.Log(LogLevel::Warning, "Begin: query type %u has no Begin (only End)", desc.Query);
   return false;
 }
@@ -451,6 +452,17 @@ bool ValidateGetData(DeviceImpl& dev, const QueryImpl* q, const void* data, UINT
     return false;
   }
   return true;
+}
+
+// ---------------------------------------------------------------------------
+// Tessellation: primitive topologies
+bool ValidateTopology(DeviceImpl& dev, PRIMITIVE_TOPOLOGY t) {
+  if (IsSupportedTopology(t)) return true;
+  dev.Log(LogLevel::Error,
+          "IASetPrimitiveTopology: topology %u is not supported (1..5: point/line/triangle lists and strips, "
+          "33..64: patch lists of 1..32 control points); ignored",
+          uint32_t(t));
+  return false;
 }
 
 }  // namespace d3dl::impl

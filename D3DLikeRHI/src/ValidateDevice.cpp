@@ -417,9 +417,15 @@ HRESULT ValidateShaderBytecode(DeviceImpl& dev, const char* fn, const void* code
 
 HRESULT ValidateCreateQuery(DeviceImpl& dev, const QUERY_DESC* desc, Query** out) {
   if (!ValidatePointers(dev, "CreateQuery", desc, "pQueryDesc", out, "ppQuery")) return E_INVALIDARG;
-  if (desc->Query != QUERY_EVENT && desc->Query != QUERY_TIMESTAMP && desc->Query != QUERY_TIMESTAMP_DISJOINT) {
+  if (desc->Query != QUERY_EVENT && desc->Query != QUERY_TIMESTAMP && desc->Query != QUERY_TIMESTAMP_DISJOINT &&
+      desc->Query != QUERY_PIPELINE_STATISTICS) {
     dev.Log(LogLevel::Error, "CreateQuery: query type %u is not supported", desc->Query);
     return E_INVALIDARG;
+  }
+  if (desc->Query == QUERY_PIPELINE_STATISTICS && !dev.features().pipelineStatistics) {
+    dev.Log(LogLevel::Error, "CreateQuery: QUERY_PIPELINE_STATISTICS needs pipelineStatisticsQuery, which the adapter %s lacks",
+            dev.props().deviceName);
+    return E_NOTIMPL;
   }
   return S_OK;
 }

@@ -142,6 +142,7 @@ void DeviceImpl::DestroyNow(const Garbage& g) {
     case VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT:
       vkDestroyDescriptorSetLayout(device_, reinterpret_cast<VkDescriptorSetLayout>(g.handle), nullptr);
       break;
+    case VK_OBJECT_TYPE_QUERY_POOL: vkDestroyQueryPool(device_, reinterpret_cast<VkQueryPool>(g.handle), nullptr); break;
     case VK_OBJECT_TYPE_SEMAPHORE: vkDestroySemaphore(device_, reinterpret_cast<VkSemaphore>(g.handle), nullptr); break;
     case VK_OBJECT_TYPE_SWAPCHAIN_KHR:
       vkDestroySwapchainKHR(device_, reinterpret_cast<VkSwapchainKHR>(g.handle), nullptr);

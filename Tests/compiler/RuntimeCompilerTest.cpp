@@ -47,7 +47,7 @@ TEST(RuntimeCompiler, MatchesEveryBuildTimeShader) {
     d3dl::ShaderCompileDesc desc;
     desc.SourcePath = e.source;
     desc.EntryPoint = e.entry;
-    desc.Stage = e.stage == "vert" ? d3dl::ShaderStage::Vertex : d3dl::ShaderStage::Pixel;
+    ASSERT_TRUE(d3dl::ShaderStageFromGlslangName(e.stage, &desc.Stage)) << e.stage;
     desc.Defines = e.defines;
     desc.KeepSemantics = e.flags.find("no-semantics") == std::string::npos;
     std::vector<uint32_t> spirv;

@@ -3,7 +3,7 @@
 // shifts (cmake/HLSL.cmake, and the runtime compiler in ShaderCompiler.h).
 //
 //   descriptor set 0,  binding = 64 * stage + classBase + slot
-//   stage:     VS = 0, PS = 1
+//   stage:     VS = 0, PS = 1, HS = 2, DS = 3, GS = 4 (ShaderStage's value)
 //   classBase: b# = 0 (0..13), t# = 16 (0..31), s# = 48 (0..15)
 #pragma once
 
@@ -11,7 +11,8 @@
 
 namespace d3dl {
 
-enum class ShaderStage : uint32_t { Vertex = 0, Pixel = 1 };
+enum class ShaderStage : uint32_t { Vertex = 0, Pixel = 1, Hull = 2, Domain = 3,
+                                    Geometry = 4, Compute = 5 };
 enum class RegisterClass : uint32_t { ConstantBuffer, Texture, Sampler };
 
 inline constexpr uint32_t kStageBindingStride = 64;

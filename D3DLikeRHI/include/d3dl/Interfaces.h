@@ -78,6 +78,10 @@ class RasterizerState : public DeviceChild {
 class InputLayout : public DeviceChild {};
 class VertexShader : public DeviceChild {};
 class PixelShader : public DeviceChild {};
+// Tessellation and geometry shaders.
+class HullShader : public DeviceChild {};
+class DomainShader : public DeviceChild {};
+class GeometryShader : public DeviceChild {};
 
 class Query : public DeviceChild {
  public:
@@ -108,6 +112,24 @@ class DeviceContext : public Unknown {
   virtual void PSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) = 0;
   virtual void PSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) = 0;
   virtual void PSSetSamplers(UINT startSlot, UINT num, SamplerState* const* samplers) = 0;
+
+  // Tessellation and geometry stages: hull, domain and geometry shaders with
+  // their constant buffers, shader resources and samplers, as VS*/PS*. A
+  // hull shader needs a domain shader and a patch-list topology, and the
+  // reverse; a geometry shader's input primitive matches the topology (or
+  // the tessellator's output).
+  virtual void HSSetShader(HullShader* shader) = 0;
+  virtual void HSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) = 0;
+  virtual void HSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) = 0;
+  virtual void HSSetSamplers(UINT startSlot, UINT num, SamplerState* const* samplers) = 0;
+  virtual void DSSetShader(DomainShader* shader) = 0;
+  virtual void DSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) = 0;
+  virtual void DSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) = 0;
+  virtual void DSSetSamplers(UINT startSlot, UINT num, SamplerState* const* samplers) = 0;
+  virtual void GSSetShader(GeometryShader* shader) = 0;
+  virtual void GSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) = 0;
+  virtual void GSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) = 0;
+  virtual void GSSetSamplers(UINT startSlot, UINT num, SamplerState* const* samplers) = 0;
 
   // Rasterizer
   virtual void RSSetViewports(UINT num, const VIEWPORT* viewports) = 0;
@@ -213,6 +235,15 @@ class Device : public Unknown {
                                      VertexShader** shader) = 0;
   virtual HRESULT CreatePixelShader(const void* bytecode, size_t bytecodeLength,
                                     PixelShader** shader) = 0;
+  // Tessellation and geometry shaders (SPIR-V as above, compiled as tesc,
+  // tese and geom). E_NOTIMPL with a message when the adapter lacks
+  // tessellationShader / geometryShader.
+  virtual HRESULT CreateHullShader(const void* bytecode, size_t bytecodeLength,
+                                   HullShader** shader) = 0;
+  virtual HRESULT CreateDomainShader(const void* bytecode, size_t bytecodeLength,
+                                     DomainShader** shader) = 0;
+  virtual HRESULT CreateGeometryShader(const void* bytecode, size_t bytecodeLength,
+                                       GeometryShader** shader) = 0;
   // Matches elements to the vertex shader's inputs by semantic name and index.
   virtual HRESULT CreateInputLayout(const INPUT_ELEMENT_DESC* elements, UINT numElements,
                                     const void* vsBytecode, size_t vsBytecodeLength,

@@ -27,6 +27,10 @@ struct ShaderCompileDesc {
 HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
                     std::string* errors);
 
+// The stage of glslang's stage name (-S vert|frag|tesc|tese|geom|comp, as
+// cmake/HLSL.cmake's STAGE): false for another name.
+bool ShaderStageFromGlslangName(const std::string& name, ShaderStage* stage);
+
 // Reads a compiled SPIR-V file: S_OK, or E_FAIL with the path and the reason
 // (cannot open, or a size that is not a whole number of 32-bit words).
 HRESULT ReadSpirvFile(const std::string& path, std::vector<uint32_t>* spirv, std::string* error);
