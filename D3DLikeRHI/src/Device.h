@@ -15,6 +15,7 @@ struct DeviceFeatures {
   bool debugUtils = false, minmax = false, depthClamp = false, swapchain = false;
   bool surface = false;  // VK_KHR_surface enabled on the instance
   bool anisotropy = false, bc = false, fillNonSolid = false, mirrorOnce = false;
+  bool cubeArray = false, independentBlend = false;  // formats, views, MSAA
 };
 
 // Bound where the shader expects a resource but none is bound.
@@ -68,6 +69,8 @@ class DeviceImpl final : public Device {
   void GetStats(DEVICE_STATS* stats) const override;
   bool CheckFormatSupport(DXGI_FORMAT format, UINT bindFlags) const override;
   void WaitIdle() override;
+  // Formats, views, MSAA (Textures.cpp)
+  HRESULT CheckMultisampleQualityLevels(DXGI_FORMAT format, UINT sampleCount, UINT* numQualityLevels) const override;
 
   // Logging
   void Log(LogLevel level, const char* fmt, ...) __attribute__((format(printf, 3, 4)));

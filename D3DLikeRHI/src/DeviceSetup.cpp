@@ -193,6 +193,9 @@ bool DeviceImpl::EnableFeatures(VkPhysicalDeviceFeatures2* e2, VkPhysicalDeviceV
   features_.bc = f.textureCompressionBC;
   features_.fillNonSolid = f.fillModeNonSolid;
   features_.depthClamp = f.depthClamp;
+  e.imageCubeArray = f.imageCubeArray;  // TEXTURECUBEARRAY views
+  features_.cubeArray = f.imageCubeArray;
+  features_.independentBlend = f.independentBlend;
   if (!f12.hostQueryReset) {
     Log(LogLevel::Error, "adapter %s lacks hostQueryReset", props_.deviceName);
     return false;

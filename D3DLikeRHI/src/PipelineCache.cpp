@@ -125,7 +125,7 @@ struct FixedFunction {
                                            : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
     vp.viewportCount = 1;
     vp.scissorCount = 1;
-    ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    ms.rasterizationSamples = static_cast<VkSampleCountFlagBits>(key.samples);
     ms.alphaToCoverageEnable = in.blend->desc.AlphaToCoverageEnable ? VK_TRUE : VK_FALSE;
     if (key.ds == VK_FORMAT_UNDEFINED) ds.depthTestEnable = ds.depthWriteEnable = ds.stencilTestEnable = VK_FALSE;
     for (uint32_t i = 0; i < key.numRT; ++i) {
@@ -143,6 +143,7 @@ struct FixedFunction {
     ri.colorAttachmentCount = key.numRT;
     ri.pColorAttachmentFormats = key.rt;
     ri.depthAttachmentFormat = key.ds;
+    if (key.ds == VK_FORMAT_D24_UNORM_S8_UINT) ri.stencilAttachmentFormat = key.ds;
   }
 };
 }  // namespace

@@ -40,7 +40,7 @@ struct PipelineKey {
   uint32_t topologyClass, numRT;
   VkFormat rt[SIMULTANEOUS_RENDER_TARGET_COUNT];
   VkFormat ds;
-  uint32_t pad;
+  uint32_t samples;  // rasterization samples: the bound targets' SampleDesc.Count
   bool operator==(const PipelineKey& o) const { return std::memcmp(this, &o, sizeof(*this)) == 0; }
 };
 // FNV-style hash of a key made of 64-bit words.
