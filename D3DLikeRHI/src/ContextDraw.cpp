@@ -342,7 +342,8 @@ bool ContextImpl::WriteNewSet() {
   }
   for (const auto& s : program_->srvs) {
     const SRVImpl* v = state_.stages[s.stage].shaderResources[s.slot].Get();
-    imgInfo[ni] = {VK_NULL_HANDLE, v ? v->v.Current() : (s.image1D ? dummy.view1D : dummy.view2D),
+    VkImageView unbound = dummy.views[s.dummy] ? dummy.views[s.dummy] : (s.image1D ? dummy.view1D : dummy.view2D);
+    imgInfo[ni] = {VK_NULL_HANDLE, v ? v->v.Current() : unbound,
                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     writes[nw] = WriteOf(set, s.binding, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE);
     writes[nw++].pImageInfo = &imgInfo[ni++];

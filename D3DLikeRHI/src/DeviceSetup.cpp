@@ -312,7 +312,7 @@ bool DeviceImpl::CreateDummies() {
   vkCreateSampler(device_, &sci, nullptr, &dummies_.sampler);
   dummyGarbage_.push_back({VK_OBJECT_TYPE_SAMPLER, reinterpret_cast<uint64_t>(dummies_.sampler)});
   ClearDummies(images);
-  return true;
+  return CreateViewDummies(images[1]);
 }
 
 // Zeroes the dummies and makes the images shader-readable (first upload batch).

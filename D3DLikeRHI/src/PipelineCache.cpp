@@ -39,7 +39,7 @@ void AddStageBindings(const ShaderReflection& r, ShaderStage stage, ProgramLayou
     lb.descriptorCount = 1;
     lb.stageFlags = ToVkStage(stage);
     bindings->push_back(lb);
-    ProgramLayout::Slot s{static_cast<uint16_t>(b.binding), stage, 0, b.image1D};
+    ProgramLayout::Slot s{static_cast<uint16_t>(b.binding), stage, 0, b.image1D, DummyViewIndex(b.viewType, b.multisampled)};
     if (b.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC) {
       s.slot = static_cast<uint8_t>(b.binding - base - kConstantBufferBase);
       prog->cbs.push_back(s);

@@ -19,6 +19,7 @@ struct ProgramLayout {
     ShaderStage stage;
     uint8_t slot;
     bool image1D;
+    uint8_t dummy;  // DummyViewIndex of the declared image (unbound SRVs)
   };
   std::vector<Slot> cbs, srvs, samplers;  // sorted by binding
 };

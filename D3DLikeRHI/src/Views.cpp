@@ -125,4 +125,70 @@ HRESULT DeviceImpl::CreateDepthStencilView(Resource* r, const DEPTH_STENCIL_VIEW
   return CreateTargetView<DSVImpl>(this, kDsvKind, r, desc, dim, out);
 }
 
+// ---------------------------------------------------------------------------
+// Zero views for unbound SRV slots of every declared image shape, so an
+// unbound Texture2DArray / TextureCube / Texture2DMS reads zeros as in D3D11
+// instead of a view of the wrong type.
+bool DeviceImpl::CreateDummyLayers(uint32_t layers, VkSampleCountFlagBits samples, VkImageCreateFlags flags,
+                                   VkImage* image) {
+  VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  ici.flags = flags;
+  ici.imageType = VK_IMAGE_TYPE_2D;
+  ici.format = VK_FORMAT_R8G8B8A8_UNORM;
+  ici.extent = {1, 1, 1};
+  ici.mipLevels = 1;
+  ici.arrayLayers = layers;
+  ici.samples = samples;
+  ici.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  if (vkCreateImage(device_, &ici, nullptr, image) != VK_SUCCESS) return false;
+  VkMemoryRequirements req;
+  vkGetImageMemoryRequirements(device_, *image, &req);
+  VkDeviceMemory mem;
+  dummyGarbage_.push_back({VK_OBJECT_TYPE_IMAGE, reinterpret_cast<uint64_t>(*image)});
+  if (!AllocateMemory(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0, &mem)) return false;
+  dummyGarbage_.push_back({VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<uint64_t>(mem)});
+  vkBindImageMemory(device_, *image, mem, 0);
+  // Zeroed by the first upload batch, then shader-readable.
+  const TransferInit t = TransferInitBarriers(VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_MEMORY_READ_BIT,
+                                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers};
+  VkCommandBuffer cb = UploadCmd();
+  VkImageMemoryBarrier2 b = ImageBarrier(*image, range, t.before);
+  RecordImageBarriers(cb, &b, 1);
+  const VkClearColorValue zero{};
+  vkCmdClearColorImage(cb, *image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
+  b = ImageBarrier(*image, range, t.after);
+  RecordImageBarriers(cb, &b, 1);
+  return true;
+}
+
+bool DeviceImpl::CreateViewDummies(VkImage image1D) {
+  VkImageView* views = dummies_.views;
+  views[DummyViewIndex(VK_IMAGE_VIEW_TYPE_1D, false)] = dummies_.view1D;
+  views[DummyViewIndex(VK_IMAGE_VIEW_TYPE_2D, false)] = dummies_.view2D;
+  auto view = [&](VkImage image, VkImageViewType type, uint32_t layers, bool ms) {
+    VkImageViewCreateInfo ci{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    ci.image = image;
+    ci.viewType = type;
+    ci.format = VK_FORMAT_R8G8B8A8_UNORM;
+    ci.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers};
+    VkImageView& v = views[DummyViewIndex(type, ms)];
+    if (vkCreateImageView(device_, &ci, nullptr, &v) != VK_SUCCESS) return false;
+    dummyGarbage_.push_back({VK_OBJECT_TYPE_IMAGE_VIEW, reinterpret_cast<uint64_t>(v)});
+    return true;
+  };
+  VkImage cube, ms;
+  if (!view(image1D, VK_IMAGE_VIEW_TYPE_1D_ARRAY, 1, false) ||
+      !CreateDummyLayers(6, VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT, &cube) ||
+      !view(cube, VK_IMAGE_VIEW_TYPE_2D_ARRAY, 1, false) || !view(cube, VK_IMAGE_VIEW_TYPE_CUBE, 6, false) ||
+      (features_.cubeArray && !view(cube, VK_IMAGE_VIEW_TYPE_CUBE_ARRAY, 6, false)))
+    return false;
+  // The smallest multisampled count the adapter can sample (none: no MSAA SRVs).
+  const VkSampleCountFlags counts = props_.limits.sampledImageColorSampleCounts & ~VkSampleCountFlags(1);
+  if (!counts) return true;
+  const auto samples = static_cast<VkSampleCountFlagBits>(counts & (~counts + 1));
+  return CreateDummyLayers(1, samples, 0, &ms) && view(ms, VK_IMAGE_VIEW_TYPE_2D, 1, true) &&
+         view(ms, VK_IMAGE_VIEW_TYPE_2D_ARRAY, 1, true);
+}
+
 }  // namespace d3dl::impl

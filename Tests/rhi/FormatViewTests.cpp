@@ -134,6 +134,26 @@ TEST_F(RhiFormats, CubeSamplingPicksTheMajorAxisFace) {
   }
 }
 
+// Unbound Texture2DArray / TextureCube(Array) / Texture2DMS slots read zeros
+// (D3D11) through dummy views of the declared shape, validation-clean.
+TEST_F(RhiFormats, UnboundArrayCubeAndMultisampledSlotsReadZero) {
+  const float dirs[8][4] = {{1, 0, 0, -1}, {0, 1, 0, 0}};
+  const uint32_t slice[4] = {0, 0, 0, 0};
+  auto dirCb = MakeCB(sizeof(dirs), USAGE_DEFAULT, dirs);
+  auto sliceCb = MakeCB(16, USAGE_DEFAULT, slice);
+  const float grey[4] = {0.5f, 0.5f, 0.5f, 0.5f};
+  for (auto [ps, cb] : {std::pair{"rhi_fmt_cube_ps.spv", dirCb.Get()}, {"rhi_fmt_array_ps.spv", sliceCb.Get()},
+                        {"rhi_fmt_ms_ps.spv", static_cast<Buffer*>(nullptr)}}) {
+    auto out = MakeRenderTarget(2, 1);
+    Bind(out, 2, 1);
+    context()->ClearRenderTargetView(out.rtv.Get(), grey);
+    DrawFullScreen(ps, {}, cb);
+    const Image img = ReadBack(out.texture.Get());
+    EXPECT_EQ(img.RGBA8(0, 0), (std::array<uint8_t, 4>{0, 0, 0, 0})) << ps;
+    EXPECT_EQ(img.RGBA8(1, 0), (std::array<uint8_t, 4>{0, 0, 0, 0})) << ps;
+  }
+}
+
 // ---------------------------------------------------------------------------
 // MSAA: the standard 4x pattern (D3D and Vulkan agree), in pixel units from
 // the pixel's top-left corner.
