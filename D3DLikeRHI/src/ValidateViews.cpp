@@ -115,6 +115,11 @@ bool IsArrayDim(ViewDim d) {
 bool IsMsDim(ViewDim d) { return d == ViewDim::Tex2DMS || d == ViewDim::Tex2DMSArray; }
 bool IsCubeDim(ViewDim d) { return d == ViewDim::Cube || d == ViewDim::CubeArray; }
 bool IsCube(const TextureCore& t) { return (t.desc.MiscFlags & RESOURCE_MISC_TEXTURECUBE) != 0; }
+const char* DimName(ViewDim d) {
+  static const char* const kNames[] = {"UNKNOWN", "TEXTURE1D", "TEXTURE1DARRAY", "TEXTURE2D", "TEXTURE2DARRAY",
+                                       "TEXTURE2DMS", "TEXTURE2DMSARRAY", "TEXTURECUBE", "TEXTURECUBEARRAY", "(invalid)"};
+  return kNames[static_cast<int>(d)];
+}
 
 // What a view without a description (or with UNKNOWN) covers.
 ViewDim DefaultDim(const TextureCore& t, bool srv) {
@@ -149,8 +154,7 @@ HRESULT CheckDimension(DeviceImpl& dev, const char* fn, const TextureCore& t, Vi
   else if (!IsArrayDim(d) && !IsCubeDim(d) && t.desc.ArraySize > 1) problem = "views one slice but the texture is an array (use an *ARRAY dimension)";
   if (!problem) return S_OK;
   dev.Log(LogLevel::Error, "%s: ViewDimension %s %s (ArraySize %u, SampleDesc.Count %u, MiscFlags 0x%x)", fn,
-          d == ViewDim::Invalid ? "(invalid value)" : "", problem, t.desc.ArraySize, t.desc.SampleDesc.Count,
-          t.desc.MiscFlags);
+          DimName(d), problem, t.desc.ArraySize, t.desc.SampleDesc.Count, t.desc.MiscFlags);
   return E_INVALIDARG;
 }
 
