@@ -257,5 +257,51 @@ INSTANTIATE_TEST_SUITE_P(Families, RhiDepthFormats,
                                                        DXGI_FORMAT_R24_UNORM_X8_TYPELESS, 2.0f / (1 << 24), false}),
                          [](const auto& info) { return std::string(FormatName(info.param.texture)); });
 
+// D24_UNORM_S8_UINT's stencil: a left-half quad writes 1 (REPLACE), then a
+// full-screen quad drawn where stencil EQUAL 1 colours only the left half.
+TEST_F(RhiFormats, D24S8StencilMasksASecondDraw) {
+  constexpr uint32_t W = 16, H = 8;
+  if (!device()->CheckFormatSupport(DXGI_FORMAT_D24_UNORM_S8_UINT, BIND_DEPTH_STENCIL))
+    GTEST_SKIP() << "no D24_UNORM_S8_UINT depth-stencil on this adapter";
+  auto ds = MakeTex(Desc(W, H, DXGI_FORMAT_D24_UNORM_S8_UINT, BIND_DEPTH_STENCIL));
+  ComPtr<DepthStencilView> dsv;
+  ASSERT_EQ(device()->CreateDepthStencilView(ds.Get(), nullptr, dsv.ReleaseAndGetAddressOf()), S_OK);
+  auto rt = MakeRenderTarget(W, H);
+  Bind(rt, W, H, dsv.Get());
+  const float black[4] = {0, 0, 0, 1};
+  context()->ClearRenderTargetView(rt.rtv.Get(), black);
+  context()->ClearDepthStencilView(dsv.Get(), CLEAR_DEPTH | CLEAR_STENCIL, 1.0f, 0);
+  auto stencilState = [&](COMPARISON_FUNC func, STENCIL_OP pass) {
+    DEPTH_STENCIL_DESC d;
+    d.DepthEnable = 0;
+    d.StencilEnable = 1;
+    d.FrontFace.StencilFunc = d.BackFace.StencilFunc = func;
+    d.FrontFace.StencilPassOp = d.BackFace.StencilPassOp = pass;
+    ComPtr<DepthStencilState> s;
+    EXPECT_EQ(device()->CreateDepthStencilState(&d, s.ReleaseAndGetAddressOf()), S_OK);
+    return s;
+  };
+  auto quad = [](float x0, float x1, float r, float g) {
+    ColorVertex a{{x0, 1, 0.5f, 1}, {r, g, 0, 1}}, b{{x1, 1, 0.5f, 1}, {r, g, 0, 1}}, c{{x1, -1, 0.5f, 1}, {r, g, 0, 1}},
+        d{{x0, -1, 0.5f, 1}, {r, g, 0, 1}};
+    return std::vector<ColorVertex>{a, b, c, a, c, d};
+  };
+  auto write = stencilState(COMPARISON_ALWAYS, STENCIL_OP_REPLACE);
+  context()->OMSetDepthStencilState(write.Get(), 1);
+  DrawColored(quad(-1, 0, 1, 0));  // left half red, stencil 1
+  auto test = stencilState(COMPARISON_EQUAL, STENCIL_OP_KEEP);
+  context()->OMSetDepthStencilState(test.Get(), 1);
+  DrawColored(quad(-1, 1, 0, 1));  // green where stencil == 1
+  context()->OMSetDepthStencilState(nullptr, 0);
+  const Image img = ReadBack(rt.texture.Get());
+  int wrong = 0;
+  for (uint32_t y = 0; y < H; ++y)
+    for (uint32_t x = 0; x < W; ++x) {
+      const auto p = img.RGBA8(x, y);
+      wrong += x < W / 2 ? (p[0] != 0 || p[1] != 255) : (p[0] != 0 || p[1] != 0);
+    }
+  EXPECT_EQ(wrong, 0);
+}
+
 }  // namespace
 }  // namespace rhitest
