@@ -200,6 +200,7 @@ bool ContextImpl::BindPipeline(VkCommandBuffer cmd) {
     k.rt[i] = om.renderTargets[i] ? om.renderTargets[i]->v.format : VK_FORMAT_UNDEFINED;
   k.ds = om.depthStencilView ? om.depthStencilView->v.format : VK_FORMAT_UNDEFINED;
   k.samples = TargetSamples();
+  k.sampleMask = k.samples >= 32 ? om.sampleMask : om.sampleMask & ((1u << k.samples) - 1);
   if (pipeline_ && k == key_) return true;
   VkPipeline p = dev_->pipelines().GetPipeline(k, in, program_);
   if (!p) return ErrorOnce(OnceError::PipelineFailed), false;

@@ -141,11 +141,15 @@ void ContextImpl::RSSetState(RasterizerState* state) {
   dirty_ |= kPipeline | kScissor;
 }
 
-void ContextImpl::OMSetBlendState(BlendState* state, const float factor[4], UINT) {
+void ContextImpl::OMSetBlendState(BlendState* state, const float factor[4], UINT sampleMask) {
   OutputMergerState& om = state_.om;
   auto* s = static_cast<BlendImpl*>(state);
   if (s != om.blend.Get()) {
     Assign(om.blend, s);
+    dirty_ |= kPipeline;
+  }
+  if (sampleMask != om.sampleMask) {  // part of the pipeline (VkPipelineMultisampleStateCreateInfo)
+    om.sampleMask = sampleMask;
     dirty_ |= kPipeline;
   }
   const float one[4] = {1, 1, 1, 1};

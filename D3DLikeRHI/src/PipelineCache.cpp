@@ -126,6 +126,7 @@ struct FixedFunction {
     vp.viewportCount = 1;
     vp.scissorCount = 1;
     ms.rasterizationSamples = static_cast<VkSampleCountFlagBits>(key.samples);
+    ms.pSampleMask = &key.sampleMask;  // one word: D3D11 has at most 32 samples
     ms.alphaToCoverageEnable = in.blend->desc.AlphaToCoverageEnable ? VK_TRUE : VK_FALSE;
     if (key.ds == VK_FORMAT_UNDEFINED) ds.depthTestEnable = ds.depthWriteEnable = ds.stencilTestEnable = VK_FALSE;
     for (uint32_t i = 0; i < key.numRT; ++i) {

@@ -41,7 +41,9 @@ struct PipelineKey {
   uint32_t topologyClass, numRT;
   VkFormat rt[SIMULTANEOUS_RENDER_TARGET_COUNT];
   VkFormat ds;
-  uint32_t samples;  // rasterization samples: the bound targets' SampleDesc.Count
+  uint32_t samples;     // rasterization samples: the bound targets' SampleDesc.Count
+  uint32_t sampleMask;  // OMSetBlendState's mask, its low `samples` bits (all ones when single-sampled)
+  uint32_t pad;
   bool operator==(const PipelineKey& o) const { return std::memcmp(this, &o, sizeof(*this)) == 0; }
 };
 // FNV-style hash of a key made of 64-bit words.

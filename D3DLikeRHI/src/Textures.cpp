@@ -104,7 +104,7 @@ HRESULT DeviceImpl::CheckMultisampleQualityLevels(DXGI_FORMAT format, UINT count
   }
   *levels = 0;
   const FormatInfo* f = GetFormatInfo(format);
-  if (!f || f->bc || count == 0 || count > 64 || (count & (count - 1))) return f ? S_OK : E_INVALIDARG;
+  if (!f || f->bc || count == 0 || count > 32 || (count & (count - 1))) return f ? S_OK : E_INVALIDARG;
   TEXTURE2D_DESC d;
   d.Format = format;
   d.BindFlags = (f->depth || (f->typeless && f->depthVk)) ? BIND_DEPTH_STENCIL : BIND_RENDER_TARGET;

@@ -239,7 +239,7 @@ static HRESULT ValidateMultisampleDesc(DeviceImpl& dev, const char* fn, bool is1
                                 const SUBRESOURCE_DATA* init) {
   const UINT n = d.SampleDesc.Count;
   const char* problem = nullptr;
-  if (n == 0 || (n & (n - 1)) || n > 64) problem = "must be 1, 2, 4, 8, 16, 32 or 64";
+  if (n == 0 || (n & (n - 1)) || n > 32) problem = "must be 1, 2, 4, 8, 16 or 32";
   else if (n == 1 && d.SampleDesc.Quality != 0) problem = "Quality must be 0";
   if (problem || n == 1) {
     if (problem) dev.Log(LogLevel::Error, "%s: SampleDesc.Count %u / Quality %u: %s", fn, n, d.SampleDesc.Quality, problem);

@@ -227,6 +227,44 @@ TEST_F(RhiFormats, MsaaEdgeResolvesToTheCoverageWeightedAverage) {
   EXPECT_EQ(wrongSample, 0) << "sample i covered exactly at the standard position i";
 }
 
+// OMSetBlendState's sample mask: a full-target quad with mask 0b0101 writes
+// samples 0 and 2 only, so the resolve is half the colour.
+TEST_F(RhiFormats, SampleMaskSelectsTheWrittenSamples) {
+  constexpr uint32_t W = 4, H = 4;
+  const DXGI_FORMAT f = DXGI_FORMAT_R16G16B16A16_FLOAT;
+  UINT levels = 0;
+  ASSERT_EQ(device()->CheckMultisampleQualityLevels(f, 4, &levels), S_OK);
+  if (levels == 0) GTEST_SKIP() << "no 4x MSAA for R16G16B16A16_FLOAT";
+  auto ms = MakeTex(Desc(W, H, f, BIND_RENDER_TARGET | BIND_SHADER_RESOURCE, 1, 4));
+  auto resolved = MakeTex(Desc(W, H, f, BIND_SHADER_RESOURCE));
+  ComPtr<RenderTargetView> rtv;
+  ASSERT_EQ(device()->CreateRenderTargetView(ms.Get(), nullptr, rtv.ReleaseAndGetAddressOf()), S_OK);
+  ComPtr<ShaderResourceView> srv;
+  ASSERT_EQ(device()->CreateShaderResourceView(ms.Get(), nullptr, srv.ReleaseAndGetAddressOf()), S_OK);
+  const float clear[4] = {0, 0, 0, 0};
+  context()->OMSetRenderTargets(1, rtv.GetAddressOf(), nullptr);
+  SetViewport(W, H);
+  context()->ClearRenderTargetView(rtv.Get(), clear);
+  context()->OMSetBlendState(nullptr, nullptr, 0x5);
+  const float white[4] = {1, 1, 1, 1};
+  auto cb = MakeCB(16, USAGE_DEFAULT, white);
+  DrawFullScreen("rhi_solid_ps.spv", {}, cb.Get());
+  context()->OMSetBlendState(nullptr, nullptr, 0xffffffff);
+  context()->OMSetRenderTargets(0, nullptr, nullptr);
+  context()->ResolveSubresource(resolved.Get(), 0, ms.Get(), 0, f);
+  auto samples = MakeRenderTarget(W, H, DXGI_FORMAT_R32G32B32A32_FLOAT);
+  Bind(samples, W, H);
+  DrawFullScreen("rhi_fmt_ms_ps.spv", {srv.Get()});
+  const Image avg = ReadBack(resolved.Get()), each = ReadBack(samples.texture.Get());
+  int wrong = 0;
+  for (uint32_t y = 0; y < H; ++y)
+    for (uint32_t x = 0; x < W; ++x) {
+      for (uint32_t c = 0; c < 4; ++c) wrong += avg.Float(x, y, c) != 0.5f;
+      for (uint32_t s = 0; s < 4; ++s) wrong += each.Float(x, y, s) != (s % 2 == 0 ? 1.0f : 0.0f);
+    }
+  EXPECT_EQ(wrong, 0);
+}
+
 // ---------------------------------------------------------------------------
 class RhiFormatValidation : public RhiFormats {
  protected:
