@@ -241,6 +241,7 @@ static HRESULT ValidateMultisampleDesc(DeviceImpl& dev, const char* fn, bool is1
   const char* problem = nullptr;
   if (n == 0 || (n & (n - 1)) || n > 32) problem = "must be 1, 2, 4, 8, 16 or 32";
   else if (n == 1 && d.SampleDesc.Quality != 0) problem = "Quality must be 0";
+  const bool standard = d.SampleDesc.Quality == STANDARD_MULTISAMPLE_PATTERN;  // Vulkan's only pattern
   if (problem || n == 1) {
     if (problem) dev.Log(LogLevel::Error, "%s: SampleDesc.Count %u / Quality %u: %s", fn, n, d.SampleDesc.Quality, problem);
     return problem ? E_INVALIDARG : S_OK;
@@ -253,7 +254,7 @@ static HRESULT ValidateMultisampleDesc(DeviceImpl& dev, const char* fn, bool is1
   else if (!(d.BindFlags & (BIND_RENDER_TARGET | BIND_DEPTH_STENCIL))) problem = "multisampled textures need BIND_RENDER_TARGET or BIND_DEPTH_STENCIL";
   else if (d.MiscFlags & RESOURCE_MISC_GENERATE_MIPS) problem = "RESOURCE_MISC_GENERATE_MIPS is not allowed";
   else if (FAILED(dev.CheckMultisampleQualityLevels(d.Format, n, &levels)) || levels == 0) problem = "not supported for this format on this adapter (CheckMultisampleQualityLevels)";
-  else if (d.SampleDesc.Quality >= levels) problem = "Quality must be 0";
+  else if (d.SampleDesc.Quality >= levels && !standard) problem = "Quality must be 0 or STANDARD_MULTISAMPLE_PATTERN";
   else if ((d.BindFlags & BIND_SHADER_RESOURCE) && !(ImageSampleCounts(&dev, d) & n)) problem = "cannot be sampled (TEXTURE2DMS) with this format on this adapter";
   if (!problem) return S_OK;
   dev.Log(LogLevel::Error, "%s: SampleDesc.Count %u (%s, MipLevels %u): %s", fn, n, FormatName(d.Format), d.MipLevels, problem);

@@ -289,6 +289,11 @@ TEST_F(RhiFormatValidation, BadTextureDescriptionsAreRejectedWithMessages) {
   msMips.MipLevels = 2;
   ExpectRejected(create(msMips), "exactly one mip");
   ExpectRejected(create(Desc(16, 16, DXGI_FORMAT_R8G8B8A8_UNORM, BIND_RENDER_TARGET, 1, 3)), "SampleDesc.Count 3");
+  TEXTURE2D_DESC quality = Desc(16, 16, DXGI_FORMAT_R8G8B8A8_UNORM, BIND_RENDER_TARGET, 1, 4);
+  quality.SampleDesc.Quality = 1;
+  ExpectRejected(create(quality), "Quality must be 0");
+  quality.SampleDesc.Quality = STANDARD_MULTISAMPLE_PATTERN;
+  EXPECT_EQ(create(quality), S_OK) << "the standard pattern is the one Vulkan uses";
   ExpectRejected(create(Desc(16, 16, DXGI_FORMAT_R8G8B8A8_UNORM, BIND_SHADER_RESOURCE, 5, 1, RESOURCE_MISC_TEXTURECUBE)),
                  "ArraySize 6*n");
   ExpectRejected(create(Desc(16, 8, DXGI_FORMAT_R8G8B8A8_UNORM, BIND_SHADER_RESOURCE, 6, 1, RESOURCE_MISC_TEXTURECUBE)),

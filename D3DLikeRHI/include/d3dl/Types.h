@@ -127,8 +127,9 @@ struct SUBRESOURCE_DATA {
 
 struct SAMPLE_DESC {
   UINT Count = 1;
-  UINT Quality = 0;
+  UINT Quality = 0;  // 0, or STANDARD_MULTISAMPLE_PATTERN (what Vulkan always uses)
 };
+inline constexpr UINT STANDARD_MULTISAMPLE_PATTERN = 0xffffffffu;
 
 struct TEXTURE1D_DESC {
   UINT Width = 0;
