@@ -130,6 +130,9 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void ClearState() override;
   void Flush() override;
 
+  // Formats, views, MSAA (ContextCopy.cpp)
+  void ResolveSubresource(Resource* dst, UINT dstSubresource, Resource* src, UINT srcSubresource,
+                          DXGI_FORMAT format) override;
   // BlitExtension (ContextBlit.cpp)
   void BlitRegion(Texture2D* dst, const RECT& dstRect, Texture2D* src, const RECT& srcRect,
                   FILTER filter) override;
@@ -191,6 +194,8 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   bool BeginRendering();
   void EndRendering();
   bool TargetSize(uint32_t* w, uint32_t* h) const;
+  uint32_t TargetLayers() const;
+  uint32_t TargetSamples() const;
   void ErrorOnce(OnceError e);
   void MarkDirtyAll();
 
@@ -238,6 +243,7 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   BoundDescriptors desc_;
   BarrierBatch barriers_;
   uint32_t renderW_ = 0, renderH_ = 0;
+  uint32_t renderLayers_ = 1;  // array slices of the rendering scope (the bound views' fewest)
   ProgramLayout* program_ = nullptr;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
   PipelineKey key_{};

@@ -1,5 +1,6 @@
-// Copies between resources and GenerateMips. Copies end the rendering scope
-// and record their own barriers; arguments are checked by ValidateCopy*.
+// Copies between resources, GenerateMips and ResolveSubresource. They end the
+// rendering scope and record their own barriers; arguments are checked by
+// ValidateCopy* / ValidateResolveSubresource.
 #include "Context.h"
 #include "Validate.h"
 
@@ -145,6 +146,29 @@ void ContextImpl::GenerateMips(ShaderResourceView* srv) {
                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
     }
   t->use.Write(dev_->CurrentSerial());
+}
+
+// vkCmdResolveImage averages the samples (float and UNORM formats; the
+// validation rejects the integer and depth formats D3D11 cannot resolve).
+void ContextImpl::ResolveSubresource(Resource* dst, UINT dstSub, Resource* src, UINT srcSub, DXGI_FORMAT format) {
+  if (!ValidateResolveSubresource(*dev_, dst, dstSub, src, srcSub, format)) return;
+  TextureCore *td = AsTexture(dst), *ts = AsTexture(src);
+  SubIndex ds, ss;
+  td->DecodeSub(dstSub, &ds);
+  ts->DecodeSub(srcSub, &ss);
+  EndRendering();
+  UseTexture(ts, OneSubresource(ss.mip, ss.layer), usage::ResolveSrc);
+  UseTexture(td, OneSubresource(ds.mip, ds.layer), usage::ResolveDst);
+  FlushBarriers();
+  VkImageResolve region{};
+  region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, ss.mip, ss.layer, 1};
+  region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, ds.mip, ds.layer, 1};
+  region.extent = {ts->MipWidth(ss.mip), ts->MipHeight(ss.mip), 1};
+  vkCmdResolveImage(cmd_, ts->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, td->Cur().image,
+                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  const uint64_t serial = dev_->CurrentSerial();
+  ts->use.Read(serial);
+  td->use.Write(serial);
 }
 
 }  // namespace d3dl::impl

@@ -55,6 +55,24 @@ bool ContextImpl::TargetSize(uint32_t* w, uint32_t* h) const {
   return true;
 }
 
+// D3D11 renders into as many array slices as the bound view with the fewest.
+uint32_t ContextImpl::TargetLayers() const {
+  const OutputMergerState& om = state_.om;
+  uint32_t n = ~0u;
+  for (uint32_t i = 0; i < om.numRenderTargets; ++i)
+    if (const RTVImpl* r = om.renderTargets[i].Get()) n = std::min(n, r->v.layerCount);
+  if (const DSVImpl* d = om.depthStencilView.Get()) n = std::min(n, d->v.layerCount);
+  return n == ~0u ? 1 : n;
+}
+
+// The bound targets' sample count (OMSetRenderTargets checked that they agree).
+uint32_t ContextImpl::TargetSamples() const {
+  const OutputMergerState& om = state_.om;
+  for (uint32_t i = 0; i < om.numRenderTargets; ++i)
+    if (const RTVImpl* r = om.renderTargets[i].Get()) return r->v.Samples();
+  return om.depthStencilView ? om.depthStencilView->v.Samples() : 1;
+}
+
 void ContextImpl::EndRendering() {
   if (!rendering_) return;
   vkCmdEndRendering(cmd_);
@@ -65,9 +83,10 @@ bool ContextImpl::BeginRendering() {
   const OutputMergerState& om = state_.om;
   uint32_t w, h;
   if (!TargetSize(&w, &h)) return false;
+  const uint32_t layers = TargetLayers();
   for (uint32_t i = 0; i < om.numRenderTargets; ++i)
-    if (const RTVImpl* r = om.renderTargets[i].Get()) UseTexture(r->v.tex, OneSubresource(r->v.baseMip, r->v.baseLayer), usage::ColorAttachment);
-  if (const DSVImpl* d = om.depthStencilView.Get()) UseTexture(d->v.tex, OneSubresource(d->v.baseMip, d->v.baseLayer), usage::DepthAttachment);
+    if (const RTVImpl* r = om.renderTargets[i].Get()) UseTexture(r->v.tex, r->v.range(), usage::ColorAttachment);
+  if (const DSVImpl* d = om.depthStencilView.Get()) UseTexture(d->v.tex, d->v.range(), usage::DepthAttachment);
   FlushBarriers();
   VkRenderingAttachmentInfo color[SIMULTANEOUS_RENDER_TARGET_COUNT]{};
   const uint64_t serial = dev_->CurrentSerial();
@@ -83,12 +102,15 @@ bool ContextImpl::BeginRendering() {
   }
   VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
   ri.renderArea = {{0, 0}, {w, h}};
-  ri.layerCount = 1;
+  ri.layerCount = layers;
   ri.colorAttachmentCount = om.numRenderTargets;
   ri.pColorAttachments = color;
   ri.pDepthAttachment = om.depthStencilView ? &depth : nullptr;
+  const bool stencil = om.depthStencilView && (om.depthStencilView->v.aspect & VK_IMAGE_ASPECT_STENCIL_BIT);
+  ri.pStencilAttachment = stencil ? &depth : nullptr;
   vkCmdBeginRendering(cmd_, &ri);
   rendering_ = true;
+  renderLayers_ = layers;
   if (w != renderW_ || h != renderH_) dirty_ |= kViewport | kScissor;
   renderW_ = w;
   renderH_ = h;
@@ -168,6 +190,8 @@ bool ContextImpl::BindPipeline(VkCommandBuffer cmd) {
   for (uint32_t i = 0; i < om.numRenderTargets; ++i)
     k.rt[i] = om.renderTargets[i] ? om.renderTargets[i]->v.format : VK_FORMAT_UNDEFINED;
   k.ds = om.depthStencilView ? om.depthStencilView->v.format : VK_FORMAT_UNDEFINED;
+  k.samples = TargetSamples();
+  k.sampleMask = k.samples >= 32 ? om.sampleMask : om.sampleMask & ((1u << k.samples) - 1);
   if (pipeline_ && k == key_) return true;
   VkPipeline p = dev_->pipelines().GetPipeline(k, in, program_);
   if (!p) return ErrorOnce(OnceError::PipelineFailed), false;
@@ -310,7 +334,8 @@ bool ContextImpl::WriteNewSet() {
   }
   for (const auto& s : program_->srvs) {
     const SRVImpl* v = state_.stages[s.stage].shaderResources[s.slot].Get();
-    imgInfo[ni] = {VK_NULL_HANDLE, v ? v->v.Current() : (s.image1D ? dummy.view1D : dummy.view2D),
+    VkImageView unbound = dummy.views[s.dummy] ? dummy.views[s.dummy] : (s.image1D ? dummy.view1D : dummy.view2D);
+    imgInfo[ni] = {VK_NULL_HANDLE, v ? v->v.Current() : unbound,
                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     writes[nw] = WriteOf(set, s.binding, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE);
     writes[nw++].pImageInfo = &imgInfo[ni++];

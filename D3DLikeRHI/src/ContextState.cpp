@@ -136,11 +136,15 @@ void ContextImpl::RSSetState(RasterizerState* state) {
   dirty_ |= kPipeline | kScissor;
 }
 
-void ContextImpl::OMSetBlendState(BlendState* state, const float factor[4], UINT) {
+void ContextImpl::OMSetBlendState(BlendState* state, const float factor[4], UINT sampleMask) {
   OutputMergerState& om = state_.om;
   auto* s = static_cast<BlendImpl*>(state);
   if (s != om.blend.Get()) {
     Assign(om.blend, s);
+    dirty_ |= kPipeline;
+  }
+  if (sampleMask != om.sampleMask) {  // part of the pipeline (VkPipelineMultisampleStateCreateInfo)
+    om.sampleMask = sampleMask;
     dirty_ |= kPipeline;
   }
   const float one[4] = {1, 1, 1, 1};
@@ -163,6 +167,7 @@ void ContextImpl::OMSetDepthStencilState(DepthStencilState* state, UINT stencilR
 
 void ContextImpl::OMSetRenderTargets(UINT num, RenderTargetView* const* rtvs, DepthStencilView* dsv) {
   if (!ValidateRenderTargets(*dev_, num, rtvs)) return;
+  if (!ValidateTargetSamples(*dev_, num, rtvs, dsv)) return;
   OutputMergerState& om = state_.om;
   RTVImpl* newRt[SIMULTANEOUS_RENDER_TARGET_COUNT] = {};
   for (UINT i = 0; i < num; ++i) newRt[i] = static_cast<RTVImpl*>(rtvs[i]);

@@ -45,6 +45,7 @@ struct OutputMergerState {
   float blendFactor[4] = {1, 1, 1, 1};
   ComPtr<DepthStencilImpl> depthStencil;
   UINT stencilRef = 0;
+  UINT sampleMask = 0xffffffffu;  // OMSetBlendState's: which samples of MSAA targets are written
 };
 
 struct ContextState {

@@ -17,6 +17,7 @@ struct DeviceFeatures {
   bool anisotropy = false, bc = false, fillNonSolid = false, mirrorOnce = false;
   // Tessellation and geometry stages, pipeline statistics queries.
   bool tessellation = false, geometry = false, pipelineStatistics = false;
+  bool cubeArray = false, independentBlend = false;  // formats, views, MSAA
 };
 
 // Bound where the shader expects a resource but none is bound.
@@ -25,7 +26,17 @@ struct DummyResources {
   VkDeviceSize uniformSize = 0;
   VkImageView view2D = VK_NULL_HANDLE, view1D = VK_NULL_HANDLE;
   VkSampler sampler = VK_NULL_HANDLE;
+  // Formats, views, MSAA: a zero view per declared image shape (1-D/2-D,
+  // arrays, cubes, multisampled), indexed by DummyViewIndex; null where the
+  // adapter cannot make it (then view1D/view2D are bound).
+  VkImageView views[9] = {};
 };
+// VkImageViewType 0..6 (1D, 2D, 3D, CUBE, 1D_ARRAY, 2D_ARRAY, CUBE_ARRAY);
+// 7, 8: multisampled 2D and 2D_ARRAY.
+inline uint8_t DummyViewIndex(VkImageViewType type, bool ms) {
+  if (ms) return type == VK_IMAGE_VIEW_TYPE_2D_ARRAY ? 8 : 7;
+  return static_cast<uint8_t>(type);
+}
 
 // VK_EXT_debug_utils entry points (null without the extension).
 struct DebugUtils {
@@ -73,6 +84,8 @@ class DeviceImpl final : public Device {
   void GetStats(DEVICE_STATS* stats) const override;
   bool CheckFormatSupport(DXGI_FORMAT format, UINT bindFlags) const override;
   void WaitIdle() override;
+  // Formats, views, MSAA (Textures.cpp)
+  HRESULT CheckMultisampleQualityLevels(DXGI_FORMAT format, UINT sampleCount, UINT* numQualityLevels) const override;
 
   // Logging
   void Log(LogLevel level, const char* fmt, ...) __attribute__((format(printf, 3, 4)));
@@ -129,6 +142,8 @@ class DeviceImpl final : public Device {
   bool CreateDummies();
   bool CreateDummyImage(VkImageType type, VkImage* image, VkImageView* view);
   void ClearDummies(const VkImage images[2]);
+  bool CreateViewDummies(VkImage image1D);  // Views.cpp
+  bool CreateDummyLayers(uint32_t layers, VkSampleCountFlagBits samples, VkImageCreateFlags flags, VkImage* image);
   void Shutdown();
 
   std::atomic<UINT> externalRefs_{1};

@@ -200,6 +200,9 @@ bool DeviceImpl::EnableFeatures(VkPhysicalDeviceFeatures2* e2, VkPhysicalDeviceV
   features_.tessellation = f.tessellationShader;
   features_.geometry = f.geometryShader;
   features_.pipelineStatistics = f.pipelineStatisticsQuery;
+  e.imageCubeArray = f.imageCubeArray;  // TEXTURECUBEARRAY views
+  features_.cubeArray = f.imageCubeArray;
+  features_.independentBlend = f.independentBlend;
   if (!f12.hostQueryReset) {
     Log(LogLevel::Error, "adapter %s lacks hostQueryReset", props_.deviceName);
     return false;
@@ -316,7 +319,7 @@ bool DeviceImpl::CreateDummies() {
   vkCreateSampler(device_, &sci, nullptr, &dummies_.sampler);
   dummyGarbage_.push_back({VK_OBJECT_TYPE_SAMPLER, reinterpret_cast<uint64_t>(dummies_.sampler)});
   ClearDummies(images);
-  return true;
+  return CreateViewDummies(images[1]);
 }
 
 // Zeroes the dummies and makes the images shader-readable (first upload batch).

@@ -15,7 +15,20 @@ struct FormatInfo {
   bool depth;
   bool integer;
   const char* name;
+  // Views may reinterpret a texture only within its family (D3D11's typeless
+  // groups: R8G8B8A8_TYPELESS holds _UNORM, _UNORM_SRGB, _UINT). UNKNOWN: a
+  // family of its own. The port also lets UNORM and SRGB members view each
+  // other without a TYPELESS texture (the sample's sRGB fix relies on it).
+  DXGI_FORMAT family = DXGI_FORMAT_UNKNOWN;
+  bool typeless = false;  // a texture format only; views must name a typed member
+  VkFormat depthVk = VK_FORMAT_UNDEFINED;  // the image format with BIND_DEPTH_STENCIL
+  bool stencil = false;                    // depth-stencil: the stencil aspect too
 };
+// Whether a view of a `tex` texture may read or write it as `view`.
+bool SameFamily(const FormatInfo& tex, const FormatInfo& view);
+// The depth image format of a texture of format `f` with BIND_DEPTH_STENCIL
+// (VK_FORMAT_UNDEFINED when `f` cannot be a depth-stencil texture).
+VkFormat DepthImageFormat(const FormatInfo& f);
 const FormatInfo* GetFormatInfo(DXGI_FORMAT f);  // nullptr when not in the table
 VkFormat ToVkFormat(DXGI_FORMAT f);
 VkCompareOp ToVkCompare(COMPARISON_FUNC f);

@@ -40,7 +40,7 @@ void AddStageBindings(const ShaderReflection& r, ShaderStage stage, ProgramLayou
     lb.descriptorCount = 1;
     lb.stageFlags = ToVkStage(stage);
     bindings->push_back(lb);
-    ProgramLayout::Slot s{static_cast<uint16_t>(b.binding), stage, 0, b.image1D};
+    ProgramLayout::Slot s{static_cast<uint16_t>(b.binding), stage, 0, b.image1D, DummyViewIndex(b.viewType, b.multisampled)};
     if (b.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC) {
       s.slot = static_cast<uint8_t>(b.binding - base - kConstantBufferBase);
       prog->cbs.push_back(s);
@@ -126,7 +126,8 @@ struct FixedFunction {
     ts.patchControlPoints = key.patchControlPoints;
     vp.viewportCount = 1;
     vp.scissorCount = 1;
-    ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    ms.rasterizationSamples = static_cast<VkSampleCountFlagBits>(key.samples);
+    ms.pSampleMask = &key.sampleMask;  // one word: D3D11 has at most 32 samples
     ms.alphaToCoverageEnable = in.blend->desc.AlphaToCoverageEnable ? VK_TRUE : VK_FALSE;
     if (key.ds == VK_FORMAT_UNDEFINED) ds.depthTestEnable = ds.depthWriteEnable = ds.stencilTestEnable = VK_FALSE;
     for (uint32_t i = 0; i < key.numRT; ++i) {
@@ -144,6 +145,7 @@ struct FixedFunction {
     ri.colorAttachmentCount = key.numRT;
     ri.pColorAttachmentFormats = key.rt;
     ri.depthAttachmentFormat = key.ds;
+    if (key.ds == VK_FORMAT_D24_UNORM_S8_UINT) ri.stencilAttachmentFormat = key.ds;
   }
 };
 }  // namespace

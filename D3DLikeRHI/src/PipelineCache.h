@@ -19,6 +19,7 @@ struct ProgramLayout {
     ShaderStage stage;
     uint8_t slot;
     bool image1D;
+    uint8_t dummy;  // DummyViewIndex of the declared image (unbound SRVs)
   };
   std::vector<Slot> cbs, srvs, samplers;  // sorted by binding
 };
@@ -41,6 +42,8 @@ struct PipelineKey {
   VkFormat rt[SIMULTANEOUS_RENDER_TARGET_COUNT];
   VkFormat ds;
   uint32_t patchControlPoints;  // patch lists: 1..32, else 0
+  uint32_t samples;     // rasterization samples: the bound targets' SampleDesc.Count
+  uint32_t sampleMask;  // OMSetBlendState's mask, its low `samples` bits (all ones when single-sampled)
   bool operator==(const PipelineKey& o) const { return std::memcmp(this, &o, sizeof(*this)) == 0; }
 };
 // FNV-style hash of a key made of 64-bit words.

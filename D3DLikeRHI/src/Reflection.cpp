@@ -181,7 +181,12 @@ bool SpirvModule::BindingOf(uint32_t id, const Var& v, ReflectedBinding* b) {
       b->type = dim == 5 ? (sampled == 2 ? VK_DESCRIPTOR_TYPE_STORAGE_TEXEL_BUFFER : VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER)
                          : (sampled == 2 ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE : VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE);
       b->image1D = dim == 0;
-      if (dim != 0 && dim != 1 && dim != 5) b->type = VK_DESCRIPTOR_TYPE_MAX_ENUM;  // 3D/cube
+      const bool arrayed = args.size() > 3 && args[3], ms = args.size() > 4 && args[4];
+      b->viewType = dim == 0   ? (arrayed ? VK_IMAGE_VIEW_TYPE_1D_ARRAY : VK_IMAGE_VIEW_TYPE_1D)
+                    : dim == 3 ? (arrayed ? VK_IMAGE_VIEW_TYPE_CUBE_ARRAY : VK_IMAGE_VIEW_TYPE_CUBE)
+                               : (arrayed ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D);
+      b->multisampled = ms;
+      if (dim == 2) b->type = VK_DESCRIPTOR_TYPE_MAX_ENUM;  // 3D (no Texture3D); cube (3) is a TEXTURECUBE view
       return true;
     }
     case OpTypeSampler: b->type = VK_DESCRIPTOR_TYPE_SAMPLER; return true;

@@ -190,6 +190,9 @@ using Texture1DImpl = TextureImpl<Texture1D, RESOURCE_DIMENSION_TEXTURE1D>;
 
 // Creates one device image for the texture's description (with its memory).
 bool CreateTextureImage(DeviceImpl* dev, TextureCore& core, TextureImage* out);
+// Sample counts the adapter allows for an image of this description (its
+// format, bind flags and cube flag): vkGetPhysicalDeviceImageFormatProperties.
+VkSampleCountFlags ImageSampleCounts(DeviceImpl* dev, const TEXTURE2D_DESC& d);
 TextureCore* AsTexture(Resource* r);
 
 }  // namespace d3dl::impl

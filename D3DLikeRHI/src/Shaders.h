@@ -16,6 +16,10 @@ struct ReflectedBinding {
   VkDescriptorType type = VK_DESCRIPTOR_TYPE_MAX_ENUM;
   uint32_t blockSize = 0;  // uniform buffers: bytes declared by the shader
   bool image1D = false;    // sampled images: Texture1D
+  // Sampled images: the view type the shader declares (array, cube) and
+  // whether it is multisampled: which dummy an unbound slot reads.
+  VkImageViewType viewType = VK_IMAGE_VIEW_TYPE_2D;
+  bool multisampled = false;
   std::string name;
 };
 struct ReflectedInput {

@@ -46,6 +46,11 @@ inline constexpr Usage TransferSrc{VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_ST
 inline constexpr Usage TransferDst{
     VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_BLIT_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
     VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, true};
+// vkCmdResolveImage (ResolveSubresource) runs in its own transfer stage.
+inline constexpr Usage ResolveSrc{VK_PIPELINE_STAGE_2_RESOLVE_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
+                                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, false};
+inline constexpr Usage ResolveDst{VK_PIPELINE_STAGE_2_RESOLVE_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, true};
 inline constexpr Usage Present{VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, 0,
                                VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, false};
 inline constexpr Usage VertexRead{VK_PIPELINE_STAGE_2_VERTEX_ATTRIBUTE_INPUT_BIT |

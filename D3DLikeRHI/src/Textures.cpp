@@ -57,6 +57,62 @@ void TextureImpl<Iface, Dim>::FillDesc(D* d) const {
 template class TextureImpl<Texture2D, RESOURCE_DIMENSION_TEXTURE2D>;
 template class TextureImpl<Texture1D, RESOURCE_DIMENSION_TEXTURE1D>;
 
+namespace {
+VkImageUsageFlags ImageUsage(const TEXTURE2D_DESC& d) {
+  VkImageUsageFlags u = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  if (d.BindFlags & BIND_SHADER_RESOURCE) u |= VK_IMAGE_USAGE_SAMPLED_BIT;
+  if (d.BindFlags & BIND_RENDER_TARGET) u |= VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+  if (d.BindFlags & BIND_DEPTH_STENCIL) u |= VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+  return u;
+}
+// Colour views may use another member of the format's family (typeless
+// groups, sRGB/UNORM); cube maps need CUBE_COMPATIBLE for cube views.
+VkImageCreateFlags ImageFlags(VkImageAspectFlags aspect, const TEXTURE2D_DESC& d) {
+  VkImageCreateFlags f = 0;
+  if (aspect == VK_IMAGE_ASPECT_COLOR_BIT) f |= VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT;
+  if (d.MiscFlags & RESOURCE_MISC_TEXTURECUBE) f |= VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT;
+  return f;
+}
+// The image format and aspect of a texture description.
+void ImageFormat(const TEXTURE2D_DESC& d, const FormatInfo& f, VkFormat* format, VkImageAspectFlags* aspect) {
+  const VkFormat depth = (d.BindFlags & BIND_DEPTH_STENCIL) || f.depth ? DepthImageFormat(f) : VK_FORMAT_UNDEFINED;
+  *format = depth ? depth : f.vk;
+  *aspect = !depth ? VK_IMAGE_ASPECT_COLOR_BIT
+                   : f.stencil ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT : VK_IMAGE_ASPECT_DEPTH_BIT;
+}
+}  // namespace
+
+VkSampleCountFlags ImageSampleCounts(DeviceImpl* dev, const TEXTURE2D_DESC& d) {
+  const FormatInfo* f = GetFormatInfo(d.Format);
+  if (!f) return 0;
+  VkFormat format;
+  VkImageAspectFlags aspect;
+  ImageFormat(d, *f, &format, &aspect);
+  VkImageFormatProperties p{};
+  if (vkGetPhysicalDeviceImageFormatProperties(dev->phys(), format, VK_IMAGE_TYPE_2D, VK_IMAGE_TILING_OPTIMAL,
+                                               ImageUsage(d), ImageFlags(aspect, d), &p) != VK_SUCCESS)
+    return 0;
+  return p.sampleCounts;
+}
+
+// D3D11 reports quality levels per vendor; Vulkan has only the standard
+// pattern, so a supported count has exactly one level (Quality 0).
+HRESULT DeviceImpl::CheckMultisampleQualityLevels(DXGI_FORMAT format, UINT count, UINT* levels) const {
+  if (!levels) {
+    const_cast<DeviceImpl*>(this)->Log(LogLevel::Error, "CheckMultisampleQualityLevels: pNumQualityLevels is null");
+    return E_INVALIDARG;
+  }
+  *levels = 0;
+  const FormatInfo* f = GetFormatInfo(format);
+  if (!f || f->bc || count == 0 || count > 32 || (count & (count - 1))) return f ? S_OK : E_INVALIDARG;
+  TEXTURE2D_DESC d;
+  d.Format = format;
+  d.BindFlags = (f->depth || (f->typeless && f->depthVk)) ? BIND_DEPTH_STENCIL : BIND_RENDER_TARGET;
+  if (!CheckFormatSupport(format, d.BindFlags)) return S_OK;
+  if (ImageSampleCounts(const_cast<DeviceImpl*>(this), d) & count) *levels = 1;
+  return S_OK;
+}
+
 bool CreateTextureImage(DeviceImpl* dev, TextureCore& core, TextureImage* out) {
   const TEXTURE2D_DESC& d = core.desc;
   VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
@@ -65,14 +121,10 @@ bool CreateTextureImage(DeviceImpl* dev, TextureCore& core, TextureImage* out) {
   ici.extent = {d.Width, d.Height, 1};
   ici.mipLevels = d.MipLevels;
   ici.arrayLayers = d.ArraySize;
-  ici.samples = VK_SAMPLE_COUNT_1_BIT;
+  ici.samples = static_cast<VkSampleCountFlagBits>(d.SampleDesc.Count);
   ici.tiling = VK_IMAGE_TILING_OPTIMAL;
-  ici.usage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-  if (d.BindFlags & BIND_SHADER_RESOURCE) ici.usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
-  if (d.BindFlags & BIND_RENDER_TARGET) ici.usage |= VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
-  if (d.BindFlags & BIND_DEPTH_STENCIL) ici.usage |= VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
-  // SRV/RTV may use the sRGB/UNORM sibling of the format.
-  if (!core.fmt->depth && d.Format != DXGI_FORMAT_R32_TYPELESS) ici.flags |= VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT;
+  ici.usage = ImageUsage(d);
+  ici.flags = ImageFlags(core.aspect, d);
   if (vkCreateImage(dev->vk(), &ici, nullptr, &out->image) != VK_SUCCESS) {
     dev->Log(LogLevel::Error, "vkCreateImage failed for %ux%u %s", d.Width, d.Height, core.fmt->name);
     return false;
@@ -96,12 +148,7 @@ namespace {
 void SetupCore(TextureCore& core, const TEXTURE2D_DESC& d) {
   core.desc = d;
   core.fmt = GetFormatInfo(d.Format);
-  core.format = core.fmt->vk;
-  core.aspect = VK_IMAGE_ASPECT_COLOR_BIT;
-  if (core.fmt->depth || (d.Format == DXGI_FORMAT_R32_TYPELESS && (d.BindFlags & BIND_DEPTH_STENCIL))) {
-    core.format = VK_FORMAT_D32_SFLOAT;
-    core.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
-  }
+  ImageFormat(d, *core.fmt, &core.format, &core.aspect);
   core.storage = d.Usage == USAGE_STAGING   ? Storage::Staging
                  : d.Usage == USAGE_DYNAMIC ? Storage::Ring
                                             : Storage::DeviceLocal;

@@ -33,18 +33,31 @@ inline constexpr ViewKindInfo kRtvKind{"CreateRenderTargetView", "ppRTView", BIN
                                        "BIND_RENDER_TARGET"};
 inline constexpr ViewKindInfo kDsvKind{"CreateDepthStencilView", "ppDepthStencilView", BIND_DEPTH_STENCIL,
                                        "BIND_DEPTH_STENCIL"};
-// The format a view of `r` reads it as (`requested`, or the texture's own).
+// The format a view of `r` reads it as (`requested`, or the texture's own)
+// and the aspect it sees (ValidateViews.cpp: typeless families, depth views).
 struct ViewFormat {
   VkFormat vk;
   DXGI_FORMAT dxgi;
+  VkImageAspectFlags aspect;
 };
 HRESULT ValidateViewResource(DeviceImpl& dev, const ViewKindInfo& kind, Resource* r, const void* out,
                              DXGI_FORMAT requested, ViewFormat* format);
-// Mips of an SRV: *baseMip and *mipCount (all mips without a description).
-HRESULT ValidateSrvMips(DeviceImpl& dev, const TextureCore& t, const SHADER_RESOURCE_VIEW_DESC* desc,
-                        uint32_t* baseMip, uint32_t* mipCount);
-HRESULT ValidateDsvFormat(DeviceImpl& dev, const DEPTH_STENCIL_VIEW_DESC* desc);
-HRESULT ValidateMipSlice(DeviceImpl& dev, const char* fn, const TextureCore& t, UINT mip);
+// The D3D11 view dimensions of all three kinds in one list (their numbers differ per kind).
+enum class ViewDim : uint8_t { Unknown, Tex1D, Tex1DArray, Tex2D, Tex2DArray, Tex2DMS, Tex2DMSArray, Cube, CubeArray, Invalid };
+ViewDim FromSrvDimension(SRV_DIMENSION d);
+ViewDim FromRtvDimension(RTV_DIMENSION d);
+ViewDim FromDsvDimension(DSV_DIMENSION d);
+// Mips, array slices and Vulkan view type a view covers.
+struct ViewShape {
+  VkImageViewType type = VK_IMAGE_VIEW_TYPE_2D;
+  uint32_t baseMip = 0, mipCount = 1, baseLayer = 0, layerCount = 1;
+};
+// SRVs: all mips and slices without a description.
+HRESULT ValidateSrvShape(DeviceImpl& dev, const TextureCore& t, const SHADER_RESOURCE_VIEW_DESC* desc,
+                         ViewShape* shape);
+// RTVs and DSVs: one mip, the slices of `range` for *ARRAY dimensions.
+HRESULT ValidateTargetShape(DeviceImpl& dev, const ViewKindInfo& kind, const TextureCore& t, ViewDim dim,
+                            UINT mip, const TEX_ARRAY_RANGE& range, ViewShape* shape);
 
 HRESULT ValidateSamplerDesc(DeviceImpl& dev, const SAMPLER_DESC* desc, SamplerState** out);
 HRESULT ValidateBlendDesc(DeviceImpl& dev, const BLEND_DESC* desc, BlendState** out);
@@ -64,6 +77,7 @@ BufferImpl* CheckedIndexBuffer(DeviceImpl& dev, Buffer* buffer, DXGI_FORMAT form
 bool ValidateViewports(DeviceImpl& dev, UINT num, const VIEWPORT* viewports);
 bool ValidateScissorRects(DeviceImpl& dev, UINT num, const RECT* rects);
 bool ValidateRenderTargets(DeviceImpl& dev, UINT num, RenderTargetView* const* rtvs);
+bool ValidateTargetSamples(DeviceImpl& dev, UINT num, RenderTargetView* const* rtvs, DepthStencilView* dsv);
 
 bool ValidateClearRenderTargetView(DeviceImpl& dev, RenderTargetView* rtv, const float color[4]);
 bool ValidateClearDepthStencilView(DeviceImpl& dev, DepthStencilView* dsv);
@@ -84,6 +98,11 @@ bool ValidateCopyTextureRegion(DeviceImpl& dev, const TextureCore* dst, UINT dst
 // with ValidateCopyTextureRegion.
 bool ValidateCopyResource(DeviceImpl& dev, Resource* dst, Resource* src);
 bool ValidateGenerateMips(DeviceImpl& dev, ShaderResourceView* srv);
+
+// ResolveSubresource (ValidateViews.cpp): multisampled source, single-sampled
+// destination of the same size, `format` in both families, resolvable.
+bool ValidateResolveSubresource(DeviceImpl& dev, Resource* dst, UINT dstSub, Resource* src, UINT srcSub,
+                                DXGI_FORMAT format);
 
 bool ValidateBlitRegion(DeviceImpl& dev, Texture2D* dst, const RECT& dstRect, Texture2D* src,
                         const RECT& srcRect, FILTER filter);

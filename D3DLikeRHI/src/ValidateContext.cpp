@@ -63,6 +63,21 @@ bool ValidateRenderTargets(DeviceImpl& dev, UINT num, RenderTargetView* const* r
   return false;
 }
 
+// D3D11: every bound view has the same sample count (one rasterization rate).
+bool ValidateTargetSamples(DeviceImpl& dev, UINT num, RenderTargetView* const* rtvs, DepthStencilView* dsv) {
+  uint32_t samples = dsv ? static_cast<DSVImpl*>(dsv)->v.Samples() : 0;
+  for (UINT i = 0; i < num; ++i) {
+    if (!rtvs[i]) continue;
+    const uint32_t n = static_cast<RTVImpl*>(rtvs[i])->v.Samples();
+    if (samples && n != samples) {
+      dev.Log(LogLevel::Error, "OMSetRenderTargets: render target %u has SampleDesc.Count %u, another bound view %u", i, n, samples);
+      return false;
+    }
+    samples = n;
+  }
+  return true;
+}
+
 // ---------------------------------------------------------------------------
 bool ValidateClearRenderTargetView(DeviceImpl& dev, RenderTargetView* rtv, const float color[4]) {
   if (rtv && color) return true;
@@ -253,6 +268,15 @@ bool ValidateCopyTextureRegion(DeviceImpl& dev, const TextureCore* dst, UINT dst
   }
   if (!CopyCompatible(*dst, *src)) {
     dev.Log(LogLevel::Error, "CopySubresourceRegion: formats %s and %s are not copy-compatible", dst->fmt->name, src->fmt->name);
+    return false;
+  }
+  if (dst->desc.SampleDesc.Count != src->desc.SampleDesc.Count) {
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: sample counts differ (dst %u, src %u); use ResolveSubresource",
+            dst->desc.SampleDesc.Count, src->desc.SampleDesc.Count);
+    return false;
+  }
+  if ((dst->aspect | src->aspect) & VK_IMAGE_ASPECT_STENCIL_BIT) {
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: copies of packed depth-stencil textures are not supported");
     return false;
   }
   const uint32_t sw = src->MipWidth(ss.mip), sh = src->MipHeight(ss.mip);

@@ -1,6 +1,7 @@
 // Validation of object creation: descriptions, initial data and the
 // resources views are made of (see Validate.h).
 #include <cmath>
+#include <cstring>
 
 #include "Validate.h"
 
@@ -113,10 +114,6 @@ HRESULT ValidateTextureShape(DeviceImpl& dev, const char* fn, bool is1D, TEXTURE
     dev.Log(LogLevel::Error, "%s: ArraySize %u is invalid", fn, d.ArraySize);
     return E_INVALIDARG;
   }
-  if (d.SampleDesc.Count != 1) {
-    dev.Log(LogLevel::Error, "%s: SampleDesc.Count %u: multisampling is not supported", fn, d.SampleDesc.Count);
-    return E_INVALIDARG;
-  }
   const FormatInfo* f = GetFormatInfo(d.Format);
   if (!f) {
     dev.Log(LogLevel::Error, "%s: Format %u (%s) is not supported", fn, d.Format, FormatName(d.Format));
@@ -175,8 +172,12 @@ HRESULT ValidateTextureBinding(DeviceImpl& dev, const char* fn, const TEXTURE2D_
     dev.Log(LogLevel::Error, "%s: BIND_DEPTH_STENCIL and BIND_RENDER_TARGET together", fn);
     return E_INVALIDARG;
   }
-  if ((d.BindFlags & BIND_DEPTH_STENCIL) && d.Format != DXGI_FORMAT_D32_FLOAT && d.Format != DXGI_FORMAT_R32_TYPELESS) {
-    dev.Log(LogLevel::Error, "%s: BIND_DEPTH_STENCIL needs D32_FLOAT or R32_TYPELESS (got %s)", fn, f->name);
+  if ((d.BindFlags & BIND_DEPTH_STENCIL) && DepthImageFormat(*f) == VK_FORMAT_UNDEFINED) {
+    dev.Log(LogLevel::Error, "%s: BIND_DEPTH_STENCIL needs D32_FLOAT, R32_TYPELESS, D24_UNORM_S8_UINT or R24G8_TYPELESS (got %s)", fn, f->name);
+    return E_INVALIDARG;
+  }
+  if (f->family == DXGI_FORMAT_R24G8_TYPELESS && !(d.BindFlags & BIND_DEPTH_STENCIL)) {
+    dev.Log(LogLevel::Error, "%s: %s textures need BIND_DEPTH_STENCIL (packed depth-stencil has no colour or staging form here)", fn, f->name);
     return E_INVALIDARG;
   }
   if (f->depth && (d.BindFlags & BIND_RENDER_TARGET)) {
@@ -223,6 +224,43 @@ HRESULT ValidateInitialData(DeviceImpl& dev, const char* fn, const TEXTURE2D_DES
 }
 }  // namespace
 
+// ---- Formats, views, MSAA: cube maps and multisampled textures.
+static HRESULT ValidateCubeDesc(DeviceImpl& dev, const char* fn, bool is1D, const TEXTURE2D_DESC& d) {
+  if (!(d.MiscFlags & RESOURCE_MISC_TEXTURECUBE)) return S_OK;
+  if (is1D || d.ArraySize == 0 || d.ArraySize % 6 != 0 || d.Width != d.Height || d.SampleDesc.Count != 1) {
+    dev.Log(LogLevel::Error, "%s: RESOURCE_MISC_TEXTURECUBE needs a square single-sampled Texture2D with ArraySize 6*n (got %ux%u, ArraySize %u, SampleDesc.Count %u)",
+            fn, d.Width, d.Height, d.ArraySize, d.SampleDesc.Count);
+    return E_INVALIDARG;
+  }
+  return S_OK;
+}
+
+static HRESULT ValidateMultisampleDesc(DeviceImpl& dev, const char* fn, bool is1D, const TEXTURE2D_DESC& d,
+                                const SUBRESOURCE_DATA* init) {
+  const UINT n = d.SampleDesc.Count;
+  const char* problem = nullptr;
+  if (n == 0 || (n & (n - 1)) || n > 32) problem = "must be 1, 2, 4, 8, 16 or 32";
+  else if (n == 1 && d.SampleDesc.Quality != 0) problem = "Quality must be 0";
+  const bool standard = d.SampleDesc.Quality == STANDARD_MULTISAMPLE_PATTERN;  // Vulkan's only pattern
+  if (problem || n == 1) {
+    if (problem) dev.Log(LogLevel::Error, "%s: SampleDesc.Count %u / Quality %u: %s", fn, n, d.SampleDesc.Quality, problem);
+    return problem ? E_INVALIDARG : S_OK;
+  }
+  UINT levels = 0;
+  if (is1D) problem = "1-D textures cannot be multisampled";
+  else if (d.MipLevels != 1) problem = "multisampled textures have exactly one mip (MipLevels 1)";
+  else if (d.Usage != USAGE_DEFAULT) problem = "multisampled textures must be USAGE_DEFAULT";
+  else if (init) problem = "multisampled textures cannot have initial data";
+  else if (!(d.BindFlags & (BIND_RENDER_TARGET | BIND_DEPTH_STENCIL))) problem = "multisampled textures need BIND_RENDER_TARGET or BIND_DEPTH_STENCIL";
+  else if (d.MiscFlags & RESOURCE_MISC_GENERATE_MIPS) problem = "RESOURCE_MISC_GENERATE_MIPS is not allowed";
+  else if (FAILED(dev.CheckMultisampleQualityLevels(d.Format, n, &levels)) || levels == 0) problem = "not supported for this format on this adapter (CheckMultisampleQualityLevels)";
+  else if (d.SampleDesc.Quality >= levels && !standard) problem = "Quality must be 0 or STANDARD_MULTISAMPLE_PATTERN";
+  else if ((d.BindFlags & BIND_SHADER_RESOURCE) && !(ImageSampleCounts(&dev, d) & n)) problem = "cannot be sampled (TEXTURE2DMS) with this format on this adapter";
+  if (!problem) return S_OK;
+  dev.Log(LogLevel::Error, "%s: SampleDesc.Count %u (%s, MipLevels %u): %s", fn, n, FormatName(d.Format), d.MipLevels, problem);
+  return E_INVALIDARG;
+}
+
 HRESULT ValidateCreateTexture(DeviceImpl& dev, const char* fn, bool is1D, const SUBRESOURCE_DATA* init,
                               TEXTURE2D_DESC* desc) {
   if (is1D && (desc->BindFlags & BIND_DEPTH_STENCIL)) {
@@ -232,97 +270,10 @@ HRESULT ValidateCreateTexture(DeviceImpl& dev, const char* fn, bool is1D, const 
   HRESULT hr = ValidateTextureShape(dev, fn, is1D, *desc);
   if (SUCCEEDED(hr)) hr = ValidateTextureUsage(dev, fn, *desc);
   if (SUCCEEDED(hr)) hr = ValidateTextureBinding(dev, fn, *desc);
+  if (SUCCEEDED(hr)) hr = ValidateCubeDesc(dev, fn, is1D, *desc);
+  if (SUCCEEDED(hr)) hr = ValidateMultisampleDesc(dev, fn, is1D, *desc, init);
   if (SUCCEEDED(hr)) hr = ValidateInitialData(dev, fn, *desc, init);
   return hr;
-}
-
-// ---------------------------------------------------------------------------
-// Views
-namespace {
-HRESULT ValidateDepthViewFormat(DeviceImpl& dev, const char* fn, DXGI_FORMAT f, ViewFormat* format) {
-  if (f != DXGI_FORMAT_R32_FLOAT && f != DXGI_FORMAT_D32_FLOAT && f != DXGI_FORMAT_R32_TYPELESS) {
-    dev.Log(LogLevel::Error, "%s: Format %s cannot view a 32-bit depth texture", fn, FormatName(f));
-    return E_INVALIDARG;
-  }
-  *format = {VK_FORMAT_D32_SFLOAT, f};
-  return S_OK;
-}
-}  // namespace
-
-HRESULT ValidateViewResource(DeviceImpl& dev, const ViewKindInfo& kind, Resource* r, const void* out,
-                             DXGI_FORMAT requested, ViewFormat* format) {
-  const char* fn = kind.fn;
-  if (!out) {
-    dev.Log(LogLevel::Error, "%s: %s is null", fn, kind.outName);
-    return E_INVALIDARG;
-  }
-  if (!r) {
-    dev.Log(LogLevel::Error, "%s: pResource is null", fn);
-    return E_INVALIDARG;
-  }
-  const TextureCore* t = AsTexture(r);
-  if (!t) {
-    dev.Log(LogLevel::Error, "%s: the resource is a buffer; only texture views are supported", fn);
-    return E_INVALIDARG;
-  }
-  if (!(t->desc.BindFlags & kind.bind)) {
-    dev.Log(LogLevel::Error, "%s: the texture was not created with %s (BindFlags 0x%x)", fn, kind.bindName, t->desc.BindFlags);
-    return E_INVALIDARG;
-  }
-  const DXGI_FORMAT f = requested == DXGI_FORMAT_UNKNOWN ? t->desc.Format : requested;
-  if (t->aspect == VK_IMAGE_ASPECT_DEPTH_BIT) return ValidateDepthViewFormat(dev, fn, f, format);
-  const FormatInfo* fi = GetFormatInfo(f);
-  if (!fi || (f == DXGI_FORMAT_R32_TYPELESS && requested == DXGI_FORMAT_UNKNOWN)) {
-    dev.Log(LogLevel::Error, "%s: Format %u (%s) cannot be used for a view", fn, f, FormatName(f));
-    return E_INVALIDARG;
-  }
-  if (fi->bytes != t->fmt->bytes || fi->bc != t->fmt->bc || fi->depth) {
-    dev.Log(LogLevel::Error, "%s: view Format %s is not compatible with texture Format %s", fn, fi->name, t->fmt->name);
-    return E_INVALIDARG;
-  }
-  *format = {fi->vk, f};
-  return S_OK;
-}
-
-HRESULT ValidateSrvMips(DeviceImpl& dev, const TextureCore& t, const SHADER_RESOURCE_VIEW_DESC* desc,
-                        uint32_t* baseMip, uint32_t* mipCount) {
-  const char* fn = kSrvKind.fn;
-  const uint32_t mips = t.desc.MipLevels;
-  *baseMip = 0;
-  *mipCount = mips;
-  if (!desc) return S_OK;
-  const SRV_DIMENSION want = t.dim == RESOURCE_DIMENSION_TEXTURE1D ? SRV_DIMENSION_TEXTURE1D : SRV_DIMENSION_TEXTURE2D;
-  if (desc->ViewDimension != want && desc->ViewDimension != SRV_DIMENSION_UNKNOWN) {
-    dev.Log(LogLevel::Error, "%s: ViewDimension %u does not match the texture", fn, desc->ViewDimension);
-    return E_INVALIDARG;
-  }
-  const uint32_t most = desc->Texture.MostDetailedMip;
-  if (most >= mips) {
-    dev.Log(LogLevel::Error, "%s: MostDetailedMip %u out of range (texture has %u mips)", fn, most, mips);
-    return E_INVALIDARG;
-  }
-  const uint32_t count = desc->Texture.MipLevels == ~0u ? mips - most : desc->Texture.MipLevels;
-  if (count == 0 || most + count > mips) {
-    dev.Log(LogLevel::Error, "%s: MipLevels %u out of range (texture has %u mips)", fn, count, mips);
-    return E_INVALIDARG;
-  }
-  *baseMip = most;
-  *mipCount = count;
-  return S_OK;
-}
-
-HRESULT ValidateDsvFormat(DeviceImpl& dev, const DEPTH_STENCIL_VIEW_DESC* desc) {
-  if (desc && desc->Format != DXGI_FORMAT_UNKNOWN && desc->Format != DXGI_FORMAT_D32_FLOAT) {
-    dev.Log(LogLevel::Error, "%s: Format %s is not a depth format", kDsvKind.fn, FormatName(desc->Format));
-    return E_INVALIDARG;
-  }
-  return S_OK;
-}
-
-HRESULT ValidateMipSlice(DeviceImpl& dev, const char* fn, const TextureCore& t, UINT mip) {
-  if (mip < t.desc.MipLevels) return S_OK;
-  dev.Log(LogLevel::Error, "%s: MipSlice %u out of range (texture has %u mips)", fn, mip, t.desc.MipLevels);
-  return E_INVALIDARG;
 }
 
 // ---------------------------------------------------------------------------
@@ -370,6 +321,12 @@ HRESULT ValidateBlendDesc(DeviceImpl& dev, const BLEND_DESC* desc, BlendState** 
         !ValidBlend(r.DestBlendAlpha) || !ValidBlendOp(r.BlendOp) || !ValidBlendOp(r.BlendOpAlpha)) {
       dev.Log(LogLevel::Error, "%s: RenderTarget[%u] has an invalid blend factor or op", fn, i);
       return E_INVALIDARG;
+    }
+    // Vulkan without independentBlend needs every attachment's state equal.
+    if (i > 0 && !dev.features().independentBlend &&
+        std::memcmp(&r, &desc->RenderTarget[0], sizeof(r)) != 0) {
+      dev.Log(LogLevel::Error, "%s: RenderTarget[%u] differs from RenderTarget[0] with IndependentBlendEnable, but the adapter lacks independentBlend", fn, i);
+      return DXGI_ERROR_UNSUPPORTED;
     }
   }
   return S_OK;

@@ -9,14 +9,10 @@ namespace d3dl::impl {
 bool RebuildViews(DeviceImpl* dev, ViewCore& v) {
   for (VkImageView view : v.views) dev->Defer(VK_OBJECT_TYPE_IMAGE_VIEW, reinterpret_cast<uint64_t>(view));
   v.views.clear();
-  const bool is1D = v.tex->dim == RESOURCE_DIMENSION_TEXTURE1D;
-  const bool array = v.tex->desc.ArraySize > 1 && v.layerCount > 1;
-  VkImageViewType type = is1D ? (array ? VK_IMAGE_VIEW_TYPE_1D_ARRAY : VK_IMAGE_VIEW_TYPE_1D)
-                              : (array ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D);
   for (auto& img : v.tex->images) {
     VkImageViewCreateInfo ci{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     ci.image = img.image;
-    ci.viewType = type;
+    ci.viewType = v.type;
     ci.format = v.format;
     ci.subresourceRange = {v.aspect, v.baseMip, v.mipCount, v.baseLayer, v.layerCount};
     VkImageView view;
@@ -49,20 +45,21 @@ template class ViewImpl<DepthStencilView, ViewKind::DSV>;
 
 namespace {
 
-// A view of `r` (validated) in `format` over the given mips and all layers
-// (one layer for render-target and depth-stencil views).
+// A view of `r` (validated) in `format` over the mips and slices of `shape`.
 template <class Impl, class Iface>
-HRESULT MakeView(DeviceImpl* dev, const char* fn, Resource* r, const ViewFormat& format, uint32_t baseMip,
-                 uint32_t mipCount, bool oneLayer, Iface** out) {
+HRESULT MakeView(DeviceImpl* dev, const char* fn, Resource* r, const ViewFormat& format, const ViewShape& shape,
+                 Iface** out) {
   auto* view = new Impl(dev);
   ViewCore& v = view->v;
   v.tex = AsTexture(r);
-  v.aspect = v.tex->aspect;
+  v.aspect = format.aspect;
   v.format = format.vk;
   v.dxgiFormat = format.dxgi;
-  v.baseMip = baseMip;
-  v.mipCount = mipCount;
-  v.layerCount = oneLayer ? 1 : v.tex->desc.ArraySize;
+  v.baseMip = shape.baseMip;
+  v.mipCount = shape.mipCount;
+  v.baseLayer = shape.baseLayer;
+  v.layerCount = shape.layerCount;
+  v.type = shape.type;
   if (!RebuildViews(dev, v)) {
     dev->Log(LogLevel::Error, "%s: vkCreateImageView failed", fn);
     view->Release();
@@ -80,19 +77,23 @@ DXGI_FORMAT RequestedFormat(const Iface* desc) {
   return desc ? desc->Format : DXGI_FORMAT_UNKNOWN;
 }
 
-// Render-target and depth-stencil views: one mip, one layer.
+// Render-target and depth-stencil views: one mip, a slice or a slice range.
 template <class Impl, class Desc, class Iface>
-HRESULT CreateMipSliceView(DeviceImpl* dev, const ViewKindInfo& kind, Resource* r, const Desc* desc, Iface** out) {
+HRESULT CreateTargetView(DeviceImpl* dev, const ViewKindInfo& kind, Resource* r, const Desc* desc, ViewDim dim,
+                         Iface** out) {
   if (out) *out = nullptr;
   ViewFormat format;
-  const UINT mip = desc ? desc->MipSlice : 0;
+  ViewShape shape;
   HRESULT hr = ValidateViewResource(*dev, kind, r, out, RequestedFormat(desc), &format);
-  if constexpr (std::is_same_v<Desc, DEPTH_STENCIL_VIEW_DESC>) {
-    if (SUCCEEDED(hr)) hr = ValidateDsvFormat(*dev, desc);
+  if (SUCCEEDED(hr) && dim == ViewDim::Invalid) {
+    dev->Log(LogLevel::Error, "%s: ViewDimension %u is invalid", kind.fn, static_cast<UINT>(desc->ViewDimension));
+    hr = E_INVALIDARG;
   }
-  if (SUCCEEDED(hr)) hr = ValidateMipSlice(*dev, kind.fn, *AsTexture(r), mip);
+  if (SUCCEEDED(hr))
+    hr = ValidateTargetShape(*dev, kind, *AsTexture(r), dim, desc ? desc->MipSlice : 0,
+                             desc ? desc->Array : TEX_ARRAY_RANGE{}, &shape);
   if (FAILED(hr)) return hr;
-  return MakeView<Impl>(dev, kind.fn, r, format, mip, 1, true, out);
+  return MakeView<Impl>(dev, kind.fn, r, format, shape, out);
 }
 
 }  // namespace
@@ -101,21 +102,93 @@ HRESULT DeviceImpl::CreateShaderResourceView(Resource* r, const SHADER_RESOURCE_
                                              ShaderResourceView** out) {
   if (out) *out = nullptr;
   ViewFormat format;
-  uint32_t baseMip, mipCount;
+  ViewShape shape;
   HRESULT hr = ValidateViewResource(*this, kSrvKind, r, out, RequestedFormat(desc), &format);
-  if (SUCCEEDED(hr)) hr = ValidateSrvMips(*this, *AsTexture(r), desc, &baseMip, &mipCount);
+  if (SUCCEEDED(hr) && desc && FromSrvDimension(desc->ViewDimension) == ViewDim::Invalid) {
+    Log(LogLevel::Error, "%s: ViewDimension %u is invalid", kSrvKind.fn, static_cast<UINT>(desc->ViewDimension));
+    hr = E_INVALIDARG;
+  }
+  if (SUCCEEDED(hr)) hr = ValidateSrvShape(*this, *AsTexture(r), desc, &shape);
   if (FAILED(hr)) return hr;
-  return MakeView<SRVImpl>(this, kSrvKind.fn, r, format, baseMip, mipCount, false, out);
+  return MakeView<SRVImpl>(this, kSrvKind.fn, r, format, shape, out);
 }
 
 HRESULT DeviceImpl::CreateRenderTargetView(Resource* r, const RENDER_TARGET_VIEW_DESC* desc,
                                            RenderTargetView** out) {
-  return CreateMipSliceView<RTVImpl>(this, kRtvKind, r, desc, out);
+  const ViewDim dim = desc ? FromRtvDimension(desc->ViewDimension) : ViewDim::Unknown;
+  return CreateTargetView<RTVImpl>(this, kRtvKind, r, desc, dim, out);
 }
 
 HRESULT DeviceImpl::CreateDepthStencilView(Resource* r, const DEPTH_STENCIL_VIEW_DESC* desc,
                                            DepthStencilView** out) {
-  return CreateMipSliceView<DSVImpl>(this, kDsvKind, r, desc, out);
+  const ViewDim dim = desc ? FromDsvDimension(desc->ViewDimension) : ViewDim::Unknown;
+  return CreateTargetView<DSVImpl>(this, kDsvKind, r, desc, dim, out);
+}
+
+// ---------------------------------------------------------------------------
+// Zero views for unbound SRV slots of every declared image shape, so an
+// unbound Texture2DArray / TextureCube / Texture2DMS reads zeros as in D3D11
+// instead of a view of the wrong type.
+bool DeviceImpl::CreateDummyLayers(uint32_t layers, VkSampleCountFlagBits samples, VkImageCreateFlags flags,
+                                   VkImage* image) {
+  VkImageCreateInfo ici{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  ici.flags = flags;
+  ici.imageType = VK_IMAGE_TYPE_2D;
+  ici.format = VK_FORMAT_R8G8B8A8_UNORM;
+  ici.extent = {1, 1, 1};
+  ici.mipLevels = 1;
+  ici.arrayLayers = layers;
+  ici.samples = samples;
+  ici.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  if (vkCreateImage(device_, &ici, nullptr, image) != VK_SUCCESS) return false;
+  VkMemoryRequirements req;
+  vkGetImageMemoryRequirements(device_, *image, &req);
+  VkDeviceMemory mem;
+  dummyGarbage_.push_back({VK_OBJECT_TYPE_IMAGE, reinterpret_cast<uint64_t>(*image)});
+  if (!AllocateMemory(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0, &mem)) return false;
+  dummyGarbage_.push_back({VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<uint64_t>(mem)});
+  vkBindImageMemory(device_, *image, mem, 0);
+  // Zeroed by the first upload batch, then shader-readable.
+  const TransferInit t = TransferInitBarriers(VK_PIPELINE_STAGE_2_CLEAR_BIT, VK_ACCESS_2_MEMORY_READ_BIT,
+                                              VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers};
+  VkCommandBuffer cb = UploadCmd();
+  VkImageMemoryBarrier2 b = ImageBarrier(*image, range, t.before);
+  RecordImageBarriers(cb, &b, 1);
+  const VkClearColorValue zero{};
+  vkCmdClearColorImage(cb, *image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &range);
+  b = ImageBarrier(*image, range, t.after);
+  RecordImageBarriers(cb, &b, 1);
+  return true;
+}
+
+bool DeviceImpl::CreateViewDummies(VkImage image1D) {
+  VkImageView* views = dummies_.views;
+  views[DummyViewIndex(VK_IMAGE_VIEW_TYPE_1D, false)] = dummies_.view1D;
+  views[DummyViewIndex(VK_IMAGE_VIEW_TYPE_2D, false)] = dummies_.view2D;
+  auto view = [&](VkImage image, VkImageViewType type, uint32_t layers, bool ms) {
+    VkImageViewCreateInfo ci{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    ci.image = image;
+    ci.viewType = type;
+    ci.format = VK_FORMAT_R8G8B8A8_UNORM;
+    ci.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers};
+    VkImageView& v = views[DummyViewIndex(type, ms)];
+    if (vkCreateImageView(device_, &ci, nullptr, &v) != VK_SUCCESS) return false;
+    dummyGarbage_.push_back({VK_OBJECT_TYPE_IMAGE_VIEW, reinterpret_cast<uint64_t>(v)});
+    return true;
+  };
+  VkImage cube, ms;
+  if (!view(image1D, VK_IMAGE_VIEW_TYPE_1D_ARRAY, 1, false) ||
+      !CreateDummyLayers(6, VK_SAMPLE_COUNT_1_BIT, VK_IMAGE_CREATE_CUBE_COMPATIBLE_BIT, &cube) ||
+      !view(cube, VK_IMAGE_VIEW_TYPE_2D_ARRAY, 1, false) || !view(cube, VK_IMAGE_VIEW_TYPE_CUBE, 6, false) ||
+      (features_.cubeArray && !view(cube, VK_IMAGE_VIEW_TYPE_CUBE_ARRAY, 6, false)))
+    return false;
+  // The smallest multisampled count the adapter can sample (none: no MSAA SRVs).
+  const VkSampleCountFlags counts = props_.limits.sampledImageColorSampleCounts & ~VkSampleCountFlags(1);
+  if (!counts) return true;
+  const auto samples = static_cast<VkSampleCountFlagBits>(counts & (~counts + 1));
+  return CreateDummyLayers(1, samples, 0, &ms) && view(ms, VK_IMAGE_VIEW_TYPE_2D, 1, true) &&
+         view(ms, VK_IMAGE_VIEW_TYPE_2D_ARRAY, 1, true);
 }
 
 }  // namespace d3dl::impl

@@ -14,11 +14,13 @@ struct ViewCore {
   DXGI_FORMAT dxgiFormat = DXGI_FORMAT_UNKNOWN;
   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
   uint32_t baseMip = 0, mipCount = 1, baseLayer = 0, layerCount = 1;
+  VkImageViewType type = VK_IMAGE_VIEW_TYPE_2D;  // from the view dimension
   std::vector<VkImageView> views;  // one per image of the texture
   VkImageView Current() const { return views[tex->current]; }
   SubresourceRange range() const { return {baseMip, mipCount, baseLayer, layerCount}; }
   uint32_t Width() const { return tex->MipWidth(baseMip); }
   uint32_t Height() const { return tex->MipHeight(baseMip); }
+  uint32_t Samples() const { return tex->desc.SampleDesc.Count; }
 };
 
 enum class ViewKind { SRV, RTV, DSV };

@@ -231,7 +231,7 @@ bool DeviceImpl::CheckFormatSupport(DXGI_FORMAT format, UINT bindFlags) const {
   const FormatInfo* f = GetFormatInfo(format);
   if (!f || (f->bc && !features_.bc)) return false;
   VkFormat vf = f->vk;
-  if (format == DXGI_FORMAT_R32_TYPELESS && (bindFlags & BIND_DEPTH_STENCIL)) vf = VK_FORMAT_D32_SFLOAT;
+  if ((bindFlags & BIND_DEPTH_STENCIL) && f->depthVk) vf = f->depthVk;  // typeless depth families
   VkFormatProperties fp;
   vkGetPhysicalDeviceFormatProperties(phys_, vf, &fp);
   VkFormatFeatureFlags need = 0;

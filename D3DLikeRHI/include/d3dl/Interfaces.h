@@ -185,6 +185,13 @@ class DeviceContext : public Unknown {
   // Submits the recorded work (a frame boundary for the constant ring and
   // deferred destruction when no swap chain presents).
   virtual void Flush() = 0;
+
+  // ---- Formats, views, MSAA (deferred-renderer feature block)
+  // Averages the samples of multisampled `src` subresource into single-sampled
+  // `dst` (same size; `format` names the typed format both are read as).
+  // Integer and depth formats are rejected, as in D3D11.
+  virtual void ResolveSubresource(Resource* dst, UINT dstSubresource, Resource* src,
+                                  UINT srcSubresource, DXGI_FORMAT format) = 0;
 };
 
 // ---------------------------------------------------------------------------
@@ -264,6 +271,12 @@ class Device : public Unknown {
   virtual bool CheckFormatSupport(DXGI_FORMAT format, UINT bindFlags) const = 0;
   // Waits until the GPU has finished all submitted work.
   virtual void WaitIdle() = 0;
+
+  // ---- Formats, views, MSAA (deferred-renderer feature block)
+  // *numQualityLevels = 1 when `format` can be a `sampleCount`-sample render
+  // target (or depth-stencil) texture on this adapter, else 0 (Quality must be 0).
+  virtual HRESULT CheckMultisampleQualityLevels(DXGI_FORMAT format, UINT sampleCount,
+                                                UINT* numQualityLevels) const = 0;
 };
 
 // Creates the Vulkan instance, picks an adapter and creates the device and

@@ -37,11 +37,14 @@ enum DXGI_FORMAT : uint32_t {
   DXGI_FORMAT_UNKNOWN = 0,
   DXGI_FORMAT_R32G32B32A32_FLOAT = 2,
   DXGI_FORMAT_R32G32B32_FLOAT = 6,
+  DXGI_FORMAT_R16G16B16A16_TYPELESS = 9,  // typeless families (views name a typed member)
   DXGI_FORMAT_R16G16B16A16_FLOAT = 10,
   DXGI_FORMAT_R16G16B16A16_UNORM = 11,
   DXGI_FORMAT_R32G32_FLOAT = 16,
+  DXGI_FORMAT_R10G10B10A2_TYPELESS = 23,
   DXGI_FORMAT_R10G10B10A2_UNORM = 24,
   DXGI_FORMAT_R11G11B10_FLOAT = 26,
+  DXGI_FORMAT_R8G8B8A8_TYPELESS = 27,
   DXGI_FORMAT_R8G8B8A8_UNORM = 28,
   DXGI_FORMAT_R8G8B8A8_UNORM_SRGB = 29,
   DXGI_FORMAT_R8G8B8A8_UINT = 30,
@@ -50,6 +53,9 @@ enum DXGI_FORMAT : uint32_t {
   DXGI_FORMAT_D32_FLOAT = 40,
   DXGI_FORMAT_R32_FLOAT = 41,
   DXGI_FORMAT_R32_UINT = 42,
+  DXGI_FORMAT_R24G8_TYPELESS = 44,         // depth-stencil texture that is also sampled
+  DXGI_FORMAT_D24_UNORM_S8_UINT = 45,      // Vulkan D24_UNORM_S8_UINT, where the adapter has it
+  DXGI_FORMAT_R24_UNORM_X8_TYPELESS = 46,  // SRV of the depth half of R24G8_TYPELESS
   DXGI_FORMAT_R8G8_UNORM = 49,
   DXGI_FORMAT_R16_FLOAT = 54,
   DXGI_FORMAT_R16_UINT = 57,
@@ -94,6 +100,7 @@ enum CPU_ACCESS_FLAG : uint32_t {
 
 enum RESOURCE_MISC_FLAG : uint32_t {
   RESOURCE_MISC_GENERATE_MIPS = 0x1,
+  RESOURCE_MISC_TEXTURECUBE = 0x4,  // Texture2D with ArraySize 6*n, Width == Height
 };
 
 enum RESOURCE_DIMENSION : uint32_t {
@@ -120,8 +127,9 @@ struct SUBRESOURCE_DATA {
 
 struct SAMPLE_DESC {
   UINT Count = 1;
-  UINT Quality = 0;
+  UINT Quality = 0;  // 0, or STANDARD_MULTISAMPLE_PATTERN (what Vulkan always uses)
 };
+inline constexpr UINT STANDARD_MULTISAMPLE_PATTERN = 0xffffffffu;
 
 struct TEXTURE1D_DESC {
   UINT Width = 0;
@@ -163,21 +171,39 @@ struct RECT {
 
 // ---------------------------------------------------------------------------
 // Views
+// UNKNOWN = the dimension the texture implies: 1-D/2-D, their arrays when
+// ArraySize > 1, TEXTURE2DMS(ARRAY) when multisampled, TEXTURECUBE(ARRAY) for
+// RESOURCE_MISC_TEXTURECUBE textures (SRVs only).
 enum SRV_DIMENSION : uint32_t {
   SRV_DIMENSION_UNKNOWN = 0,
   SRV_DIMENSION_TEXTURE1D = 2,
+  SRV_DIMENSION_TEXTURE1DARRAY = 3,
   SRV_DIMENSION_TEXTURE2D = 4,
+  SRV_DIMENSION_TEXTURE2DARRAY = 5,
+  SRV_DIMENSION_TEXTURE2DMS = 6,
+  SRV_DIMENSION_TEXTURE2DMSARRAY = 7,
+  SRV_DIMENSION_TEXTURECUBE = 9,
+  SRV_DIMENSION_TEXTURECUBEARRAY = 10,
 };
 
 enum RTV_DIMENSION : uint32_t {
   RTV_DIMENSION_UNKNOWN = 0,
   RTV_DIMENSION_TEXTURE1D = 2,
+  RTV_DIMENSION_TEXTURE1DARRAY = 3,
   RTV_DIMENSION_TEXTURE2D = 4,
+  RTV_DIMENSION_TEXTURE2DARRAY = 5,
+  RTV_DIMENSION_TEXTURE2DMS = 6,
+  RTV_DIMENSION_TEXTURE2DMSARRAY = 7,
 };
 
 enum DSV_DIMENSION : uint32_t {
   DSV_DIMENSION_UNKNOWN = 0,
+  DSV_DIMENSION_TEXTURE1D = 1,
+  DSV_DIMENSION_TEXTURE1DARRAY = 2,
   DSV_DIMENSION_TEXTURE2D = 3,
+  DSV_DIMENSION_TEXTURE2DARRAY = 4,
+  DSV_DIMENSION_TEXTURE2DMS = 5,
+  DSV_DIMENSION_TEXTURE2DMSARRAY = 6,
 };
 
 struct TEX_SRV {
@@ -185,16 +211,34 @@ struct TEX_SRV {
   UINT MipLevels = ~0u;  // ~0u = all from MostDetailedMip
 };
 
+// D3D11's array members of the view unions, flattened: which array slices an
+// *ARRAY view covers (TEXTURE2DARRAY, TEXTURE1DARRAY, TEXTURE2DMSARRAY).
+// ArraySize ~0u = all slices from FirstArraySlice (a port convenience).
+struct TEX_ARRAY_RANGE {
+  UINT FirstArraySlice = 0;
+  UINT ArraySize = ~0u;
+};
+
+// TEXTURECUBEARRAY: the first face (a multiple of 6 in D3D11 practice, any
+// slice is allowed) and the number of cubes (~0u = all that fit).
+struct TEXCUBE_ARRAY_SRV {
+  UINT First2DArrayFace = 0;
+  UINT NumCubes = ~0u;
+};
+
 struct SHADER_RESOURCE_VIEW_DESC {
   DXGI_FORMAT Format = DXGI_FORMAT_UNKNOWN;  // UNKNOWN = the texture's format
   SRV_DIMENSION ViewDimension = SRV_DIMENSION_UNKNOWN;
-  TEX_SRV Texture{};
+  TEX_SRV Texture{};  // mips (not for TEXTURE2DMS*)
+  TEX_ARRAY_RANGE Array{};
+  TEXCUBE_ARRAY_SRV CubeArray{};
 };
 
 struct RENDER_TARGET_VIEW_DESC {
   DXGI_FORMAT Format = DXGI_FORMAT_UNKNOWN;
   RTV_DIMENSION ViewDimension = RTV_DIMENSION_UNKNOWN;
   UINT MipSlice = 0;
+  TEX_ARRAY_RANGE Array{};  // *ARRAY dimensions; the others view slice 0
 };
 
 struct DEPTH_STENCIL_VIEW_DESC {
@@ -202,6 +246,7 @@ struct DEPTH_STENCIL_VIEW_DESC {
   DSV_DIMENSION ViewDimension = DSV_DIMENSION_UNKNOWN;
   UINT Flags = 0;
   UINT MipSlice = 0;
+  TEX_ARRAY_RANGE Array{};  // *ARRAY dimensions (a shadow-map slice or range)
 };
 
 // ---------------------------------------------------------------------------
