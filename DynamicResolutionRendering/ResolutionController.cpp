@@ -250,7 +250,7 @@ RobustController::RobustController(const Params& params) : m_Params(params) {
   Params& p = m_Params;
   p.medianWindow = std::max(1, p.medianWindow);
   p.minSamples = std::clamp(p.minSamples, 1, p.medianWindow);
-  if (!(p.deadband >= 0.0 && p.deadband < 1.0)) p.deadband = 0.03;
+  if (!(p.deadband >= 0.0 && p.deadband < 1.0)) p.deadband = 0.05;
   if (!(p.outlierFactor > 1.0)) p.outlierFactor = 4.0;
   p.outlierPersistFrames = std::max(1, p.outlierPersistFrames);
   p.panicFrames = std::max(1, p.panicFrames);
@@ -278,10 +278,12 @@ void RobustController::Reset() {
   m_Noise = m_Params.initialNoise;
   m_LastSample = 0.0;
   m_Diffs.clear();
+  m_Spread = 0.0;
 }
 
 double RobustController::Band(int samples) const {
-  const double sigmaMedian = 1.25 * m_Noise / std::sqrt(static_cast<double>(std::max(1, samples)));
+  const double noise = std::max(m_Noise, m_Spread);
+  const double sigmaMedian = 1.25 * noise / std::sqrt(static_cast<double>(std::max(1, samples)));
   return std::max(m_Params.deadband, m_Params.noiseZ * sigmaMedian);
 }
 
@@ -335,6 +337,9 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
     m_OverBudget = 0;
     m_HaveSecant = false;
   }
+  // A time that names its frame's scale needs no count of frames in flight.
+  const bool paired = FinitePositive(timing.gpuScale);
+  if (paired) m_SkipFrames = 0;
   if (m_SkipFrames > 0) {  // still measuring frames rendered at the previous scale
     --m_SkipFrames;
     return finish(s);
@@ -345,6 +350,7 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
     m_OverBudget = 0;
     return finish(s);
   }
+  if (paired && std::abs(std::log(timing.gpuScale / s)) > 0.01) return finish(s);  // an earlier scale's frame
 
   // Outliers relative to the running median (or, right after a correction, to
   // the aim we just steered to).
@@ -382,6 +388,12 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
 
   if (static_cast<int>(m_Samples.size()) < m_Params.minSamples) return finish(s);
   const double median = Median(m_Samples);
+  m_Spread = 0.0;
+  if (m_Params.spreadNoise && m_Samples.size() >= 5) {  // correlated noise: successive differences miss it
+    std::vector<double> dev;
+    for (double x : m_Samples) dev.push_back(std::abs(std::log(x / median)));
+    m_Spread = 1.4826 * Median(dev);
+  }
   // Deadband, widened to the noise of the median (~1.25 sigma / sqrt(n)), and
   // a set point lowered by the part of the band that exceeds `deadband`, so a
   // noisy timer does not let the GPU time drift past aim + deadband.

@@ -219,9 +219,11 @@ private:
 //     latencyFrames, are skipped);
 //  4. deadband: act only when the median is more than max(deadband,
 //     noiseZ x sigma_median) away from the aim (relative), sigma_median from a
-//     running robust estimate of the sample noise (median of successive log
-//     differences, insensitive to drifts and steps), so a still load changes
-//     the scale zero times even when the GPU timer is noisy;
+//     running robust estimate of the sample noise (the larger of: the median
+//     of successive log differences, insensitive to drifts and steps; and the
+//     spread of the window around its median, which sees correlated noise the
+//     differences miss), so a still load changes the scale zero times even
+//     when the GPU timer is noisy;
 //  5. step in log scale: dlog s = log(aim / t) / gamma, gamma = 2 (quadratic
 //     cost model: pixels ~ s^2) for the first correction of an episode, then the
 //     secant slope measured between the last two corrections (clamped to
@@ -237,7 +239,7 @@ public:
   struct Params {
     int medianWindow = 9;       // most samples (at the current scale) in the median
     int minSamples = 2;         // fewest samples before a (non-panic) correction
-    double deadband = 0.03;     // smallest relative error acted on
+    double deadband = 0.05;     // smallest relative error acted on (0.03 before the synthetic-set tuning)
     double noiseZ = 3.5;        // the deadband widens to noiseZ x the median's estimated noise
     double initialNoise = 0.01; // relative noise assumed before any estimate
     double outlierFactor = 4.0;
@@ -249,6 +251,8 @@ public:
     double maxStepDown = 0.5;   // smallest factor per correction
     double maxStepUp = 1.5;     // largest factor per correction
     int latencyFrames = 0;      // frames between a scale change and the first GPU time measured at it
+                                // (when FrameTiming::gpuScale is 0; else that scale says it)
+    bool spreadNoise = true;    // the noise is also the spread of the window around its median
   };
   RobustController();
   explicit RobustController(const Params& params);
@@ -274,6 +278,7 @@ private:
   double m_Noise = 0.01;             // estimated relative noise of one sample (log domain)
   double m_LastSample = 0.0;         // previous usable sample (for the noise estimate)
   std::vector<double> m_Diffs;       // recent |log(t_i / t_i-1)|
+  double m_Spread = 0.0;             // robust spread of the window's samples (log domain)
 };
 
 // What a law is fed. Original: the article law as the original feeds it, every

@@ -87,6 +87,7 @@ TEST(Simulator, DeterministicForASeed) {
 TEST(Simulator, SweepFindsTheAnalyticInstability) {
   SimConfig base;
   base.feed = Feed::PerResult;  // the linear analysis: the last frame's time, no block average
+  base.plant.latencyFrames = 0; // and no timer delay
   const double alpha = ArticleAlpha(base.plant, base.target);
   const auto rows = SweepArticleGain(base, 4);
   ASSERT_EQ(rows.size(), 17u);
