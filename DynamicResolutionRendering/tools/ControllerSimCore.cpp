@@ -370,6 +370,50 @@ std::vector<SyntheticCase> SyntheticSet(const SimConfig& base) {
   return set;
 }
 
+std::vector<RobustScanRow> ScanRobustOnSyntheticSet(const SimConfig& base) {
+  std::vector<RobustScanRow> rows;
+  for (int window : {9, 15})
+    for (double deadband : {0.03, 0.05})
+      for (double z : {3.5, 5.0})
+        for (bool spread : {false, true}) {
+          RobustScanRow row;
+          row.params.medianWindow = window;
+          row.params.deadband = deadband;
+          row.params.noiseZ = z;
+          row.params.spreadNoise = spread;
+          int runs = 0;
+          for (const SyntheticCase& c : SyntheticSet(base)) {
+            for (Scenario s : AllScenarios()) {
+              RobustController::Params p = row.params;
+              p.latencyFrames = c.base.plant.latencyFrames;
+              RobustController law(p);
+              const SimResult r = RunScenario(law, ConfigFor(s, c.base));
+              row.overBudget += r.overBudget;
+              row.changes += r.changes;
+              row.stillChanges += r.stillChanges;
+              row.neverSettled += r.settleApplies && r.settleFrames < 0;
+              row.givenUpPct += r.givenUpPct;
+              ++runs;
+            }
+          }
+          row.givenUpPct /= std::max(1, runs);
+          rows.push_back(row);
+        }
+  return rows;
+}
+
+void PrintRobustScan(std::ostream& out, const std::vector<RobustScanRow>& rows) {
+  out << "| window | deadband | noiseZ | spread | over budget | given up % | changes | still changes | never settled |\n"
+         "| ---: | ---: | ---: | :---: | ---: | ---: | ---: | ---: | ---: |\n";
+  char line[200];
+  for (const RobustScanRow& r : rows) {
+    std::snprintf(line, sizeof line, "| %d | %.2f | %.1f | %s | %d | %.2f | %d | %d | %d |\n", r.params.medianWindow,
+                  r.params.deadband, r.params.noiseZ, r.params.spreadNoise ? "yes" : "no", r.overBudget,
+                  r.givenUpPct, r.changes, r.stillChanges, r.neverSettled);
+    out << line;
+  }
+}
+
 bool ParseArticleVariant(std::string_view name, ArticleVariant* variant) {
   for (ArticleVariant v : {ArticleVariant::Original, ArticleVariant::FramePeriod, ArticleVariant::AppliedScale})
     if (ToString(v) == name) {

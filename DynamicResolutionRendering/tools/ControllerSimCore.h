@@ -197,6 +197,17 @@ struct SyntheticCase {
 };
 std::vector<SyntheticCase> SyntheticSet(const SimConfig& base);
 
+// The robust law's tuning scan: totals over the synthetic set (and nothing
+// else: the held-out traces never enter it) for median windows 9 and 15,
+// deadbands 3 % and 5 %, noiseZ 3.5 and 5, with and without the spread term.
+struct RobustScanRow {
+  RobustController::Params params;
+  int overBudget = 0, changes = 0, stillChanges = 0, neverSettled = 0;
+  double givenUpPct = 0.0;  // mean over the runs
+};
+std::vector<RobustScanRow> ScanRobustOnSyntheticSet(const SimConfig& base);
+void PrintRobustScan(std::ostream& out, const std::vector<RobustScanRow>& rows);
+
 // Totals per controller over a matrix.
 struct Totals {
   std::string controller;

@@ -33,6 +33,7 @@ void Usage(std::ostream& out) {
          "                      handed the budget T (1 - H), over budget still counts against T)\n"
          "  --synthetic-set     totals of every law on the synthetic set (the scenarios under latency\n"
          "                      0..3, white 1 % and AR(0.9) 3 % noise): the only cases tuning may use\n"
+         "  --scan-robust       the robust law's tuning scan on the synthetic set (never the traces)\n"
          "  --traces DIR        replay the held-out traces of DIR (Tests/controller/traces) instead\n"
          "                      of the scenarios, budget = the sweep's time at scale 0.7, latency as\n"
          "                      --latency (default: the sample's, 1)\n"
@@ -124,6 +125,7 @@ struct SimArgs {
   std::vector<drr::sim::ArticleVariant> variants;  // non-empty: article variants instead of the laws
   std::string tracesDir;
   bool syntheticSet = false;
+  bool scanRobust = false;
 };
 
 // Reads the option at argv[*i] and its value (moving *i past it); exits with
@@ -156,6 +158,8 @@ void ParseOption(int argc, char** argv, int* i, SimArgs* args) {
   } else if (arg == "--headroom") {
     if (!ParseDouble(value(arg), &x) || x < 0.0 || x > 0.5) Fail("--headroom needs a number 0..0.5");
     config.target.headroom = x;
+  } else if (arg == "--scan-robust") {
+    args->scanRobust = true;
   } else if (arg == "--synthetic-set") {
     args->syntheticSet = true;
   } else if (arg == "--traces") {
@@ -244,6 +248,11 @@ int main(int argc, char** argv) {
   }
 
   std::vector<drr::sim::SimResult> results;
+  if (args.scanRobust) {
+    if (!args.tracesDir.empty()) Fail("--scan-robust tunes on the synthetic set only; --traces is held out");
+    drr::sim::PrintRobustScan(std::cout, drr::sim::ScanRobustOnSyntheticSet(config));
+    return 0;
+  }
   if (!args.tracesDir.empty()) {
     std::vector<drr::sim::TraceCase> cases;
     std::string error;
