@@ -271,7 +271,7 @@ int main(int argc, char** argv) {
     }
     std::cout << "Replay: latency " << spec.latencyFrames << ", headroom " << spec.headroom << ", warm-up "
               << spec.warmupFrames << " frames from scale 1\n\n";
-    std::sort(results.begin(), results.end(), [](const auto& a, const auto& b) { return a.controller < b.controller; });
+    std::stable_sort(results.begin(), results.end(), [](const auto& a, const auto& b) { return a.controller < b.controller; });
     drr::sim::PrintTable(std::cout, results);
     if (csv.is_open()) drr::sim::WriteCsv(csv, results);
     return 0;

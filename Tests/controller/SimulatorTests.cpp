@@ -126,6 +126,7 @@ protected:
   static void SetUpTestSuite() {
     SimConfig base;
     base.plant.noise = 0.0;
+    base.plant.latencyFrames = 0;  // as Docs/Controller.md's tables (--latency 0)
     const std::vector<Scenario> scenarios = {Scenario::Step2x, Scenario::StepHalf, Scenario::Ramp,
                                              Scenario::VSync60, Scenario::CpuBound, Scenario::Still};
     rows = new std::vector<SimResult>;
