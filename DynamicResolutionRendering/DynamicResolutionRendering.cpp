@@ -279,7 +279,7 @@ bool Sample::FlipsTargets() const {
   return TAAActive() || m_Options.filter == Filter::TAANoiseOffset || m_Options.filter == Filter::TAABasic;
 }
 
-void Sample::ControlResolution(double innerFrameSeconds, double frameSeconds) {
+void Sample::ControlResolution(double innerFrameSeconds, double frameSeconds, double gpuScale) {
   if (m_CostModel) {
     innerFrameSeconds = frameSeconds =
         m_CostModel(m_DynamicResolution.GetScaleX(), m_DynamicResolution.GetScaleY()) / 1000.0;
@@ -287,6 +287,7 @@ void Sample::ControlResolution(double innerFrameSeconds, double frameSeconds) {
   FrameTiming timing;
   timing.gpuInnerSeconds = innerFrameSeconds;
   timing.frameSeconds = frameSeconds;
+  timing.gpuScale = m_CostModel ? m_DynamicResolution.GetScaleX() : gpuScale;
   m_LawInput = timing;
   ControlTarget target;
   target.budgetSeconds = TargetFrameSeconds(m_RefreshHz, m_Options.control);
@@ -315,7 +316,9 @@ void Sample::RunResolutionControl() {
       m_LawLatency = stale;
       m_Controller = MakeController(m_Options.law, m_LawLatency);
     }
-    ControlResolution(timer.LastMs() / 1000.0, m_LastFrameSeconds);
+    // The result measured frame m_FrameCount - delay, rendered at that frame's scale.
+    const double measuredScale = m_Log.ScaleOfFrame(m_FrameCount - int64_t(timer.LastDelayFrames()));
+    ControlResolution(timer.LastMs() / 1000.0, m_LastFrameSeconds, measuredScale);
   }
 }
 

@@ -122,7 +122,7 @@ class Sample {
   bool InitDynamicResolution();
   void ReleaseDynamicResolution();
   void UpdateStats();
-  void ControlResolution(double innerFrameSeconds, double frameSeconds);
+  void ControlResolution(double innerFrameSeconds, double frameSeconds, double gpuScale = 0.0);
 
   bool LoadScene(std::string* error);
   bool ResizeSwapChain(uint32_t w, uint32_t h);

@@ -174,11 +174,25 @@ UEStyleController::UEStyleController(const Params& params) : m_Params(params) {
   if (!(m_Params.frameWeightExponent > 0.0 && m_Params.frameWeightExponent <= 1.0)) m_Params.frameWeightExponent = 0.9;
   if (!(m_Params.increaseBlend >= 0.0 && m_Params.increaseBlend < 1.0)) m_Params.increaseBlend = 0.9;
   if (!(m_Params.changeThreshold >= 0.0)) m_Params.changeThreshold = 0.02;
+  m_Params.minChangePeriod = std::max(0, m_Params.minChangePeriod);
+  m_Params.latencyFrames = std::clamp(m_Params.latencyFrames, 0, 64);
 }
 
 void UEStyleController::Reset() {
   m_History.clear();
+  m_Called.clear();
   m_OverBudget = 0;
+  m_SinceChange = 1 << 20;
+}
+
+// The scale the timed frame was rendered at: given by the caller, or the
+// scale this law was called with latencyFrames calls ago (the current one
+// until that many calls were made).
+double UEStyleController::MeasuredScale(double s, const FrameTiming& timing) {
+  m_Called.push_back(s);
+  if (static_cast<int>(m_Called.size()) > m_Params.latencyFrames + 1) m_Called.erase(m_Called.begin());
+  if (FinitePositive(timing.gpuScale)) return timing.gpuScale;
+  return m_Called.front();
 }
 
 double UEStyleController::Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) {
@@ -186,25 +200,33 @@ double UEStyleController::Update(double currentScale, const FrameTiming& timing,
   const double s = ClampScale(currentScale, tgt);
   const double aim = AimOf(tgt);
   const double gpu = timing.gpuInnerSeconds;
+  const double measuredAt = MeasuredScale(s, timing);
+  ++m_SinceChange;
+  auto change = [&](double next) {
+    next = ClampScale(next, tgt);
+    if (next != s) m_SinceChange = 0;
+    return next;
+  };
   if (!FinitePositive(gpu)) return s;  // no usable measurement
   if (IsCpuBoundFrame(timing, tgt)) {  // CPU-bound: the GPU time does not predict the frame
     m_OverBudget = 0;
     return s;
   }
 
-  m_History.push_back({gpu, s});
+  m_History.push_back({gpu, measuredAt});
   if (static_cast<int>(m_History.size()) > m_Params.historySize) m_History.erase(m_History.begin());
   m_OverBudget = gpu > tgt.budgetSeconds ? m_OverBudget + 1 : 0;
 
-  if (m_OverBudget >= m_Params.panicFrames) {  // panic: trust the newest frame alone
-    const double next = s * std::sqrt(aim / gpu);
+  if (m_OverBudget >= m_Params.panicFrames) {  // panic: trust the newest frame alone, at once
+    const double next = measuredAt * std::sqrt(aim / gpu);
     m_History.clear();
     m_OverBudget = 0;
-    return ClampScale(next, tgt);
+    return next < s ? change(next) : s;
   }
 
   // Each sample suggests the scale that would have hit the aim with a
-  // quadratic cost model; newer samples weigh more.
+  // quadratic cost model from the scale it was measured at; newer samples
+  // weigh more.
   double weight = 1.0, sumW = 0.0, sum = 0.0;
   for (auto it = m_History.rbegin(); it != m_History.rend(); ++it) {
     sum += weight * it->scale * std::sqrt(aim / it->gpuSeconds);
@@ -213,10 +235,11 @@ double UEStyleController::Update(double currentScale, const FrameTiming& timing,
   }
   const double suggested = sum / sumW;
   if (!std::isfinite(suggested)) return s;
+  if (m_SinceChange < m_Params.minChangePeriod) return s;  // minimum change period
   if (std::abs(suggested - s) < m_Params.changeThreshold * s) return s;
   double next = suggested;
   if (suggested > s) next = s + (suggested - s) * (1.0 - m_Params.increaseBlend);  // amortised increase
-  return ClampScale(next, tgt);
+  return change(next);
 }
 
 // ---------------------------------------------------------------- robust law
@@ -227,7 +250,7 @@ RobustController::RobustController(const Params& params) : m_Params(params) {
   Params& p = m_Params;
   p.medianWindow = std::max(1, p.medianWindow);
   p.minSamples = std::clamp(p.minSamples, 1, p.medianWindow);
-  if (!(p.deadband >= 0.0 && p.deadband < 1.0)) p.deadband = 0.03;
+  if (!(p.deadband >= 0.0 && p.deadband < 1.0)) p.deadband = 0.05;
   if (!(p.outlierFactor > 1.0)) p.outlierFactor = 4.0;
   p.outlierPersistFrames = std::max(1, p.outlierPersistFrames);
   p.panicFrames = std::max(1, p.panicFrames);
@@ -255,10 +278,12 @@ void RobustController::Reset() {
   m_Noise = m_Params.initialNoise;
   m_LastSample = 0.0;
   m_Diffs.clear();
+  m_Spread = 0.0;
 }
 
 double RobustController::Band(int samples) const {
-  const double sigmaMedian = 1.25 * m_Noise / std::sqrt(static_cast<double>(std::max(1, samples)));
+  const double noise = std::max(m_Noise, m_Spread);
+  const double sigmaMedian = 1.25 * noise / std::sqrt(static_cast<double>(std::max(1, samples)));
   return std::max(m_Params.deadband, m_Params.noiseZ * sigmaMedian);
 }
 
@@ -312,6 +337,9 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
     m_OverBudget = 0;
     m_HaveSecant = false;
   }
+  // A time that names its frame's scale needs no count of frames in flight.
+  const bool paired = FinitePositive(timing.gpuScale);
+  if (paired) m_SkipFrames = 0;
   if (m_SkipFrames > 0) {  // still measuring frames rendered at the previous scale
     --m_SkipFrames;
     return finish(s);
@@ -322,6 +350,7 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
     m_OverBudget = 0;
     return finish(s);
   }
+  if (paired && std::abs(std::log(timing.gpuScale / s)) > 0.01) return finish(s);  // an earlier scale's frame
 
   // Outliers relative to the running median (or, right after a correction, to
   // the aim we just steered to).
@@ -359,6 +388,12 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
 
   if (static_cast<int>(m_Samples.size()) < m_Params.minSamples) return finish(s);
   const double median = Median(m_Samples);
+  m_Spread = 0.0;
+  if (m_Params.spreadNoise && m_Samples.size() >= 5) {  // correlated noise: successive differences miss it
+    std::vector<double> dev;
+    for (double x : m_Samples) dev.push_back(std::abs(std::log(x / median)));
+    m_Spread = 1.4826 * Median(dev);
+  }
   // Deadband, widened to the noise of the median (~1.25 sigma / sqrt(n)), and
   // a set point lowered by the part of the band that exceeds `deadband`, so a
   // noisy timer does not let the GPU time drift past aim + deadband.
@@ -377,7 +412,11 @@ std::unique_ptr<ResolutionController> MakeController(ControlLaw law, int latency
       p.latencyFrames = latencyFrames;
       return std::make_unique<RobustController>(p);
     }
-    case ControlLaw::UEStyle: return std::make_unique<UEStyleController>();
+    case ControlLaw::UEStyle: {
+      UEStyleController::Params p;
+      p.latencyFrames = latencyFrames;
+      return std::make_unique<UEStyleController>(p);
+    }
     case ControlLaw::Article:
     case ControlLaw::Count: break;
   }

@@ -38,6 +38,11 @@ namespace drr {
 struct FrameTiming {
   double gpuInnerSeconds = 0.0;  // GPU time of the inner frame (the article law: the 10-result average, 0 before the first)
   double frameSeconds = 0.0;     // whole frame period (the article law: 1 / DXUT-style FPS, +Inf before the first figure)
+  // Scale per axis of the frame the GPU time measured (the timer's result
+  // arrives frames late, after later frames changed the scale); 0 = unknown:
+  // the UE-style law then pairs it with the scale it was called with
+  // latencyFrames calls earlier. The article law ignores it.
+  double gpuScale = 0.0;
 };
 
 // The arithmetic of the original's AveragedGPUTimer: results are summed in
@@ -171,7 +176,10 @@ private:
 bool IsCpuBoundFrame(const FrameTiming& timing, const ControlTarget& target);
 
 // Our implementation of the idea behind Unreal Engine's dynamic resolution
-// heuristic (written from the published description, no engine code).
+// heuristic (written from the published description, no engine code). Each
+// history entry pairs a GPU time with the scale of the frame it measured
+// (FrameTiming::gpuScale, else the scale of latencyFrames calls earlier), so
+// a delayed time is never read as the cost of the current scale.
 class UEStyleController final : public ResolutionController {
 public:
   struct Params {
@@ -180,6 +188,8 @@ public:
     double changeThreshold = 0.02;     // relative scale change below which nothing changes
     int panicFrames = 2;               // consecutive over-budget frames that trigger a panic drop
     double increaseBlend = 0.9;        // increases move (1 - blend) of the way per frame (amortised)
+    int minChangePeriod = 8;           // calls between two changes (a panic does not wait)
+    int latencyFrames = 0;             // calls between a frame and its GPU time, when gpuScale is 0
   };
   UEStyleController();
   explicit UEStyleController(const Params& params);
@@ -190,11 +200,14 @@ public:
 private:
   struct Sample {
     double gpuSeconds;
-    double scale;
+    double scale;  // scale of the frame that took gpuSeconds
   };
+  double MeasuredScale(double currentScale, const FrameTiming& timing);
   Params m_Params;
   std::vector<Sample> m_History;  // newest last
+  std::vector<double> m_Called;   // scales of the latest calls, newest last (for latencyFrames)
   int m_OverBudget = 0;
+  int m_SinceChange = 1 << 20;    // calls since the last change
 };
 
 // The project's law. Per frame:
@@ -206,9 +219,11 @@ private:
 //     latencyFrames, are skipped);
 //  4. deadband: act only when the median is more than max(deadband,
 //     noiseZ x sigma_median) away from the aim (relative), sigma_median from a
-//     running robust estimate of the sample noise (median of successive log
-//     differences, insensitive to drifts and steps), so a still load changes
-//     the scale zero times even when the GPU timer is noisy;
+//     running robust estimate of the sample noise (the larger of: the median
+//     of successive log differences, insensitive to drifts and steps; and the
+//     spread of the window around its median, which sees correlated noise the
+//     differences miss), so a still load changes the scale zero times even
+//     when the GPU timer is noisy;
 //  5. step in log scale: dlog s = log(aim / t) / gamma, gamma = 2 (quadratic
 //     cost model: pixels ~ s^2) for the first correction of an episode, then the
 //     secant slope measured between the last two corrections (clamped to
@@ -224,7 +239,7 @@ public:
   struct Params {
     int medianWindow = 9;       // most samples (at the current scale) in the median
     int minSamples = 2;         // fewest samples before a (non-panic) correction
-    double deadband = 0.03;     // smallest relative error acted on
+    double deadband = 0.05;     // smallest relative error acted on (0.03 before the synthetic-set tuning)
     double noiseZ = 3.5;        // the deadband widens to noiseZ x the median's estimated noise
     double initialNoise = 0.01; // relative noise assumed before any estimate
     double outlierFactor = 4.0;
@@ -236,6 +251,8 @@ public:
     double maxStepDown = 0.5;   // smallest factor per correction
     double maxStepUp = 1.5;     // largest factor per correction
     int latencyFrames = 0;      // frames between a scale change and the first GPU time measured at it
+                                // (when FrameTiming::gpuScale is 0; else that scale says it)
+    bool spreadNoise = true;    // the noise is also the spread of the window around its median
   };
   RobustController();
   explicit RobustController(const Params& params);
@@ -261,6 +278,7 @@ private:
   double m_Noise = 0.01;             // estimated relative noise of one sample (log domain)
   double m_LastSample = 0.0;         // previous usable sample (for the noise estimate)
   std::vector<double> m_Diffs;       // recent |log(t_i / t_i-1)|
+  double m_Spread = 0.0;             // robust spread of the window's samples (log domain)
 };
 
 // What a law is fed. Original: the article law as the original feeds it, every
@@ -270,9 +288,11 @@ private:
 enum class Feed { Original, PerResult };
 Feed FeedFor(ControlLaw law);
 
-// A fresh controller of the law with its default parameters. The robust law is
-// told latencyFrames: how many GPU results after a scale change still describe
-// the old scale (Docs/Controller.md: unstable otherwise); the others ignore it.
+// A fresh controller of the law with its default parameters. The robust and
+// UE-style laws are told latencyFrames: how many GPU results after a scale
+// change still describe the old scale (the robust law skips them; UE-style
+// pairs a time with its frame's scale through it when gpuScale is 0); the
+// article law ignores it.
 std::unique_ptr<ResolutionController> MakeController(ControlLaw law, int latencyFrames = 0);
 
 }  // namespace drr

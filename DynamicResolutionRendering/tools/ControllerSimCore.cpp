@@ -159,14 +159,19 @@ bool IsStill(const SimConfig& c, int n, int d, int lastLoadChange) {
 
 // Settling time, overshoot and steady-state error from the per-frame
 // relative error of the model time against the aim.
-void ScoreResponse(const SimConfig& c, const std::vector<double>& err, int d, SimResult* r) {
+void ScoreResponse(const LoopSpec& c, const std::vector<double>& err, SimResult* r) {
   const int frames = static_cast<int>(err.size());
   // Settling: first frame from which the model time stays in the band to the end.
-  const int from = SettleFrom(c.scenario, d);
+  const int from = c.settleFrom;
   int lastOut = -1;
   for (int n = from; n < frames; ++n)
     if (std::abs(err[n]) > c.settleBand) lastOut = n;
   r->settleFrames = lastOut < 0 ? 0 : (lastOut + 1 < frames - kTailFrames / 2 ? lastOut + 1 - from : -1);
+  if (c.settleIsFirstReach) {
+    r->settleFrames = -1;
+    for (int n = from; n < frames && r->settleFrames < 0; ++n)
+      if (std::abs(err[n]) <= c.settleBand) r->settleFrames = n - from;
+  }
 
   const double e0 = err[from];
   const bool stepLike = std::abs(e0) > c.settleBand && r->settleApplies;
@@ -178,23 +183,87 @@ void ScoreResponse(const SimConfig& c, const std::vector<double>& err, int d, Si
   r->steadyErrorPct = 100.0 * tail / kTailFrames;
 }
 
+// The synthetic plant: the model of ControllerSimCore.h with the scenario's
+// disturbances, white or AR(1)-correlated noise.
+class SyntheticPlant final : public Plant {
+public:
+  SyntheticPlant(const SimConfig& c, int d)
+      : m_C(c), m_D(d), m_Gauss(c.seed ^ (static_cast<std::uint32_t>(c.scenario) * 0x9E3779B9u)),
+        m_PreviousLoad(LoadAt(c.scenario, 0, d)) {}
+  PlantFrame Frame(int n, double pixelFraction) override {
+    const double u = m_Gauss.Uniform();  // drawn every frame so all scenarios share the noise sequence
+    const Conditions cond = ConditionsAt(m_C, n, m_D, u);
+    if (cond.load != m_PreviousLoad) m_LastLoadChange = n;
+    m_PreviousLoad = cond.load;
+    const double rho = std::clamp(m_C.plant.noiseCorrelation, 0.0, 0.999);
+    m_Noise = rho * m_Noise + std::sqrt(1.0 - rho * rho) * m_Gauss.Next();
+    PlantFrame f;
+    f.model = m_C.plant.GpuSeconds(pixelFraction, cond.load);
+    f.actual = std::max(0.0, f.model * (1.0 + m_C.plant.noise * m_Noise)) * cond.spike;
+    f.frameSeconds = std::max(cond.cpuSeconds, f.actual);
+    if (m_C.scenario == Scenario::VSync60) f.frameSeconds = std::ceil(f.frameSeconds * 60.0 - 1e-9) / 60.0;
+    f.load = cond.load;
+    f.budgetScale = BudgetScale(m_C.plant, cond.load, SanitizeTarget(m_C.target));
+    f.countsOverBudget = cond.spike == 1.0;
+    f.still = IsStill(m_C, n, m_D, m_LastLoadChange);
+    f.corrupt = cond.corrupt;
+    f.corruptGpu = cond.corruptGpu;
+    f.corruptFrame = cond.corruptFrame;
+    return f;
+  }
+
+private:
+  const SimConfig& m_C;
+  int m_D;
+  Gauss m_Gauss;
+  double m_PreviousLoad;
+  int m_LastLoadChange = 0;
+  double m_Noise = 0.0;  // AR(1) state, unit variance
+};
+
 }  // namespace
 
-SimResult RunScenario(ResolutionController& controller, const SimConfig& config, bool keepTrace) {
-  const SimConfig& c = config;
+double BudgetScale(const PlantModel& plant, double load, const ControlTarget& sanitized) {
+  const double pixelPart = sanitized.budgetSeconds - plant.fixedSeconds;
+  const double s = pixelPart > 0.0 ? std::sqrt(pixelPart / (plant.pixelSeconds * load)) : 0.0;
+  return std::clamp(s, sanitized.minScale, sanitized.maxScale);
+}
+
+double GivenUpPercent(const std::vector<double>& scales, const std::vector<double>& budgetScales) {
+  double sum = 0.0, budgetSum = 0.0;
+  for (std::size_t i = 0; i < std::min(scales.size(), budgetScales.size()); ++i) {
+    sum += scales[i];
+    budgetSum += budgetScales[i];
+  }
+  return budgetSum > 0.0 ? 100.0 * (1.0 - sum / budgetSum) : 0.0;
+}
+
+ControlTarget LawTarget(const ResolutionController& controller, const ControlTarget& target, bool commonAim) {
+  ControlTarget t = SanitizeTarget(target);
+  if (!commonAim) return t;
+  // A law whose own aim ignores the headroom (the article law steers to its
+  // budget) is handed the budget that puts its aim on T (1 - headroom).
+  const double common = t.budgetSeconds * (1.0 - t.headroom);
+  t.budgetSeconds *= common / controller.AimSeconds(t);
+  return t;
+}
+
+SimResult RunLoop(ResolutionController& controller, Plant& plant, const LoopSpec& c, bool keepTrace) {
   const ControlTarget target = SanitizeTarget(c.target);
-  const int frames = std::max(c.frames, kMinFrames);
-  const int d = std::clamp(c.disturbanceFrame, 1, frames - kTailFrames);
+  const ControlTarget lawTarget = LawTarget(controller, target, c.commonAim);
+  const int frames = c.frames;
   const double budget = target.budgetSeconds;
-  const double aim = controller.AimSeconds(target);
+  const double aim = controller.AimSeconds(lawTarget);
 
   DynamicResolution dr;
   dr.InitializeResolutionParameters(c.backBufferWidth, c.backBufferHeight, 8192, 8192,
                                     static_cast<float>(std::max(1.0, target.maxScale)));
   dr.SetScale(1.0f, 1.0f);
 
-  Gauss gauss(c.seed ^ (static_cast<std::uint32_t>(c.scenario) * 0x9E3779B9u));
-  std::deque<double> inFlight;  // GPU times on their way to the controller (latency)
+  struct InFlight {
+    double gpu, scale;
+  };
+  std::deque<InFlight> inFlight;  // GPU times (and their frames' scales) on their way to the controller
   const Feed feed = c.feed.value_or(dynamic_cast<ArticleController*>(&controller) ? Feed::Original : Feed::PerResult);
   BlockAverage average(10);  // the original's AveragedGPUTimer(10)
   DxutFpsCounter fps;
@@ -203,57 +272,70 @@ SimResult RunScenario(ResolutionController& controller, const SimConfig& config,
 
   SimResult r;
   r.controller = std::string(controller.Name());
-  r.scenario = std::string(ToString(c.scenario));
+  r.scenario = c.scenario;
   r.aimSeconds = aim;
-  r.settleApplies = c.scenario != Scenario::Periodic;
+  r.settleApplies = c.settleApplies;
 
-  std::vector<double> err(frames, 0.0);
-  int lastLoadChange = 0;
-  double previousLoad = LoadAt(c.scenario, 0, d);
+  std::vector<double> err(frames, 0.0), scales, budgetScales;
   for (int n = 0; n < frames; ++n) {
-    const double u = gauss.Uniform();  // drawn every frame so all scenarios share the noise sequence
-    const Conditions cond = ConditionsAt(c, n, d, u);
-    if (cond.load != previousLoad) lastLoadChange = n;
-    previousLoad = cond.load;
-
     const double sx = dr.GetScaleX();
     const double sy = dr.GetScaleY();
-    const double model = c.plant.GpuSeconds(sx * sy, cond.load);
-    const double actual = std::max(0.0, model * (1.0 + c.plant.noise * gauss.Next())) * cond.spike;
-    double frame = std::max(cond.cpuSeconds, actual);
-    if (c.scenario == Scenario::VSync60) frame = std::ceil(frame * 60.0 - 1e-9) / 60.0;
+    const PlantFrame f = plant.Frame(n, sx * sy);
 
-    inFlight.push_back(actual);
-    double seen = inFlight.front();
-    if (static_cast<int>(inFlight.size()) > c.plant.latencyFrames) inFlight.pop_front();
-    FrameTiming timing{seen, frame};
+    inFlight.push_back({f.actual, sx});
+    const InFlight seen = inFlight.front();
+    if (static_cast<int>(inFlight.size()) > c.latencyFrames) inFlight.pop_front();
+    FrameTiming timing{seen.gpu, f.frameSeconds, seen.scale};
     if (feed == Feed::Original) {
-      average.Add(seen);
-      clock += frame;
+      average.Add(seen.gpu);
+      clock += f.frameSeconds;
       fps.Tick(clock);  // DXUT counts the frame at the start of the next one
-      timing = {average.Value(), c.variant.lastFramePeriod ? frame : fps.FrameSeconds()};
+      timing = {average.Value(), c.variant.lastFramePeriod ? f.frameSeconds : fps.FrameSeconds()};
     }
-    if (cond.corrupt) {
-      timing.gpuInnerSeconds = cond.corruptGpu;
-      if (cond.corruptFrame >= 0.0 || std::isnan(cond.corruptFrame)) timing.frameSeconds = cond.corruptFrame;
+    if (f.corrupt) {
+      timing.gpuInnerSeconds = f.corruptGpu;
+      if (f.corruptFrame >= 0.0 || std::isnan(f.corruptFrame)) timing.frameSeconds = f.corruptFrame;
     }
 
     const unsigned int w0 = dr.GetViewportWidth(), h0 = dr.GetViewportHeight();
-    const double next = controller.Update(sx, timing, target);
+    const double next = controller.Update(sx, timing, lawTarget);
     dr.SetScale(static_cast<float>(next), static_cast<float>(next));
     const bool changed = dr.GetViewportWidth() != w0 || dr.GetViewportHeight() != h0;
 
-    err[n] = model / aim - 1.0;
-    if (n >= d) {
-      if (actual > budget && cond.spike == 1.0) ++r.overBudget;
+    err[n] = f.model / aim - 1.0;
+    if (n >= c.metricsFrom) {
+      if (f.actual > budget && f.countsOverBudget) ++r.overBudget;
       if (changed) ++r.changes;
-      if (IsStill(c, n, d, lastLoadChange) && changed) ++r.stillChanges;
+      if (f.still && changed) ++r.stillChanges;
+      scales.push_back(sx);
+      budgetScales.push_back(f.budgetScale);
     }
-    if (keepTrace) r.trace.push_back({n, cond.load, sx, model, timing.gpuInnerSeconds, timing.frameSeconds, changed});
+    if (keepTrace) r.trace.push_back({n, f.load, sx, f.model, timing.gpuInnerSeconds, timing.frameSeconds, changed});
   }
-  ScoreResponse(c, err, d, &r);
+  ScoreResponse(c, err, &r);
   r.finalScale = dr.GetScaleX();
+  r.givenUpPct = GivenUpPercent(scales, budgetScales);
   return r;
+}
+
+SimResult RunScenario(ResolutionController& controller, const SimConfig& config, bool keepTrace) {
+  const SimConfig& c = config;
+  LoopSpec spec;
+  spec.scenario = std::string(ToString(c.scenario));
+  spec.frames = std::max(c.frames, kMinFrames);
+  spec.metricsFrom = std::clamp(c.disturbanceFrame, 1, spec.frames - kTailFrames);
+  spec.settleFrom = SettleFrom(c.scenario, spec.metricsFrom);
+  spec.settleApplies = c.scenario != Scenario::Periodic;
+  spec.target = c.target;
+  spec.commonAim = c.commonAim;
+  spec.feed = c.feed;
+  spec.variant = c.variant;
+  spec.latencyFrames = c.plant.latencyFrames;
+  spec.backBufferWidth = c.backBufferWidth;
+  spec.backBufferHeight = c.backBufferHeight;
+  spec.settleBand = c.settleBand;
+  SyntheticPlant plant(c, spec.metricsFrom);
+  return RunLoop(controller, plant, spec, keepTrace);
 }
 
 const std::vector<ControlLaw>& AllLaws() {
@@ -272,6 +354,20 @@ std::vector<SimResult> RunMatrix(const std::vector<ControlLaw>& laws, const std:
     }
   }
   return out;
+}
+
+std::vector<SyntheticCase> SyntheticSet(const SimConfig& base) {
+  std::vector<SyntheticCase> set;
+  for (int latency = 0; latency <= 3; ++latency) {
+    for (const bool correlated : {false, true}) {
+      SyntheticCase c{"latency " + std::to_string(latency) + (correlated ? ", AR(0.9) 3 %" : ", white 1 %"), base};
+      c.base.plant.latencyFrames = latency;
+      c.base.plant.noise = correlated ? 0.03 : 0.01;
+      c.base.plant.noiseCorrelation = correlated ? 0.9 : 0.0;
+      set.push_back(c);
+    }
+  }
+  return set;
 }
 
 bool ParseArticleVariant(std::string_view name, ArticleVariant* variant) {
@@ -297,6 +393,7 @@ std::vector<SimResult> RunArticleVariant(ArticleVariant variant, const std::vect
   std::vector<SimResult> out;
   for (Scenario s : scenarios) {
     SimConfig c = ConfigFor(s, base);
+    c.commonAim = false;  // the original's own aim, T
     c.feed = Feed::Original;
     c.variant.lastFramePeriod = variant == ArticleVariant::FramePeriod;
     ArticleController article;
@@ -315,12 +412,18 @@ std::vector<Totals> Summarise(const std::vector<SimResult>& results) {
   for (const SimResult& r : results) {
     auto it = std::find_if(t.begin(), t.end(), [&](const Totals& x) { return x.controller == r.controller; });
     if (it == t.end()) {
-      t.push_back({r.controller, 0, 0});
+      t.push_back(Totals{});
       it = t.end() - 1;
+      it->controller = r.controller;
     }
     it->overBudget += r.overBudget;
     it->stillChanges += r.stillChanges;
+    it->changes += r.changes;
+    it->neverSettled += r.settleApplies && r.settleFrames < 0;
+    it->givenUpPct += r.givenUpPct;  // a sum until the end
+    ++it->runs;
   }
+  for (Totals& x : t) x.givenUpPct /= std::max(1, x.runs);
   return t;
 }
 
@@ -333,149 +436,36 @@ std::string SettleText(const SimResult& r) {
 }  // namespace
 
 void PrintTable(std::ostream& out, const std::vector<SimResult>& results) {
-  char line[256];
-  std::snprintf(line, sizeof line, "| %-9s | %-9s | %6s | %10s | %11s | %13s | %11s | %7s | %11s |\n", "law", "scenario",
-                "settle", "overshoot%", "steady err%", "still changes", "over budget", "changes", "final scale");
+  char line[320];
+  std::snprintf(line, sizeof line, "| %-9s | %-9s | %7s | %11s | %6s | %10s | %11s | %13s | %7s | %11s |\n", "law",
+                "scenario", "aim ms", "given up %", "settle", "overshoot%", "steady err%", "still changes",
+                "changes", "over budget");
   out << line;
-  out << "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+  out << "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   for (const SimResult& r : results) {
-    std::snprintf(line, sizeof line, "| %-9s | %-9s | %6s | %10.1f | %11.2f | %13d | %11d | %7d | %11.3f |\n",
-                  r.controller.c_str(), r.scenario.c_str(), SettleText(r).c_str(), r.overshootPct, r.steadyErrorPct,
-                  r.stillChanges, r.overBudget, r.changes, r.finalScale);
+    std::snprintf(line, sizeof line, "| %-9s | %-9s | %7.2f | %11.1f | %6s | %10.1f | %11.2f | %13d | %7d | %11d |\n",
+                  r.controller.c_str(), r.scenario.c_str(), r.aimSeconds * 1000.0, r.givenUpPct,
+                  SettleText(r).c_str(), r.overshootPct, r.steadyErrorPct, r.stillChanges, r.changes, r.overBudget);
     out << line;
   }
-  out << "\nTotals over the scenarios above:\n\n| law | over budget | still changes |\n| --- | ---: | ---: |\n";
+  out << "\nTotals over the runs above (given up: mean over the runs):\n\n"
+         "| law | over budget | given up % | changes | still changes | never settled |\n"
+         "| --- | ---: | ---: | ---: | ---: | ---: |\n";
   for (const Totals& t : Summarise(results)) {
-    std::snprintf(line, sizeof line, "| %-9s | %11d | %13d |\n", t.controller.c_str(), t.overBudget, t.stillChanges);
+    std::snprintf(line, sizeof line, "| %-9s | %11d | %10.1f | %7d | %13d | %13d |\n", t.controller.c_str(),
+                  t.overBudget, t.givenUpPct, t.changes, t.stillChanges, t.neverSettled);
     out << line;
   }
 }
 
 void WriteCsv(std::ostream& out, const std::vector<SimResult>& results) {
-  out << "controller,scenario,aim_ms,settle_frames,overshoot_pct,steady_error_pct,still_changes,over_budget,changes,"
-         "final_scale\n";
-  char line[256];
+  out << "controller,scenario,aim_ms,given_up_pct,settle_frames,overshoot_pct,steady_error_pct,still_changes,"
+         "over_budget,changes,final_scale\n";
+  char line[320];
   for (const SimResult& r : results) {
-    std::snprintf(line, sizeof line, "%s,%s,%.4f,%s,%.3f,%.3f,%d,%d,%d,%.5f\n", r.controller.c_str(),
-                  r.scenario.c_str(), r.aimSeconds * 1000.0, SettleText(r).c_str(), r.overshootPct,
+    std::snprintf(line, sizeof line, "%s,%s,%.4f,%.3f,%s,%.3f,%.3f,%d,%d,%d,%.5f\n", r.controller.c_str(),
+                  r.scenario.c_str(), r.aimSeconds * 1000.0, r.givenUpPct, SettleText(r).c_str(), r.overshootPct,
                   r.steadyErrorPct, r.stillChanges, r.overBudget, r.changes, r.finalScale);
-    out << line;
-  }
-}
-
-// ----------------------------------------------------------------- k sweep
-//
-// Stability of the article law. With the plant t(S) = c + p L S^2 and the law
-// S' = S (1 + k (1 - t(S)/T)), the fixed point S* has t(S*) = T. Linearising,
-// with S = S* (1 + e):
-//   d S'/d S at S* = 1 + k (1 - t/T) - k S* t'(S*) / T = 1 - 2 k p L S*^2 / T
-//                  = 1 - 2 k alpha,   alpha = (T - c) / T  (pixel-bound share of T)
-// so e' = (1 - 2 k alpha) e:
-//   k < 1 / (2 alpha)              monotone convergence (rate 1 - 2 k alpha per frame)
-//   1 / (2 alpha) < k < 1 / alpha  alternating, still converging
-//   k > 1 / alpha                  |multiplier| > 1: the alternation grows (period-2
-//                                  flip); the linear law would diverge, the clamp
-//                                  [minScale, maxScale] holds it in a bounded
-//                                  2-cycle, and for k (t/T - 1) > 1 the raw S'
-//                                  is negative, which only the clamp rescues.
-// For a purely pixel-bound GPU (c = 0): alpha = 1, alternation above k = 0.5,
-// instability above k = 1. Two effects the linear model leaves out show up in
-// the sweep: the floor() of the integral viewport makes tiny steps (k (1 - t/T)
-// S W < 1 px) round down only, so small gains ratchet downwards; and with vsync
-// t = (t_gpu + T)/2 for GPU-bound frames under T, which halves the effective gain
-// from below.
-double ArticleAlpha(const PlantModel& plant, const ControlTarget& target) {
-  const ControlTarget t = SanitizeTarget(target);
-  return std::clamp((t.budgetSeconds - plant.fixedSeconds) / t.budgetSeconds, 0.0, 1.0);
-}
-
-std::vector<SweepRow> SweepArticleGain(const SimConfig& base, int stepsPerDecade) {
-  stepsPerDecade = std::max(1, stepsPerDecade);
-  const ControlTarget target = SanitizeTarget(base.target);
-  const double alpha = ArticleAlpha(base.plant, target);
-  std::vector<SweepRow> rows;
-  const int steps = 4 * stepsPerDecade;  // 1e-3 .. 1e1
-  for (int i = 0; i <= steps; ++i) {
-    const double k = std::pow(10.0, -3.0 + static_cast<double>(i) / stepsPerDecade);
-    ArticleController law(k);
-    SimConfig c = ConfigFor(Scenario::Step2x, base);
-    const SimResult r = RunScenario(law, c, /*keepTrace=*/true);
-    SweepRow row;
-    row.gain = k;
-    row.multiplier = 1.0 - 2.0 * k * alpha;
-    row.settleFrames = r.settleFrames;
-    const int n = static_cast<int>(r.trace.size());
-    double lo = 1e9, hi = -1e9, sum = 0.0;
-    int moves = 0, reversals = 0, lastDir = 0;
-    for (int j = n - 200; j < n; ++j) {
-      const double s = r.trace[j].scale;
-      lo = std::min(lo, s);
-      hi = std::max(hi, s);
-      sum += s;
-      if (j > n - 200) {
-        const double ds = s - r.trace[j - 1].scale;
-        const int dir = ds > 0 ? 1 : (ds < 0 ? -1 : 0);
-        if (dir != 0) {
-          ++moves;
-          if (lastDir != 0 && dir != lastDir) ++reversals;
-          lastDir = dir;
-        }
-      }
-    }
-    row.amplitudePct = 100.0 * (hi - lo) / (sum / 200.0);
-    row.alternation = moves > 0 ? static_cast<double>(reversals) / moves : 0.0;
-    const double minS = target.minScale, maxS = target.maxScale;
-    row.hitsClamp = lo <= minS * 1.0001 || hi >= maxS * 0.9999;
-    if (row.amplitudePct > 10.0 && row.alternation > 0.8)
-      row.verdict = row.hitsClamp ? "unstable: 2-cycle held by the clamp" : "unstable: sustained alternation";
-    else if (row.settleFrames < 0)
-      row.verdict = "does not settle (too slow / ratchets)";
-    else if (row.multiplier < 0.0)
-      row.verdict = "alternating, converges";
-    else
-      row.verdict = "monotone, converges";
-    rows.push_back(row);
-  }
-  return rows;
-}
-
-void PrintSweep(std::ostream& out, const std::vector<SweepRow>& rows, const SimConfig& base) {
-  const double alpha = ArticleAlpha(base.plant, base.target);
-  char line[256];
-  std::snprintf(line, sizeof line,
-                "Article law gain sweep on step2x (alpha = (T - c)/T = %.3f): alternation above k = 1/(2 alpha) = "
-                "%.3f, linear instability above k = 1/alpha = %.3f\n\n",
-                alpha, 0.5 / alpha, 1.0 / alpha);
-  out << line;
-  out << "| k | 1 - 2 k alpha | settle | amplitude% (last 200) | reversals | at clamp | verdict |\n"
-         "| ---: | ---: | ---: | ---: | ---: | :---: | --- |\n";
-  for (const SweepRow& r : rows) {
-    std::snprintf(line, sizeof line, "| %.4g | %+.3f | %s | %.1f | %.2f | %s | %s |\n", r.gain, r.multiplier,
-                  r.settleFrames < 0 ? "never" : std::to_string(r.settleFrames).c_str(), r.amplitudePct,
-                  r.alternation, r.hitsClamp ? "yes" : "no", r.verdict.c_str());
-    out << line;
-  }
-  const SweepRow* first = nullptr;
-  for (const SweepRow& r : rows)
-    if (r.verdict.rfind("unstable", 0) == 0) {
-      first = &r;
-      break;
-    }
-  if (first) {
-    std::snprintf(line, sizeof line, "\nFirst unstable gain in the sweep: k = %.4g (analytic bound 1/alpha = %.3f)\n",
-                  first->gain, 1.0 / alpha);
-    out << line;
-  } else {
-    out << "\nNo unstable gain in the sweep.\n";
-  }
-}
-
-void WriteSweepCsv(std::ostream& out, const std::vector<SweepRow>& rows) {
-  out << "gain,multiplier,settle_frames,amplitude_pct,alternation,hits_clamp,verdict\n";
-  char line[256];
-  for (const SweepRow& r : rows) {
-    std::snprintf(line, sizeof line, "%.6g,%.4f,%d,%.3f,%.3f,%d,\"%s\"\n", r.gain, r.multiplier, r.settleFrames,
-                  r.amplitudePct, r.alternation, r.hitsClamp ? 1 : 0, r.verdict.c_str());
     out << line;
   }
 }

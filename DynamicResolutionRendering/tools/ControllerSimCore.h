@@ -30,12 +30,19 @@
 
 namespace drr::sim {
 
+// The sample's timer latency in the simulator's terms: on lavapipe every
+// inner-frame result is polled 2 frames after its frame (FrameRecord's
+// gpu_delay_frames, the traces' headers), i.e. one frame later than the
+// simulator's latency 0 (time of frame n fed after frame n).
+constexpr int kSampleTimerLatency = 1;
+
 struct PlantModel {
   double fixedSeconds = 0.002;   // resolution-independent GPU work (c)
   double pixelSeconds = 0.030;   // GPU work at scale 1, load 1 (p)
   double noise = 0.01;           // relative standard deviation of the GPU time
+  double noiseCorrelation = 0.0; // AR(1) coefficient of that noise from frame to frame (0: white)
   double cpuSeconds = 0.005;     // CPU time per frame when not CPU-bound
-  int latencyFrames = 0;         // frames before a GPU time reaches the controller
+  int latencyFrames = kSampleTimerLatency;  // frames before a GPU time reaches the controller
   double GpuSeconds(double pixelFraction, double load) const { return fixedSeconds + pixelSeconds * pixelFraction * load; }
 };
 
@@ -59,6 +66,10 @@ struct SimConfig {
   int disturbanceFrame = 300;  // also the end of the warm-up (metrics start here)
   PlantModel plant;
   ControlTarget target;        // budget 1/60 s, headroom 10 %, scale [0.3, 1]
+  // Every law steers to T (1 - headroom): the article law (which aims at its
+  // budget) is handed the budget T (1 - headroom). false: each law its own aim
+  // (the article law at T, as the original), for the article-law studies.
+  bool commonAim = true;
   std::uint32_t seed = 20110228u;
   unsigned int backBufferWidth = 1280;
   unsigned int backBufferHeight = 720;
@@ -92,8 +103,59 @@ struct SimResult {
   int overBudget = 0;           // frames after warm-up whose GPU time exceeded the budget (injected spikes excluded)
   int changes = 0;              // viewport changes after warm-up
   double finalScale = 0.0;
+  // Resolution given up: 100 (1 - sum of applied scales / sum of budget
+  // scales) after warm-up, the budget scale being the scale whose noise-free
+  // time equals the budget T at that frame's load (clamped to the range).
+  // Negative: above the budget scale.
+  double givenUpPct = 0.0;
   std::vector<FrameRecord> trace;  // filled when asked
 };
+
+// One frame of a plant at the applied scale.
+struct PlantFrame {
+  double model = 0.0;         // noise-free GPU time
+  double actual = 0.0;        // what the timer measures
+  double frameSeconds = 0.0;  // frame period
+  double load = 1.0;          // for the trace
+  double budgetScale = 1.0;   // scale whose noise-free time equals the budget (clamped)
+  bool countsOverBudget = true;  // false for injected spikes
+  bool still = false;            // the load has been still (for still changes)
+  bool corrupt = false;          // the controller is fed corruptGpu / corruptFrame instead
+  double corruptGpu = 0.0, corruptFrame = 0.0;
+};
+class Plant {
+public:
+  virtual ~Plant() = default;
+  // Frame n rendered with pixel fraction sx * sy (called once per frame, in order).
+  virtual PlantFrame Frame(int n, double pixelFraction) = 0;
+};
+
+// How a closed loop runs and is scored (RunScenario fills it from a SimConfig,
+// the trace replay from a trace).
+struct LoopSpec {
+  std::string scenario;
+  int frames = 900;
+  int metricsFrom = 300;   // end of the warm-up
+  int settleFrom = 300;    // settling counted from here
+  bool settleIsFirstReach = false;  // settle = first frame in the band (not: in it to the end)
+  bool settleApplies = true;
+  ControlTarget target;
+  bool commonAim = true;
+  std::optional<Feed> feed;
+  FeedVariant variant;
+  int latencyFrames = 0;
+  unsigned int backBufferWidth = 1280, backBufferHeight = 720;
+  double settleBand = 0.05;
+};
+SimResult RunLoop(ResolutionController& controller, Plant& plant, const LoopSpec& spec, bool keepTrace = false);
+
+// The target a law is handed (LawTarget) so that its AimSeconds is
+// T (1 - headroom) when commonAim; the over-budget count uses T itself.
+ControlTarget LawTarget(const ResolutionController& controller, const ControlTarget& target, bool commonAim);
+// Scale whose noise-free time equals the budget: sqrt((T - c) / (p load)), clamped.
+double BudgetScale(const PlantModel& plant, double load, const ControlTarget& sanitizedTarget);
+// 100 (1 - sum(scales) / sum(budgetScales)); 0 for empty input.
+double GivenUpPercent(const std::vector<double>& scales, const std::vector<double>& budgetScales);
 
 // The article law integrating the applied, quantised scale instead of its own
 // continuous one: what the port did before it followed the original (the floor
@@ -126,11 +188,35 @@ SimResult RunScenario(ResolutionController& controller, const SimConfig& config,
 std::vector<SimResult> RunMatrix(const std::vector<ControlLaw>& laws, const std::vector<Scenario>& scenarios,
                                  const SimConfig& base);
 
+// The synthetic set, the only cases any tuning of a law may look at: every
+// scenario under latency 0..3 frames, each with white 1 % noise and with
+// AR(1) noise of 3 % and correlation 0.9 (a slowly wandering timer).
+struct SyntheticCase {
+  std::string label;  // "latency 1, white 1 %"
+  SimConfig base;
+};
+std::vector<SyntheticCase> SyntheticSet(const SimConfig& base);
+
+// The robust law's tuning scan: totals over the synthetic set (and nothing
+// else: the held-out traces never enter it) for median windows 9 and 15,
+// deadbands 3 % and 5 %, noiseZ 3.5 and 5, with and without the spread term.
+struct RobustScanRow {
+  RobustController::Params params;
+  int overBudget = 0, changes = 0, stillChanges = 0, neverSettled = 0;
+  double givenUpPct = 0.0;  // mean over the runs
+};
+std::vector<RobustScanRow> ScanRobustOnSyntheticSet(const SimConfig& base);
+void PrintRobustScan(std::ostream& out, const std::vector<RobustScanRow>& rows);
+
 // Totals per controller over a matrix.
 struct Totals {
   std::string controller;
   int overBudget = 0;
   int stillChanges = 0;
+  int changes = 0;
+  int runs = 0;
+  int neverSettled = 0;      // runs where settling applies and never happened
+  double givenUpPct = 0.0;   // mean over the runs
 };
 std::vector<Totals> Summarise(const std::vector<SimResult>& results);
 

@@ -2,8 +2,11 @@
 // Run with --help for the options. The model and metrics live in
 // ControllerSimCore.cpp (shared with the tests).
 #include "ControllerSimCore.h"
+#include "ControllerSimReplay.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -25,8 +28,17 @@ void Usage(std::ostream& out) {
          "  --frames N          frames per run, " << drr::sim::kMinFrames << "..1000000 (default 900)\n"
          "  --seed N            noise seed, 0..4294967295 (default 20110228)\n"
          "  --noise X           relative GPU-time noise, 0..0.5 (default 0.01; still uses min(X, 0.002))\n"
-         "  --latency N         frames before a GPU time reaches the controller, 0..16 (default 0);\n"
-         "                      the robust law is told N (RobustController::Params::latencyFrames)\n"
+         "  --noise-corr R      AR(1) correlation of that noise from frame to frame, 0..0.99 (default 0)\n"
+         "  --headroom H        every law aims at T (1 - H), 0..0.5 (default 0.1; the article law is\n"
+         "                      handed the budget T (1 - H), over budget still counts against T)\n"
+         "  --synthetic-set     totals of every law on the synthetic set (the scenarios under latency\n"
+         "                      0..3, white 1 % and AR(0.9) 3 % noise): the only cases tuning may use\n"
+         "  --scan-robust       the robust law's tuning scan on the synthetic set (never the traces)\n"
+         "  --traces DIR        replay the held-out traces of DIR (Tests/controller/traces) instead\n"
+         "                      of the scenarios, budget = the sweep's time at scale 0.7, latency as\n"
+         "                      --latency (default: the sample's, 1)\n"
+         "  --latency N         frames before a GPU time reaches the controller, 0..16 (default 1, the\n"
+         "                      sample's on lavapipe); the robust and UE-style laws are told N\n"
          "  --gain K            gain of the article law, 0.001..10 (default 0.01)\n"
          "  --article-variant V original | frame-period | applied-scale | all: run the article law only,\n"
          "                      as the original (default feed), with the ctrl-frame-period fix, or\n"
@@ -111,6 +123,9 @@ struct SimArgs {
   std::string csvPath;
   bool sweep = false;
   std::vector<drr::sim::ArticleVariant> variants;  // non-empty: article variants instead of the laws
+  std::string tracesDir;
+  bool syntheticSet = false;
+  bool scanRobust = false;
 };
 
 // Reads the option at argv[*i] and its value (moving *i past it); exits with
@@ -137,6 +152,19 @@ void ParseOption(int argc, char** argv, int* i, SimArgs* args) {
   } else if (arg == "--noise") {
     if (!ParseDouble(value(arg), &x) || x < 0.0 || x > 0.5) Fail("--noise needs a number 0..0.5");
     config.plant.noise = x;
+  } else if (arg == "--noise-corr") {
+    if (!ParseDouble(value(arg), &x) || x < 0.0 || x > 0.99) Fail("--noise-corr needs a number 0..0.99");
+    config.plant.noiseCorrelation = x;
+  } else if (arg == "--headroom") {
+    if (!ParseDouble(value(arg), &x) || x < 0.0 || x > 0.5) Fail("--headroom needs a number 0..0.5");
+    config.target.headroom = x;
+  } else if (arg == "--scan-robust") {
+    args->scanRobust = true;
+  } else if (arg == "--synthetic-set") {
+    args->syntheticSet = true;
+  } else if (arg == "--traces") {
+    args->tracesDir = std::string(value(arg));
+    if (args->tracesDir.empty()) Fail("--traces needs a directory");
   } else if (arg == "--latency") {
     if (!ParseInt(value(arg), 0, 16, &n)) Fail("--latency needs an integer 0..16");
     config.plant.latencyFrames = static_cast<int>(n);
@@ -220,6 +248,57 @@ int main(int argc, char** argv) {
   }
 
   std::vector<drr::sim::SimResult> results;
+  if (args.scanRobust) {
+    if (!args.tracesDir.empty()) Fail("--scan-robust tunes on the synthetic set only; --traces is held out");
+    drr::sim::PrintRobustScan(std::cout, drr::sim::ScanRobustOnSyntheticSet(config));
+    return 0;
+  }
+  if (!args.tracesDir.empty()) {
+    std::vector<drr::sim::TraceCase> cases;
+    std::string error;
+    if (!drr::sim::LoadTraceDir(args.tracesDir, &cases, &error)) {
+      std::cerr << "drr_controller_sim: " << error << "\n";
+      return 1;
+    }
+    drr::sim::ReplaySpec spec;
+    spec.headroom = config.target.headroom;
+    spec.latencyFrames = config.plant.latencyFrames;
+    for (const drr::sim::TraceCase& c : cases) {
+      const auto rows = drr::sim::ReplayTrace(args.laws, c.trace, c.cost, spec);
+      results.insert(results.end(), rows.begin(), rows.end());
+      std::cout << c.trace.name << (c.trace.HeldOut() ? " (held out)" : "") << ": " << c.trace.rows.size()
+                << " frames, budget " << drr::sim::ReplayBudget(c.trace, c.cost, spec) * 1000.0 << " ms\n";
+    }
+    std::cout << "Replay: latency " << spec.latencyFrames << ", headroom " << spec.headroom << ", warm-up "
+              << spec.warmupFrames << " frames from scale 1\n\n";
+    std::stable_sort(results.begin(), results.end(), [](const auto& a, const auto& b) { return a.controller < b.controller; });
+    drr::sim::PrintTable(std::cout, results);
+    if (csv.is_open()) drr::sim::WriteCsv(csv, results);
+    return 0;
+  }
+  if (args.syntheticSet) {
+    std::cout << "Synthetic set (latency " << "0..3, white 1 % and AR(0.9) 3 %), seed " << config.seed << "\n\n";
+    for (const drr::sim::SyntheticCase& c : drr::sim::SyntheticSet(config)) {
+      std::cout << "### " << c.label << "\n\n";
+      SimArgs one = args;
+      one.config = c.base;
+      const auto rows = RunLawsOnScenarios(one);
+      drr::sim::PrintTable(std::cout, rows);
+      std::cout << "\n";
+      results.insert(results.end(), rows.begin(), rows.end());
+    }
+    std::cout << "### whole synthetic set\n\n";
+    char line[200];
+    std::cout << "| law | over budget | given up % | changes | still changes | never settled |\n"
+                 "| --- | ---: | ---: | ---: | ---: | ---: |\n";
+    for (const auto& t : drr::sim::Summarise(results)) {
+      std::snprintf(line, sizeof line, "| %-9s | %11d | %10.1f | %7d | %13d | %13d |\n", t.controller.c_str(),
+                    t.overBudget, t.givenUpPct, t.changes, t.stillChanges, t.neverSettled);
+      std::cout << line;
+    }
+    if (csv.is_open()) drr::sim::WriteCsv(csv, results);
+    return 0;
+  }
   if (args.variants.empty()) {
     results = RunLawsOnScenarios(args);
   } else {
@@ -228,8 +307,10 @@ int main(int argc, char** argv) {
       results.insert(results.end(), rows.begin(), rows.end());
     }
   }
-  std::cout << "Plant: gpu = (2 ms + 30 ms * sx * sy * load) * (1 + " << config.plant.noise
-            << " N(0,1)), budget 16.67 ms, aim 15.0 ms (article: 16.67 ms), latency "
+  std::cout << "Plant: gpu = (2 ms + 30 ms * sx * sy * load) * (1 + " << config.plant.noise << " e), e AR(1) of "
+            << config.plant.noiseCorrelation << ", budget 16.67 ms, every law aims at "
+            << 1000.0 / 60.0 * (1.0 - config.target.headroom) << " ms"
+            << (args.variants.empty() ? "" : " (article variants: at 16.67 ms, the original's)") << ", latency "
             << config.plant.latencyFrames << ", seed " << config.seed << ", " << config.frames
             << " frames, disturbance at 300\n\n";
   drr::sim::PrintTable(std::cout, results);

@@ -87,6 +87,7 @@ TEST(Simulator, DeterministicForASeed) {
 TEST(Simulator, SweepFindsTheAnalyticInstability) {
   SimConfig base;
   base.feed = Feed::PerResult;  // the linear analysis: the last frame's time, no block average
+  base.plant.latencyFrames = 0; // and no timer delay
   const double alpha = ArticleAlpha(base.plant, base.target);
   const auto rows = SweepArticleGain(base, 4);
   ASSERT_EQ(rows.size(), 17u);
@@ -125,6 +126,7 @@ protected:
   static void SetUpTestSuite() {
     SimConfig base;
     base.plant.noise = 0.0;
+    base.plant.latencyFrames = 0;  // as Docs/Controller.md's tables (--latency 0)
     const std::vector<Scenario> scenarios = {Scenario::Step2x, Scenario::StepHalf, Scenario::Ramp,
                                              Scenario::VSync60, Scenario::CpuBound, Scenario::Still};
     rows = new std::vector<SimResult>;

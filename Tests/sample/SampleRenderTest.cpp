@@ -527,6 +527,32 @@ TEST_F(SampleFixture, RobustLawSettlesWithFewerFramesOverBudgetThanArticle) {
   EXPECT_LT(robust.settled, 1.0);  // it did act on a budget of half the native time
 }
 
+// The per-result laws get the scale of the frame each GPU time measured (the
+// timer's result arrives frames late): for every frame with a new result,
+// FrameTiming::gpuScale is the scale logged for frame F - delay.
+TEST_F(SampleFixture, PerResultLawIsFedTheTimedFramesScale) {
+  Options o = TinyOptions(160, 90);
+  o.vsync = false;
+  o.control = ControlMode::VSync;
+  o.law = ControlLaw::UEStyle;
+  o.refresh = 1000.0;  // a 1 ms budget: the law keeps lowering the scale
+  StartSample(o);
+  int checked = 0, differsFromPrevious = 0;
+  for (int i = 0; i < 40; ++i) {
+    ASSERT_TRUE(sample.RenderFrame());
+    const auto& fr = sample.Frames();
+    const FrameRecord& now = fr.back();
+    if (!now.gpuFrameNew || now.gpuFrameDelay == 0 || fr.size() <= now.gpuFrameDelay) continue;
+    const FrameRecord& timed = fr[fr.size() - 1 - now.gpuFrameDelay];
+    ASSERT_EQ(timed.frame, now.frame - int64_t(now.gpuFrameDelay));
+    EXPECT_EQ(sample.LastLawInput().gpuScale, double(timed.scaleX)) << "frame " << now.frame;
+    differsFromPrevious += timed.scaleX != fr[fr.size() - 2].scaleX;
+    ++checked;
+  }
+  EXPECT_GT(checked, 20);
+  EXPECT_GT(differsFromPrevious, 0) << "the scale never changed: the pairing was not exercised";
+}
+
 // ---------------------------------------------------------------------------
 // 6. F4: post shaders recompiled from the HLSL sources.
 namespace {
