@@ -38,7 +38,7 @@ double MeanOver(const std::vector<BenchRow>& rows, const std::string& filter, do
   double sum = 0;
   int n = 0;
   for (const auto& r : rows) {
-    if (r.filter == filter && std::abs(r.scale - scale) < 1e-4) {
+    if (!r.moving && r.filter == filter && std::abs(r.scale - scale) < 1e-4) {
       const double v = get(r);
       if (std::isfinite(v)) {
         sum += v;
@@ -76,7 +76,8 @@ bool WriteCsv(const BenchResults& res, const std::string& path, std::string* err
   out << "view,filter,scale,viewport_w,viewport_h,psnr_db,ssim,max_abs_error,mse,valid,"
          "gpu_frame_ms,gpu_frame_p25,gpu_frame_p75,gpu_clear_ms,gpu_scene_ms,gpu_post_ms,"
          "gpu_scale_ms,gpu_scale_p25,gpu_scale_p75,wall_ms,wall_p25,wall_p75,anim_time,"
-         "ghost_fraction,psnr_vs_native_db,gpu_samples\n";
+         "ghost_fraction,psnr_vs_native_db,gpu_samples,moving,speed,quality_frames,supersampling,"
+         "flip,flip_ci95,psnr_ci95,flicker_rms\n";
   for (const auto& r : res.rows) {
     out << '"' << r.view << "\"," << r.filter << ',' << Num(r.scale, 3) << ',' << r.viewportW
         << ',' << r.viewportH << ',' << Num(r.error.psnr, 3) << ',' << Num(r.error.ssim, 5)
@@ -87,7 +88,9 @@ bool WriteCsv(const BenchResults& res, const std::string& path, std::string* err
         << Num(r.gpuScale.median) << ',' << Num(r.gpuScale.p25) << ',' << Num(r.gpuScale.p75)
         << ',' << Num(r.wall.median) << ',' << Num(r.wall.p25) << ',' << Num(r.wall.p75) << ','
         << Num(r.animTime, 6) << ',' << Num(r.ghostFraction, 6) << ',' << Num(r.psnrVsNative, 3)
-        << ',' << r.gpuSamples << '\n';
+        << ',' << r.gpuSamples << ',' << (r.moving ? 1 : 0) << ',' << Num(r.speed, 3) << ','
+        << r.qualityFrames << ',' << (r.superSampling ? 1 : 0) << ',' << Num(r.flip, 6) << ','
+        << Num(r.flipCi, 6) << ',' << Num(r.psnrCi, 3) << ',' << Num(r.flicker, 6) << '\n';
   }
   return bool(out);
 }
@@ -129,7 +132,12 @@ bool WriteJson(const BenchResults& res, const std::string& path, std::string* er
         << "}, \"gpu_samples\": " << r.gpuSamples
         << ", \"wall_ms\": " << StatJson(r.wall) << ", \"anim_time\": " << JsonNum(r.animTime)
         << ", \"ghost_fraction\": " << JsonNum(r.ghostFraction)
-        << ", \"psnr_vs_native_db\": " << JsonNum(r.psnrVsNative) << "}" << (i + 1 < res.rows.size() ? "," : "")
+        << ", \"psnr_vs_native_db\": " << JsonNum(r.psnrVsNative)
+        << ", \"moving\": " << (r.moving ? "true" : "false") << ", \"speed\": " << JsonNum(r.speed)
+        << ", \"quality_frames\": " << r.qualityFrames
+        << ", \"supersampling\": " << (r.superSampling ? "true" : "false") << ", \"flip\": " << JsonNum(r.flip)
+        << ", \"flip_ci95\": " << JsonNum(r.flipCi) << ", \"psnr_ci95\": " << JsonNum(r.psnrCi)
+        << ", \"flicker_rms\": " << JsonNum(r.flicker) << "}" << (i + 1 < res.rows.size() ? "," : "")
         << "\n";
   }
   out << "  ]\n}\n";
