@@ -172,7 +172,7 @@ BenchRow Measure(Sample& sample, const BenchPlan& plan, const Options& settings,
   row.view = viewName;
   row.filter = filterName;
   row.scale = scale;
-  FillGpuTimes(records, &row);
+  FillGpuTimes({records}, &row);
   row.superSampling = settings.superSampling;
   const Image image = Capture(sample);
   const ImageF imageF = ToImage(image);
@@ -190,19 +190,57 @@ BenchRow Measure(Sample& sample, const BenchPlan& plan, const Options& settings,
   return row;
 }
 
+// What the measurements of one view share; AddRow measures one configuration
+// with the plan's warm-up and frame counts and records it.
+struct ViewRun {
+  const BenchPlan& plan;
+  const BenchView& view;
+  const ImageF& reference;
+  Sample& sample;
+  BenchResults* results;
+  Progress* progress;
+
+  // Rows whose times the interleaved pass measures: settings and row index.
+  std::vector<std::pair<Options, size_t>> timed = {};
+
+  void AddRow(const Options& settings, const std::string& filterName, double scale) {
+    results->rows.push_back(Measure(sample, plan, settings, view.name, filterName, scale, reference,
+                                    plan.warmupFrames, plan.measuredFrames));
+    timed.emplace_back(settings, results->rows.size() - 1);
+    progress->Step(view.name + " " + filterName + " " + Num2(scale));
+  }
+};
+
+// Side-by-side timing: every timed configuration of the view in turn, for
+// plan.timingRounds rounds of a few frames each, so a change of load on the
+// machine spreads over all of them instead of falling on some rows. The rows'
+// GPU and wall times are replaced by these.
+void InterleaveTimes(ViewRun& run) {
+  const BenchPlan& plan = run.plan;
+  if (plan.timingRounds <= 0) return;
+  std::vector<std::vector<std::vector<FrameRecord>>> rounds(run.timed.size());
+  for (int r = 0; r < plan.timingRounds; ++r)
+    for (size_t i = 0; i < run.timed.size(); ++i) {
+      run.sample.ApplySettings(run.timed[i].first);
+      RenderFrames(run.sample, plan.timingWarmup);
+      rounds[i].push_back(RenderFrames(run.sample, plan.timingFrames));
+    }
+  for (size_t i = 0; i < run.timed.size(); ++i) FillGpuTimes(rounds[i], &run.results->rows[run.timed[i].second]);
+  run.progress->Step(run.view.name + " interleaved timing");
+}
+
+
+
 // Claim rows on the first view (article-figures.md): clears, super sampling,
 // fast vs velocity-reading TAA. Scale 0.71 unless the name says otherwise.
-void MeasureClaims(Sample& sample, const BenchPlan& plan, const Options& o, const BenchView& view,
-                   const ImageF& reference, BenchResults* results, Progress* progress) {
+void MeasureClaims(ViewRun& view, const Options& o) {
   auto run = [&](const std::string& name, double scale, auto&& edit) {
     Options s = o;
     s.dynamicResolution = true;
     s.filter = Filter::Point;
     s.scaleX = s.scaleY = float(scale);
     edit(s);
-    results->rows.push_back(Measure(sample, plan, s, view.name, name, scale, reference,
-                                    plan.warmupFrames, plan.measuredFrames));
-    progress->Step(view.name + " " + name);
+    view.AddRow(s, name, scale);
   };
   run("point api-clear", 0.71, [](Options& s) { s.psClear = false; s.superSampling = false; });
   run("point ps-clear", 0.71, [](Options& s) { s.psClear = true; s.superSampling = false; });
@@ -298,23 +336,6 @@ bool MeasureMoving(const BenchPlan& plan, BenchResults* results, Progress* progr
   }
   return true;
 }
-
-// What the measurements of one view share; AddRow measures one configuration
-// with the plan's warm-up and frame counts and records it.
-struct ViewRun {
-  const BenchPlan& plan;
-  const BenchView& view;
-  const ImageF& reference;
-  Sample& sample;
-  BenchResults* results;
-  Progress* progress;
-
-  void AddRow(const Options& settings, const std::string& filterName, double scale) {
-    results->rows.push_back(Measure(sample, plan, settings, view.name, filterName, scale, reference,
-                                    plan.warmupFrames, plan.measuredFrames));
-    progress->Step(view.name + " " + filterName + " " + Num2(scale));
-  }
-};
 
 // The fixed-function blit of one scale, from the scene colour of the row just
 // measured: same source region, same back-buffer size, linear filter.
@@ -422,7 +443,8 @@ bool MeasureView(const BenchPlan& plan, const BenchView& view, bool firstView, B
     return false;
   }
   if (firstView && plan.ablations) MeasureStillAblations(run, o);
-  if (firstView && plan.claims) MeasureClaims(sample, plan, o, view, reference, results, progress);
+  if (firstView && plan.claims) MeasureClaims(run, o);
+  InterleaveTimes(run);
   results->validationMessages += sample.ValidationMessages();
   sample.Shutdown();
   return true;
@@ -434,7 +456,7 @@ bool MeasureView(const BenchPlan& plan, const BenchView& view, bool firstView, B
 size_t ProgressSteps(const BenchPlan& plan) {
   const size_t perView = 2 + plan.filters.size() * plan.scales.size() + plan.scales.size();
   const size_t moving = (plan.ghosting || plan.claims ? 1 : 0) + (plan.ghosting ? 8 : 0) + (plan.claims ? 2 : 0);
-  return plan.views.size() * perView + (plan.claims ? 8 : 0) + (plan.ablations ? 3 : 0) + moving +
+  return plan.views.size() * (perView + (plan.timingRounds > 0 ? 1 : 0)) + (plan.claims ? 8 : 0) + (plan.ablations ? 3 : 0) + moving +
          MovingProgressSteps(plan);
 }
 

@@ -48,6 +48,11 @@ struct BenchPlan {
   // clocks while the CPU compares images between configurations.
   int warmupMs = 500;
   int measuredFrames = 24;
+  // Interleaved timing of each static view's configurations (see
+  // InterleaveTimes): rounds, and warm-up and measured frames per turn.
+  int timingRounds = 4;
+  int timingWarmup = 2;
+  int timingFrames = 6;
   uint32_t referenceFactor = 4;
   bool claims = true;          // claim rows on the first view (and motion blur on the cinematic camera)
   bool ghosting = true;        // ghosting rows on the cinematic camera

@@ -51,10 +51,13 @@ const char* kBenchUsage =
     "                       capture is at animation time 12 s\n"
 "  --report-from DIR    rewrite the report into --out from DIR's results.csv/json\n"
     "                       (the same sweep options as that run), rendering nothing\n"
+"  --timing-rounds N    interleaved timing: every configuration of a still view\n"
+    "                       in turn, N rounds of 2 + 6 frames (default 4, quick 1; 0:\n"
+    "                       the times of the sequential measurement)\n"
     "  --no-moving          skip the moving-camera sequences: the cinematic camera\n"
     "                       at speeds 0.5, 1 and 2 (quick: 1; 1 = 1/30 s of animation\n"
     "                       a frame), every filter at scales 0.4 0.55 0.71 0.85 1.0\n"
-    "                       (quick: point, bilinear, taa at 0.5 and 1.0) and native,\n"
+    "                       (quick: point, bilinear, taa at 0.5, 0.71, 1.0) and native,\n"
     "                       no 2x targets, motion blur off; each frame against the\n"
     "                       reference of its animation time: PSNR, SSIM, FLIP, and\n"
     "                       flicker (frame-to-frame change of the error image)\n"
@@ -81,7 +84,7 @@ bool ParseInt(const std::string& s, int lo, int hi, int* out) {
 struct BenchArgs {
   bool cameraGiven = false, filterGiven = false, scaleGiven = false, sizeGiven = false;
   int warmup = -1, warmupMs = -1, frames = -1, ghostFrames = -1;
-  int movingFrames = -1, movingWarmup = -1, movingSpeedPercent = 0;
+  int movingFrames = -1, movingWarmup = -1, movingSpeedPercent = 0, timingRounds = -1;
   std::vector<std::string> sampleArgs;
 };
 
@@ -124,6 +127,7 @@ int ParseBenchArgs(const std::vector<std::string>& args, BenchPlan* plan, BenchA
     else if (a == "--no-claims") plan->claims = false;
     else if (a == "--no-ghosting") plan->ghosting = false;
     else if (a == "--no-moving") plan->moving = false;
+    else if (a == "--timing-rounds") ok = TakeInt(args, &i, 0, 1000, &parsed->timingRounds, message);
     else if (a == "--report-from") ok = TakeValue(args, &i, &plan->reportFrom, message);
     else if (a == "--no-ablations") plan->ablations = false;
     else if (a == "--sweep-motion-blur") plan->sweepMotionBlur = true;
@@ -199,7 +203,7 @@ void ChooseMoving(const BenchArgs& parsed, BenchPlan* plan) {
   if (parsed.scaleGiven) {
     if (plan->base.scaleX <= 1.0f) plan->movingScales = {plan->base.scaleX};
   } else if (plan->quick) {
-    plan->movingScales = {0.5f, 1.0f};
+    plan->movingScales = {0.5f, 0.71f, 1.0f};
   } else {
     plan->movingScales = {0.4f, 0.55f, 0.71f, 0.85f, 1.0f};
   }
@@ -245,6 +249,7 @@ int ParseBenchCommandLine(const std::vector<std::string>& args, BenchPlan* plan,
   plan->ghostFrames = parsed.ghostFrames >= 0 ? parsed.ghostFrames : (plan->quick ? 6 : 24);
   ChooseSweep(parsed, plan);
   ChooseMoving(parsed, plan);
+  plan->timingRounds = parsed.timingRounds >= 0 ? parsed.timingRounds : (plan->quick ? 1 : 4);
   return 0;
 }
 

@@ -97,10 +97,11 @@ Options ViewOptions(const BenchPlan& plan, const BenchView& view) {
   return o;
 }
 
-void FillGpuTimes(const std::vector<FrameRecord>& records, BenchRow* row) {
+void FillGpuTimes(const std::vector<std::vector<FrameRecord>>& rounds, BenchRow* row) {
   std::vector<double> f, c, sc, p, scl, wall;
   // A result lags gpuFrameDelay frames; a record without a new result
   // repeats an older one and is not a sample.
+  for (const std::vector<FrameRecord>& records : rounds) {
   const int64_t firstMeasured = records.empty() ? 0 : records.front().frame;
   for (const FrameRecord& r : records) {
     wall.push_back(r.cpuFrameMs);
@@ -110,6 +111,7 @@ void FillGpuTimes(const std::vector<FrameRecord>& records, BenchRow* row) {
     sc.push_back(r.gpuScene);
     p.push_back(r.gpuPostP);
     scl.push_back(r.gpuScale);
+  }
   }
   row->gpuSamples = int(f.size());
   row->gpuFrame = Summarise(f);

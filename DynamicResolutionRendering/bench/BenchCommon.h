@@ -36,7 +36,8 @@ Image Capture(Sample& sample);
 Options ViewOptions(const BenchPlan& plan, const BenchView& view);
 // GPU statistics of the records: only results that arrived during them and
 // belong to one of them; gpuSamples counts the distinct results.
-void FillGpuTimes(const std::vector<FrameRecord>& records, BenchRow* row);
+// `rounds`: runs of consecutive frames (the delay check is per run).
+void FillGpuTimes(const std::vector<std::vector<FrameRecord>>& rounds, BenchRow* row);
 
 class Progress {
  public:

@@ -80,7 +80,7 @@ BenchRow MeasureSequence(Sample& sample, const BenchPlan& plan, Options s, const
     previous = image;
   }
   const auto& all = sample.Frames();
-  FillGpuTimes(std::vector<FrameRecord>(all.begin() + std::ptrdiff_t(std::min(before, all.size())), all.end()), &row);
+  FillGpuTimes({std::vector<FrameRecord>(all.begin() + std::ptrdiff_t(std::min(before, all.size())), all.end())}, &row);
   const MeanCi p = BlockMeanCi(psnr, kCiBlocks), f = BlockMeanCi(flip, kCiBlocks);
   row.view = "cinematic moving x" + Num2(ref.speed);
   row.filter = name;
