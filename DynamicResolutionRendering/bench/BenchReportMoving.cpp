@@ -228,16 +228,17 @@ bool WriteFront(const std::vector<QualityPoint>& pts, bool flip, const std::stri
     names.push_back(q.filter + " " + (q.filter == "native" ? std::string() : N(q.scale, 2)));
   }
   PlotSeries front{"Pareto front", {}, {}, 0x111111, true, false, true};
+  front.labelDy = 2;  // below the point: its scale label is above
   for (size_t i : ParetoFront(xs, ys)) {
     front.x.push_back(xs[i]);
     front.y.push_back(flip ? ys[i] : -ys[i]);
     front.labels.push_back(names[i]);
   }
   plot.series.push_back(front);
-  PlotSeries native{"native (dynamic resolution off)", {pts.front().frameMs}, {flip ? pts.front().flip : pts.front().psnr},
-                    0xd00000, false, true};
+  PlotSeries native{"native", {pts.front().frameMs}, {flip ? pts.front().flip : pts.front().psnr},
+                    0x010101, false, true};  // black: the palette has red
   native.markerRadius = 8.0f;
-  native.labels = {"native"};
+  native.labels = {"native (dyn. res. off)"};
   plot.series.push_back(native);
   return WritePlotPng(plot, path, error);
 }
