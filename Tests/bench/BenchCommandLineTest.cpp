@@ -73,7 +73,7 @@ TEST(BenchCommandLine, MovingSequencesAndInterleavedTiming) {
   EXPECT_FALSE(full.sweepMotionBlur);
   ASSERT_EQ(Parse({"--quick"}, &quick, &m), 0) << m;
   EXPECT_EQ(quick.movingSpeeds, (std::vector<double>{1.0}));
-  EXPECT_EQ(quick.movingFrames, 6);
+  EXPECT_EQ(quick.movingFrames, 4);
   EXPECT_EQ(quick.timingRounds, 1);
   ASSERT_EQ(Parse({"--moving-speed", "200", "--moving-frames", "90", "--scale", "0.5", "--no-ablations",
                    "--timing-rounds", "0", "--sweep-motion-blur"}, &narrow, &m), 0) << m;
