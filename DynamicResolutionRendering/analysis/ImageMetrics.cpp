@@ -152,4 +152,22 @@ ImageError CompareImages(const ImageF& a, const ImageF& b) {
   return e;
 }
 
+double TemporalErrorRms(const ImageF& testPrev, const ImageF& test, const ImageF& referencePrev,
+                        const ImageF& reference) {
+  const ImageF* all[] = {&testPrev, &test, &referencePrev, &reference};
+  for (const ImageF* i : all)
+    if (i->width != test.width || i->height != test.height || i->channels < 3 || test.width == 0 || test.height == 0)
+      return std::nan("");
+  double sumSq = 0.0;
+  for (uint32_t y = 0; y < test.height; ++y)
+    for (uint32_t x = 0; x < test.width; ++x)
+      for (uint32_t c = 0; c < 3; ++c) {
+        const double d = (double(test.At(x, y, c)) - testPrev.At(x, y, c)) -
+                         (double(reference.At(x, y, c)) - referencePrev.At(x, y, c));
+        if (!std::isfinite(d)) return std::nan("");
+        sumSq += d * d;
+      }
+  return std::sqrt(sumSq / (double(test.width) * test.height * 3.0));
+}
+
 }  // namespace drr

@@ -41,5 +41,13 @@ ImageError CompareImages(const ImageF& a, const ImageF& b);
 // sampled reference of the reports). Width and height must be divisible.
 ImageF Downsample(const ImageF& image, uint32_t factor);
 
+// Temporal instability beyond the reference's own motion: the RMS over RGB of
+// (test - testPrev) - (reference - referencePrev), i.e. the frame-to-frame
+// change of the error image. 0 when the test changes exactly as the reference
+// does (a still scene with a stable filter, or a perfect moving one); flicker
+// and crawling raise it. NaN when sizes differ or a value is not finite.
+double TemporalErrorRms(const ImageF& testPrev, const ImageF& test, const ImageF& referencePrev,
+                        const ImageF& reference);
+
 
 }  // namespace drr

@@ -184,7 +184,8 @@ void DrawSeries(Canvas& canvas, const Axes& a, const PlotDesc& plot) {
       }
       const double cx = a.Px(s.x[i]), cy = a.Py(s.y[i]);
       if (s.lines && havePrev) canvas.Line(lx, ly, cx, cy, color, 2.0f, s.dashed);
-      if (s.markers) canvas.Dot(cx, cy, 3.5f, color);
+      if (s.markers) canvas.Dot(cx, cy, s.markerRadius, color);
+      if (i < s.labels.size() && !s.labels[i].empty()) canvas.Text(int(cx) + 5, int(cy) + s.labelDy, s.labels[i], color);
       lx = cx, ly = cy, havePrev = true;
     }
     canvas.Line(a.right + 16, legendY + 7, a.right + 40, legendY + 7, color, 2.0f, s.dashed);

@@ -16,6 +16,9 @@ struct PlotSeries {
   bool lines = true;
   bool markers = true;
   bool dashed = false;
+  std::vector<std::string> labels;  // per point, drawn beside its marker (empty: none)
+  float markerRadius = 3.5f;
+  int labelDy = -14;  // label offset from the point, pixels down
 };
 
 struct PlotDesc {

@@ -11,90 +11,14 @@
 
 #include "DynamicResolutionRendering.h"
 #include "analysis/ImageMetrics.h"
+#include "analysis/Flip.h"
+#include "bench/BenchCommon.h"
 #include "bench/BenchReport.h"
 #include "d3dl/BlitExtension.h"
 #include "imageio/ImageFile.h"
 
 namespace drr {
 namespace {
-
-std::string Num2(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.2f", v);
-  return buf;
-}
-
-double Percentile(std::vector<double> v, double p) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  const double pos = p * double(v.size() - 1);
-  const size_t i = size_t(pos);
-  const double f = pos - double(i);
-  return i + 1 < v.size() ? v[i] * (1 - f) + v[i + 1] * f : v[i];
-}
-
-Stat Summarise(const std::vector<double>& v) {
-  return {Percentile(v, 0.5), Percentile(v, 0.25), Percentile(v, 0.75)};
-}
-
-ImageF ToImage(const Image& img) {
-  return ImageFromRGBA8(img.pixels.data(), img.width, img.height, img.width * 4);
-}
-
-class Progress {
- public:
-  explicit Progress(size_t total) : total_(total), tty_(isatty(2)) {}
-  void Step(const std::string& what) {
-    ++done_;
-    const int width = 30;
-    const int filled = int(width * done_ / std::max<size_t>(total_, 1));
-    if (tty_) {
-      std::fprintf(stderr, "\r[%.*s%*s] %zu/%zu %-40.40s", filled,
-                   "==============================", width - filled, "", done_, total_,
-                   what.c_str());
-      if (done_ == total_) std::fprintf(stderr, "\n");
-    } else {
-      std::fprintf(stderr, "bench %zu/%zu %s\n", done_, total_, what.c_str());
-    }
-    std::fflush(stderr);
-  }
-
- private:
-  size_t total_, done_ = 0;
-  bool tty_;
-};
-
-// Renders `frames` frames and returns the records they produced.
-std::vector<FrameRecord> RenderFrames(Sample& sample, int frames) {
-  const size_t before = sample.Frames().size();
-  for (int i = 0; i < frames; ++i) sample.RenderFrame();
-  const auto& all = sample.Frames();
-  return std::vector<FrameRecord>(all.begin() + std::ptrdiff_t(std::min(before, all.size())),
-                                  all.end());
-}
-
-Image Capture(Sample& sample) {
-  sample.RequestCapture();
-  sample.RenderFrame();
-  return sample.CapturedBackBufferNoGui();
-}
-
-Options ViewOptions(const BenchPlan& plan, const BenchView& view) {
-  Options o = plan.base;
-  o.headless = true;
-  o.gui = false;
-  o.camera = view.camera;
-  o.time = view.time;
-  o.fixedDt = 0.0;  // the sweep renders one fixed animation time per view
-  o.control = ControlMode::Manual;
-  o.controlGiven = true;
-  o.scaleGiven = true;
-  o.vsync = false;
-  o.screenshot.clear();
-  o.report.clear();
-  return o;
-}
 
 bool MakeReference(const BenchPlan& plan, const BenchView& view, ImageF* reference,
                    BenchRow* repeatRow, std::string* error) {
@@ -248,29 +172,13 @@ BenchRow Measure(Sample& sample, const BenchPlan& plan, const Options& settings,
   row.view = viewName;
   row.filter = filterName;
   row.scale = scale;
-  std::vector<double> f, c, sc, p, scl, wall;
-  // GPU times: only results that arrived during the measured frames and
-  // belong to one of them (a result lags gpuFrameDelay frames); a record
-  // without a new result repeats an older one and is not a sample.
-  const int64_t firstMeasured = records.empty() ? 0 : records.front().frame;
-  for (const FrameRecord& r : records) {
-    wall.push_back(r.cpuFrameMs);
-    if (!r.gpuFrameNew || r.frame - int64_t(r.gpuFrameDelay) < firstMeasured) continue;
-    f.push_back(r.gpuFrame);
-    c.push_back(r.gpuClear);
-    sc.push_back(r.gpuScene);
-    p.push_back(r.gpuPostP);
-    scl.push_back(r.gpuScale);
-  }
-  row.gpuSamples = int(f.size());
-  row.gpuFrame = Summarise(f);
-  row.gpuClear = Summarise(c);
-  row.gpuScene = Summarise(sc);
-  row.gpuPost = Summarise(p);
-  row.gpuScale = Summarise(scl);
-  row.wall = Summarise(wall);
+  FillGpuTimes({records}, &row);
+  row.superSampling = settings.superSampling;
   const Image image = Capture(sample);
-  row.error = CompareImages(ToImage(image), reference);
+  const ImageF imageF = ToImage(image);
+  row.error = CompareImages(imageF, reference);
+  const FlipResult flip = ComputeFlip(reference, imageF);
+  row.flip = flip.valid ? flip.mean : std::nan("");
   if (settings.dynamicResolution) {
     row.viewportW = sample.GetDynamicResolution().GetViewport().Width;
     row.viewportH = sample.GetDynamicResolution().GetViewport().Height;
@@ -282,19 +190,57 @@ BenchRow Measure(Sample& sample, const BenchPlan& plan, const Options& settings,
   return row;
 }
 
+// What the measurements of one view share; AddRow measures one configuration
+// with the plan's warm-up and frame counts and records it.
+struct ViewRun {
+  const BenchPlan& plan;
+  const BenchView& view;
+  const ImageF& reference;
+  Sample& sample;
+  BenchResults* results;
+  Progress* progress;
+
+  // Rows whose times the interleaved pass measures: settings and row index.
+  std::vector<std::pair<Options, size_t>> timed = {};
+
+  void AddRow(const Options& settings, const std::string& filterName, double scale) {
+    results->rows.push_back(Measure(sample, plan, settings, view.name, filterName, scale, reference,
+                                    plan.warmupFrames, plan.measuredFrames));
+    timed.emplace_back(settings, results->rows.size() - 1);
+    progress->Step(view.name + " " + filterName + " " + Num2(scale));
+  }
+};
+
+// Side-by-side timing: every timed configuration of the view in turn, for
+// plan.timingRounds rounds of a few frames each, so a change of load on the
+// machine spreads over all of them instead of falling on some rows. The rows'
+// GPU and wall times are replaced by these.
+void InterleaveTimes(ViewRun& run) {
+  const BenchPlan& plan = run.plan;
+  if (plan.timingRounds <= 0) return;
+  std::vector<std::vector<std::vector<FrameRecord>>> rounds(run.timed.size());
+  for (int r = 0; r < plan.timingRounds; ++r)
+    for (size_t i = 0; i < run.timed.size(); ++i) {
+      run.sample.ApplySettings(run.timed[i].first);
+      RenderFrames(run.sample, plan.timingWarmup);
+      rounds[i].push_back(RenderFrames(run.sample, plan.timingFrames));
+    }
+  for (size_t i = 0; i < run.timed.size(); ++i) FillGpuTimes(rounds[i], &run.results->rows[run.timed[i].second]);
+  run.progress->Step(run.view.name + " interleaved timing");
+}
+
+
+
 // Claim rows on the first view (article-figures.md): clears, super sampling,
 // fast vs velocity-reading TAA. Scale 0.71 unless the name says otherwise.
-void MeasureClaims(Sample& sample, const BenchPlan& plan, const Options& o, const BenchView& view,
-                   const ImageF& reference, BenchResults* results, Progress* progress) {
+void MeasureClaims(ViewRun& view, const Options& o) {
   auto run = [&](const std::string& name, double scale, auto&& edit) {
     Options s = o;
     s.dynamicResolution = true;
     s.filter = Filter::Point;
     s.scaleX = s.scaleY = float(scale);
     edit(s);
-    results->rows.push_back(Measure(sample, plan, s, view.name, name, scale, reference,
-                                    plan.warmupFrames, plan.measuredFrames));
-    progress->Step(view.name + " " + name);
+    view.AddRow(s, name, scale);
   };
   run("point api-clear", 0.71, [](Options& s) { s.psClear = false; s.superSampling = false; });
   run("point ps-clear", 0.71, [](Options& s) { s.psClear = true; s.superSampling = false; });
@@ -391,23 +337,6 @@ bool MeasureMoving(const BenchPlan& plan, BenchResults* results, Progress* progr
   return true;
 }
 
-// What the measurements of one view share; AddRow measures one configuration
-// with the plan's warm-up and frame counts and records it.
-struct ViewRun {
-  const BenchPlan& plan;
-  const BenchView& view;
-  const ImageF& reference;
-  Sample& sample;
-  BenchResults* results;
-  Progress* progress;
-
-  void AddRow(const Options& settings, const std::string& filterName, double scale) {
-    results->rows.push_back(Measure(sample, plan, settings, view.name, filterName, scale, reference,
-                                    plan.warmupFrames, plan.measuredFrames));
-    progress->Step(view.name + " " + filterName + " " + Num2(scale));
-  }
-};
-
 // The fixed-function blit of one scale, from the scene colour of the row just
 // measured: same source region, same back-buffer size, linear filter.
 bool AddFixedBlitRow(ViewRun& run, FixedFunctionBlit& blit, float scale, std::string* error) {
@@ -433,26 +362,47 @@ bool AddFixedBlitRow(ViewRun& run, FixedFunctionBlit& blit, float scale, std::st
 }
 
 // Native (dynamic resolution off, the full-resolution path of the original),
-// then every filter at every scale, with the fixed-function blit after the first
-// filter (point in the default plans).
+// then every filter at every scale up to 1.0 with 2x targets not allowed (as
+// the original runs below 1.0), the fixed-function blit after the first filter
+// (point in the default plans); then the scales above 1.0 as super-sampling
+// rows of their own (2x targets allowed).
 bool MeasureSweep(ViewRun& run, const Options& o, std::string* error) {
   Options native = o;
   native.dynamicResolution = false;
+  native.superSampling = false;
   native.filter = Filter::Point;
   run.AddRow(native, "native", 1.0);
   FixedFunctionBlit blit(run.sample.GetDevice());
   const BenchPlan& plan = run.plan;
-  for (size_t fi = 0; fi < plan.filters.size(); ++fi) {
-    for (float scale : plan.scales) {
-      Options s = o;
-      s.dynamicResolution = true;
-      s.filter = plan.filters[fi];
-      s.scaleX = s.scaleY = scale;
-      run.AddRow(s, FilterOption(plan.filters[fi]), scale);
-      if (fi == 0 && !AddFixedBlitRow(run, blit, scale, error)) return false;
+  for (bool superSampled : {false, true}) {
+    for (size_t fi = 0; fi < plan.filters.size(); ++fi) {
+      for (float scale : plan.scales) {
+        if ((scale > 1.0f) != superSampled) continue;
+        Options s = o;
+        s.dynamicResolution = true;
+        s.superSampling = superSampled;
+        s.filter = plan.filters[fi];
+        s.scaleX = s.scaleY = scale;
+        run.AddRow(s, FilterOption(plan.filters[fi]), scale);
+        if (fi == 0 && !AddFixedBlitRow(run, blit, scale, error)) return false;
+      }
     }
   }
   return true;
+}
+
+// Jitter ablation on the first view: the symmetric pair (-0.25/+0.25 px)
+// against the original's asymmetric one (0/0.5 px, the sweep's taa rows).
+void MeasureStillAblations(ViewRun& run, const Options& o) {
+  for (float scale : {0.5f, 0.71f, 1.0f}) {
+    Options s = o;
+    s.dynamicResolution = true;
+    s.superSampling = false;
+    s.filter = Filter::TAA;
+    s.symmetricTAA = true;
+    s.scaleX = s.scaleY = scale;
+    run.AddRow(s, kTaaSymmetric, scale);
+  }
 }
 
 // One static view: reference, native, the sweep, and the claim rows when it
@@ -471,8 +421,10 @@ bool MeasureView(const BenchPlan& plan, const BenchView& view, bool firstView, B
   progress->Step(view.name + " reference");
 
   Options o = ViewOptions(plan, view);
-  o.superSampling = std::any_of(plan.scales.begin(), plan.scales.end(),
-                                [](float s) { return s > 1.0f; });
+  o.superSampling = false;
+  // The reference has no motion blur; without it the TAA rows are the
+  // velocity-reading TAA (the article's cost figure), not the fast one.
+  o.motionBlur = plan.sweepMotionBlur;
   Sample sample;
   if (sample.Init(o, &error) != 0) {
     std::fprintf(stderr, "\nbench: %s\n", error.c_str());
@@ -490,7 +442,9 @@ bool MeasureView(const BenchPlan& plan, const BenchView& view, bool firstView, B
     std::fprintf(stderr, "\nbench: %s\n", error.c_str());
     return false;
   }
-  if (firstView && plan.claims) MeasureClaims(sample, plan, o, view, reference, results, progress);
+  if (firstView && plan.ablations) MeasureStillAblations(run, o);
+  if (firstView && plan.claims) MeasureClaims(run, o);
+  InterleaveTimes(run);
   results->validationMessages += sample.ValidationMessages();
   sample.Shutdown();
   return true;
@@ -502,7 +456,8 @@ bool MeasureView(const BenchPlan& plan, const BenchView& view, bool firstView, B
 size_t ProgressSteps(const BenchPlan& plan) {
   const size_t perView = 2 + plan.filters.size() * plan.scales.size() + plan.scales.size();
   const size_t moving = (plan.ghosting || plan.claims ? 1 : 0) + (plan.ghosting ? 8 : 0) + (plan.claims ? 2 : 0);
-  return plan.views.size() * perView + (plan.claims ? 8 : 0) + moving;
+  return plan.views.size() * (perView + (plan.timingRounds > 0 ? 1 : 0)) + (plan.claims ? 8 : 0) + (plan.ablations ? 3 : 0) + moving +
+         MovingProgressSteps(plan);
 }
 
 // Host memory bandwidth: the best of five 256 MiB memcpy copies, counting the
@@ -545,6 +500,15 @@ int RunBench(const BenchPlan& plan) {
   }
   BenchResults results;
   results.plan = &plan;
+  if (!plan.reportFrom.empty()) {
+    std::string error;
+    if (!ReloadBenchResults(plan.reportFrom, &results, &error) || !WriteBenchOutputs(results, plan.outDir, &error)) {
+      std::fprintf(stderr, "bench: %s\n", error.c_str());
+      return 1;
+    }
+    std::printf("bench: report of %zu rows rewritten into %s\n", results.rows.size(), plan.outDir.c_str());
+    return 0;
+  }
   Progress progress(ProgressSteps(plan));
   const auto started = std::chrono::steady_clock::now();
 
@@ -554,6 +518,13 @@ int RunBench(const BenchPlan& plan) {
     std::string error;
     if (!MeasureMoving(plan, &results, &progress, &error)) {
       std::fprintf(stderr, "\nbench: moving camera: %s\n", error.c_str());
+      return 1;
+    }
+  }
+  if (plan.moving) {
+    std::string error;
+    if (!MeasureMovingSequences(plan, &results, &progress, &error)) {
+      std::fprintf(stderr, "\nbench: moving sequences: %s\n", error.c_str());
       return 1;
     }
   }

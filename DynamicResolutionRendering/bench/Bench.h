@@ -39,6 +39,7 @@ struct BenchView {
 struct BenchPlan {
   bool quick = false;
   std::string outDir;
+  std::string reportFrom;  // --report-from DIR: rewrite the report from DIR's results, render nothing
   std::vector<BenchView> views;
   std::vector<Filter> filters;
   std::vector<float> scales;
@@ -47,12 +48,30 @@ struct BenchPlan {
   // clocks while the CPU compares images between configurations.
   int warmupMs = 500;
   int measuredFrames = 24;
+  // Interleaved timing of each static view's configurations (see
+  // InterleaveTimes): rounds, and warm-up and measured frames per turn.
+  int timingRounds = 4;
+  int timingWarmup = 2;
+  int timingFrames = 6;
   uint32_t referenceFactor = 4;
   bool claims = true;          // claim rows on the first view (and motion blur on the cinematic camera)
   bool ghosting = true;        // ghosting rows on the cinematic camera
   double ghostTime = 12.0;     // animation time of the captured ghosting frame (s)
   double ghostStep = 1.0 / 30.0;  // animation step per frame (Options::fixedDt)
   int ghostFrames = 24;        // frames rendered (moving) before the capture
+  // Moving-camera sequences (BenchMoving.cpp): the cinematic camera at each
+  // speed (1 = the animation's 1/30 s per frame), movingWarmup frames, then
+  // movingFrames frames each compared with the reference rendered at the same
+  // animation time; every movingFilters x movingScales, plus native.
+  bool moving = true;
+  std::vector<double> movingSpeeds;
+  std::vector<Filter> movingFilters;
+  std::vector<float> movingScales;
+  int movingWarmup = 8;
+  int movingFrames = 60;
+  double movingStart = 8.0;  // animation time of the first warm-up frame (s)
+  bool ablations = true;     // symmetric jitter (still and moving), fast TAA (moving)
+  bool sweepMotionBlur = false;  // --sweep-motion-blur: the still sweep with motion blur on
   double memoryBandwidthGBs = 0;  // --memory-bandwidth; 0: measured on the host for CPU rasterisers
   Options base;  // size, scene, motion blur, symmetric TAA ... from the command line
 };

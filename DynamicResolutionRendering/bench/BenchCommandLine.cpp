@@ -31,7 +31,8 @@ const char* kBenchUsage =
     "\n"
     "  --quick              short preset for CI: one static camera, point / bilinear /\n"
     "                       bicubic / TAA at scales 0.3 0.5 0.71 1.0, 320x180, with\n"
-    "                       the fixed-function-blit, claim and ghosting rows\n"
+    "                       the fixed-function-blit, claim and ghosting rows, and the\n"
+    "                       moving camera at x1 (point, bilinear, taa at 0.5 and 1.0)\n"
     "  --out DIR            output folder (default: bench_out)\n"
     "  --bench-warmup N     frames rendered before measuring (default 8, quick 4)\n"
     "  --bench-warmup-ms T  and warm up for at least T ms (default 500, quick 0): GPU\n"
@@ -49,6 +50,25 @@ const char* kBenchUsage =
     "  --ghost-frames N     moving frames before the ghosting capture (default 24,\n"
     "                       quick 6); the camera steps 1/30 s per frame and the\n"
     "                       capture is at animation time 12 s\n"
+"  --report-from DIR    rewrite the report into --out from DIR's results.csv/json\n"
+    "                       (the same sweep options as that run), rendering nothing\n"
+"  --timing-rounds N    interleaved timing: every configuration of a still view\n"
+    "                       in turn, N rounds of 2 + 6 frames (default 4, quick 1; 0:\n"
+    "                       the times of the sequential measurement)\n"
+    "  --no-moving          skip the moving-camera sequences: the cinematic camera\n"
+    "                       at speeds 0.5, 1 and 2 (quick: 1; 1 = 1/30 s of animation\n"
+    "                       a frame), every filter at scales 0.4 0.55 0.71 0.85 1.0\n"
+    "                       (quick: point, bilinear, taa at 0.5 and 1.0) and native,\n"
+    "                       no 2x targets, motion blur off; each frame against the\n"
+    "                       reference of its animation time: PSNR, SSIM, FLIP, and\n"
+    "                       flicker (frame-to-frame change of the error image)\n"
+    "  --moving-frames N    frames compared per sequence (default 60, quick 4)\n"
+    "  --moving-warmup N    frames before them (default 8, quick 2)\n"
+    "  --moving-speed P     only this speed, in percent (100 = 1/30 s a frame)\n"
+    "  --no-ablations       skip the ablation rows (symmetric jitter still and moving,\n"
+    "                       fast TAA and native with motion blur on, moving)\n"
+    "  --sweep-motion-blur  the still sweep with motion blur on (default off: the\n"
+    "                       reference has none, and TAA is then the velocity-reading one)\n"
     "  --width/--height, --scene, --no-motion-blur, --symmetric-taa, --no-ps-clear,\n"
     "  --validation         as for the sample (see DynamicResolutionRendering --help)\n";
 
@@ -65,6 +85,7 @@ bool ParseInt(const std::string& s, int lo, int hi, int* out) {
 struct BenchArgs {
   bool cameraGiven = false, filterGiven = false, scaleGiven = false, sizeGiven = false;
   int warmup = -1, warmupMs = -1, frames = -1, ghostFrames = -1;
+  int movingFrames = -1, movingWarmup = -1, movingSpeedPercent = 0, timingRounds = -1;
   std::vector<std::string> sampleArgs;
 };
 
@@ -106,6 +127,18 @@ int ParseBenchArgs(const std::vector<std::string>& args, BenchPlan* plan, BenchA
     else if (a == "--out") ok = TakeValue(args, &i, &plan->outDir, message);
     else if (a == "--no-claims") plan->claims = false;
     else if (a == "--no-ghosting") plan->ghosting = false;
+    else if (a == "--no-moving") plan->moving = false;
+    else if (a == "--timing-rounds") ok = TakeInt(args, &i, 0, 1000, &parsed->timingRounds, message);
+    else if (a == "--report-from") ok = TakeValue(args, &i, &plan->reportFrom, message);
+    else if (a == "--no-ablations") plan->ablations = false;
+    else if (a == "--sweep-motion-blur") plan->sweepMotionBlur = true;
+    else if (a == "--moving-frames") ok = TakeInt(args, &i, 2, 10000, &parsed->movingFrames, message);
+    else if (a == "--moving-warmup") ok = TakeInt(args, &i, 0, 10000, &parsed->movingWarmup, message);
+    else if (a == "--moving-speed") {
+      int percent = 0;
+      ok = TakeInt(args, &i, 1, 1000, &percent, message);
+      parsed->movingSpeedPercent = percent;
+    }
     else if (a == "--ghost-frames") ok = TakeInt(args, &i, 2, 300, &parsed->ghostFrames, message);
     else if (a == "--bench-warmup-ms") ok = TakeInt(args, &i, 0, 60000, &parsed->warmupMs, message);
     else if (a == "--bench-warmup") ok = TakeInt(args, &i, 0, 10000, &parsed->warmup, message);
@@ -158,6 +191,27 @@ void ChooseSweep(const BenchArgs& parsed, BenchPlan* plan) {
   }
 }
 
+// The moving sequences: speeds, filters and scales (at or below 1.0: the
+// sequences never allow 2x targets), and their frame counts.
+void ChooseMoving(const BenchArgs& parsed, BenchPlan* plan) {
+  if (parsed.movingSpeedPercent > 0) plan->movingSpeeds = {parsed.movingSpeedPercent / 100.0};
+  else if (plan->quick) plan->movingSpeeds = {1.0};
+  else plan->movingSpeeds = {0.5, 1.0, 2.0};
+  if (parsed.filterGiven) plan->movingFilters = {plan->base.filter};
+  else if (plan->quick) plan->movingFilters = {Filter::Point, Filter::Bilinear, Filter::TAA};
+  else plan->movingFilters = plan->filters;
+  plan->movingScales.clear();
+  if (parsed.scaleGiven) {
+    if (plan->base.scaleX <= 1.0f) plan->movingScales = {plan->base.scaleX};
+  } else if (plan->quick) {
+    plan->movingScales = {0.5f, 1.0f};
+  } else {
+    plan->movingScales = {0.4f, 0.55f, 0.71f, 0.85f, 1.0f};
+  }
+  plan->movingFrames = parsed.movingFrames >= 0 ? parsed.movingFrames : (plan->quick ? 4 : 60);
+  plan->movingWarmup = parsed.movingWarmup >= 0 ? parsed.movingWarmup : (plan->quick ? 2 : 8);
+}
+
 }  // namespace
 
 bool HasBenchFlag(int argc, char** argv) {
@@ -195,6 +249,8 @@ int ParseBenchCommandLine(const std::vector<std::string>& args, BenchPlan* plan,
   plan->measuredFrames = parsed.frames >= 0 ? parsed.frames : (plan->quick ? 6 : 24);
   plan->ghostFrames = parsed.ghostFrames >= 0 ? parsed.ghostFrames : (plan->quick ? 6 : 24);
   ChooseSweep(parsed, plan);
+  ChooseMoving(parsed, plan);
+  plan->timingRounds = parsed.timingRounds >= 0 ? parsed.timingRounds : (plan->quick ? 1 : 4);
   return 0;
 }
 

@@ -34,6 +34,19 @@ struct BenchRow {
   double animTime = std::numeric_limits<double>::quiet_NaN();
   double ghostFraction = std::numeric_limits<double>::quiet_NaN();
   double psnrVsNative = std::numeric_limits<double>::quiet_NaN();
+  // Still (one frozen animation time) or moving (a sequence on the cinematic
+  // camera at `speed`, image numbers the mean over qualityFrames frames).
+  bool moving = false;
+  double speed = 0.0;
+  int qualityFrames = 1;       // distinct frames behind the image numbers
+  bool superSampling = false;  // 2x render targets allowed in this row
+  // FLIP (mean per-pixel, LDR, 67 ppd; lower is better); moving rows: mean
+  // over frames, with the 95 % interval half-widths of PSNR and FLIP over
+  // blocks of frames. Flicker: TemporalErrorRms averaged over frame pairs.
+  double flip = std::numeric_limits<double>::quiet_NaN();
+  double flipCi = std::numeric_limits<double>::quiet_NaN();
+  double psnrCi = std::numeric_limits<double>::quiet_NaN();
+  double flicker = std::numeric_limits<double>::quiet_NaN();
 };
 
 // Filter names of the rows that are not part of the filter x scale sweep.
@@ -41,6 +54,11 @@ struct BenchRow {
 // vkCmdBlitImage), not a lower bound; the bandwidth bound is the physical one.
 inline constexpr const char* kFixedBlit = "fixed-function-blit";
 inline constexpr const char* kReferenceRepeat = "reference-repeat";
+// Ablation rows: TAA with the symmetric jitter pair; the fast TAA (velocity
+// from the motion-blur alpha, motion blur on) and native with motion blur on.
+inline constexpr const char* kTaaSymmetric = "taa symmetric-jitter";
+inline constexpr const char* kTaaFast = "taa fast (motion blur on)";
+inline constexpr const char* kNativeMotionBlur = "native (motion blur on)";
 
 struct BenchResults {
   const BenchPlan* plan = nullptr;

@@ -58,3 +58,45 @@ TEST(BenchCommandLine, BadValuesNameTheirRange) {
     EXPECT_NE(m.find(c.range), std::string::npos) << c.args[0] << ": " << m;
   }
 }
+
+TEST(BenchCommandLine, MovingSequencesAndInterleavedTiming) {
+  BenchPlan full, quick, narrow;
+  std::string m;
+  ASSERT_EQ(Parse({}, &full, &m), 0) << m;
+  EXPECT_TRUE(full.moving);
+  EXPECT_EQ(full.movingSpeeds, (std::vector<double>{0.5, 1.0, 2.0}));
+  EXPECT_EQ(full.movingFrames, 60);
+  EXPECT_EQ(full.movingWarmup, 8);
+  EXPECT_EQ(full.movingFilters.size(), full.filters.size());
+  for (float s : full.movingScales) EXPECT_LE(s, 1.0f);  // sequences never allow 2x targets
+  EXPECT_EQ(full.timingRounds, 4);
+  EXPECT_FALSE(full.sweepMotionBlur);
+  ASSERT_EQ(Parse({"--quick"}, &quick, &m), 0) << m;
+  EXPECT_EQ(quick.movingSpeeds, (std::vector<double>{1.0}));
+  EXPECT_EQ(quick.movingFrames, 4);
+  EXPECT_EQ(quick.timingRounds, 1);
+  ASSERT_EQ(Parse({"--moving-speed", "200", "--moving-frames", "90", "--scale", "0.5", "--no-ablations",
+                   "--timing-rounds", "0", "--sweep-motion-blur"}, &narrow, &m), 0) << m;
+  EXPECT_EQ(narrow.movingSpeeds, (std::vector<double>{2.0}));
+  EXPECT_EQ(narrow.movingFrames, 90);
+  EXPECT_EQ(narrow.movingScales, (std::vector<float>{0.5f}));
+  EXPECT_FALSE(narrow.ablations);
+  EXPECT_EQ(narrow.timingRounds, 0);
+  EXPECT_TRUE(narrow.sweepMotionBlur);
+}
+
+TEST(BenchCommandLine, BadMovingValuesNameTheirRange) {
+  const std::vector<std::pair<std::vector<std::string>, const char*>> cases = {
+      {{"--moving-frames", "1"}, "[2, 10000]"},
+      {{"--moving-speed", "0"}, "[1, 1000]"},
+      {{"--moving-warmup", "-1"}, "[0, 10000]"},
+      {{"--timing-rounds", "x"}, "[0, 1000]"},
+      {{"--report-from"}, "missing value"},
+  };
+  for (const auto& [args, range] : cases) {
+    BenchPlan plan;
+    std::string m;
+    EXPECT_EQ(Parse(args, &plan, &m), 2) << args[0];
+    EXPECT_NE(m.find(range), std::string::npos) << args[0] << ": " << m;
+  }
+}

@@ -4,8 +4,14 @@
 // row has none and must be identical to the reference: PSNR inf in the CSV,
 // "identical": true in the JSON), point filtering on the static view gets
 // strictly better from scale 0.3 to 1.0, fixed-function-blit rows exist, and the run
-// logged zero validation messages. Timings are never compared (lavapipe's
-// are not monotonic in resolution).
+// logged zero validation messages. Moving-camera rows (point, bilinear, taa
+// and native on the moving cinematic camera) each cover the same number of
+// frames (>= 2) with finite PSNR and its interval, FLIP in [0, 1] and a
+// finite, non-negative flicker; still rows have FLIP in [0, 1]; no row at or
+// below 1.0 allowed 2x targets; every timed row has at least one distinct GPU
+// sample (a moving row no more than its frames); the ablation rows and the
+// labelled fronts are there. Timings are never compared (lavapipe's are not
+// monotonic in resolution).
 //
 //   drr_quick_bench_check DIR      exit 0 = all good, 1 = failures (listed)
 #include <cmath>
@@ -70,7 +76,8 @@ int main(int argc, char** argv) {
   if (!ReadFile(dir + "/results.csv", &csv) || csv.empty()) Fail("results.csv missing or empty");
   if (!ReadFile(dir + "/results.json", &json) || json.empty()) Fail("results.json missing or empty");
   if (!ReadFile(dir + "/summary.md", &summary) || summary.empty()) Fail("summary.md missing or empty");
-  for (const char* png : {"error_vs_scale_time.png", "error_vs_frame_time.png", "frame_time_vs_scale.png"}) {
+  for (const char* png : {"error_vs_scale_time.png", "error_vs_frame_time.png", "frame_time_vs_scale.png",
+                          "front_still_flip.png", "front_still_psnr.png", "front_moving_flip.png", "front_moving_psnr.png"}) {
     std::string data;
     if (!ReadFile(dir + "/" + png, &data) || data.size() < 8 || data.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0)
       Fail(std::string(png) + " missing, empty or not a PNG");
@@ -85,11 +92,15 @@ int main(int argc, char** argv) {
   std::map<std::string, size_t> col;
   for (size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
   for (const char* c : {"view", "filter", "scale", "psnr_db", "valid", "gpu_frame_ms", "gpu_clear_ms",
-                        "gpu_scene_ms", "gpu_post_ms", "gpu_scale_ms"})
+                        "gpu_scene_ms", "gpu_post_ms", "gpu_scale_ms", "gpu_samples", "moving", "speed", "quality_frames",
+                        "supersampling", "flip", "psnr_ci95", "flicker_rms"})
     if (!col.count(c)) Fail(std::string("results.csv has no column ") + c);
   if (g_failures) return 1;
 
-  size_t rows = 0, blitRows = 0, repeatRows = 0, ghostRows = 0;
+  size_t rows = 0, blitRows = 0, repeatRows = 0, ghostRows = 0, movingRows = 0;
+  std::map<std::string, size_t> ablations;   // ablation filter name -> rows
+  std::map<std::string, bool> movingFilters;  // filters seen on the moving camera
+  double movingFrames = -1;
   std::map<double, double> pointPsnr;  // static view, filter point
   std::map<double, double> bilinearPsnr, blitPsnr;  // static view: the linear resolve and the blit
   std::string firstView;
@@ -122,6 +133,29 @@ int main(int argc, char** argv) {
       const double v = Parse(f[col[c]]);
       if (!std::isfinite(v) || v < 0) Fail(where + ": " + c + " is not a finite time ('" + f[col[c]] + "')");
     }
+    const double gpuSamples = Parse(f[col["gpu_samples"]]);
+    if (!(gpuSamples >= 1)) Fail(where + ": no distinct GPU sample");
+    const double scale = Parse(f[col["scale"]]);
+    if (scale <= 1.0 + 1e-6 && f[col["supersampling"]] == "1" && filter.find("ss-allowed") == std::string::npos) Fail(where + ": 2x targets allowed at or below 1.0");
+    if (filter.find("symmetric-jitter") != std::string::npos || filter.find("motion blur on") != std::string::npos)
+      ++ablations[filter + (f[col["moving"]] == "1" ? " moving" : " still")];
+    const double flip = Parse(f[col["flip"]]);
+    if (filter != "fixed-function-blit" && filter.rfind("ghost ", 0) != 0 && filter.rfind("motion-blur", 0) != 0 &&
+        !(flip >= 0 && flip <= 1))
+      Fail(where + ": FLIP not in [0, 1] ('" + f[col["flip"]] + "')");
+    if (f[col["moving"]] == "1") {
+      ++movingRows;
+      movingFilters[filter] = true;
+      const double frames = Parse(f[col["quality_frames"]]);
+      if (!(frames >= 2)) Fail(where + ": a moving row over fewer than 2 frames");
+      if (movingFrames < 0) movingFrames = frames;
+      else if (frames != movingFrames) Fail(where + ": moving rows over different frame counts");
+      if (gpuSamples > frames) Fail(where + ": more GPU samples than frames");
+      if (!std::isfinite(psnr) || !std::isfinite(Parse(f[col["psnr_ci95"]])))
+        Fail(where + ": moving PSNR or its interval not finite");
+      const double flicker = Parse(f[col["flicker_rms"]]);
+      if (!(flicker >= 0 && std::isfinite(flicker))) Fail(where + ": flicker not a finite, non-negative number");
+    }
     if (filter.rfind("ghost ", 0) == 0) {
       ++ghostRows;
       const double g = col.count("ghost_fraction") ? Parse(f[col["ghost_fraction"]]) : std::nan("");
@@ -135,6 +169,12 @@ int main(int argc, char** argv) {
   if (repeatRows == 0) Fail("no reference-repeat row");
   if (blitRows == 0) Fail("no fixed-function-blit rows");
   if (ghostRows == 0) Fail("no ghosting rows");
+  if (movingRows == 0) Fail("no moving-camera rows");
+  for (const char* m : {"native", "point", "bilinear", "taa"})
+    if (!movingFilters.count(m)) Fail(std::string("no moving row for ") + m);
+  for (const char* a : {"taa symmetric-jitter still", "taa symmetric-jitter moving", "taa fast (motion blur on) moving",
+                        "native (motion blur on) moving"})
+    if (!ablations.count(a)) Fail(std::string("no ablation row '") + a + "'");
 
   // Point filtering on the static view: strictly better from 0.3 to 1.0.
   double prev = -INFINITY;
@@ -166,14 +206,15 @@ int main(int argc, char** argv) {
   size_t jsonRows = 0;
   for (size_t p = json.find("{\"view\": "); p != std::string::npos; p = json.find("{\"view\": ", p + 1)) ++jsonRows;
   if (jsonRows != rows) Fail("results.json has " + std::to_string(jsonRows) + " rows, results.csv " + std::to_string(rows));
-  for (const char* section : {"ratio to blit", "### Claims", "### Ghosting"})
+  for (const char* section : {"ratio to blit", "### Claims", "### Ghosting", "### Still camera", "### Moving camera",
+                              "### Ablations", "### Iso-time"})
     if (summary.find(section) == std::string::npos) Fail(std::string("summary.md lacks '") + section + "'");
 
   if (g_failures) {
     std::fprintf(stderr, "%d check(s) failed in %s\n", g_failures, dir.c_str());
     return 1;
   }
-  std::printf("quick bench outputs OK: %zu rows (%zu fixed-function-blit, %zu ghosting), point PSNR increasing over %zu scales\n",
-              rows, blitRows, ghostRows, inRange);
+  std::printf("quick bench outputs OK: %zu rows (%zu fixed-function-blit, %zu ghosting, %zu moving over %.0f frames each), "
+              "point PSNR increasing over %zu scales\n", rows, blitRows, ghostRows, movingRows, movingFrames, inRange);
   return 0;
 }

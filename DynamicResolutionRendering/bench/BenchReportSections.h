@@ -1,0 +1,39 @@
+// Sections of summary.md on still and moving quality, ablations, iso tables
+// and the labelled fronts (BenchReportMoving.cpp), and the points they and
+// the claims read.
+#pragma once
+
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench/BenchReport.h"
+
+namespace drr {
+
+// One filter at one scale: still (mean over views, interval over views) or
+// moving (one sequence: mean over frames, interval over blocks of frames).
+struct QualityPoint {
+  std::string filter;
+  double scale = 1.0;
+  double psnr = std::numeric_limits<double>::quiet_NaN(), psnrCi = std::numeric_limits<double>::quiet_NaN();
+  double flip = std::numeric_limits<double>::quiet_NaN(), flipCi = std::numeric_limits<double>::quiet_NaN();
+  double flicker = std::numeric_limits<double>::quiet_NaN();
+  double frameMs = std::numeric_limits<double>::quiet_NaN();
+  int samples = 0;     // views (still) or frames (moving) behind the image numbers
+  int gpuSamples = 0;  // distinct GPU results (still: the fewest of the views)
+};
+
+QualityPoint StillPoint(const BenchResults& res, const std::string& filter, double scale);
+QualityPoint MovingPoint(const BenchResults& res, double speed, const std::string& filter, double scale);
+std::vector<double> MovingSpeeds(const BenchResults& res);
+double ReportSpeed(const BenchResults& res);  // 1 if measured, else the first speed; NaN: none
+
+void WriteStillQuality(const BenchResults& res, std::ostringstream& md);
+void WriteMovingQuality(const BenchResults& res, std::ostringstream& md);
+void WriteAblations(const BenchResults& res, std::ostringstream& md);
+void WriteIsoTables(const BenchResults& res, std::ostringstream& md);
+bool WriteFrontPlots(const BenchResults& res, const std::string& dir, std::string* error);
+
+}  // namespace drr
