@@ -49,6 +49,7 @@ struct ListRecording {
   struct Slice {
     RingAlloc ring;
     bool discarded;  // by a Map(WRITE_DISCARD) of this list (NO_OVERWRITE may follow)
+    bool written;    // by this list (else an import)
   };
   std::unordered_map<const BufferImpl*, Slice> slices;
   std::vector<ListImport> imports;

@@ -244,7 +244,7 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void UseBufferInList(VkBuffer buf, SyncState& s, const Usage& u);
   const RingAlloc& ListCbRing(BufferImpl* b);
   const RingAlloc& ListDynRing(const BufferImpl* b);
-  bool NewListSlice(BufferImpl* b, bool discarded);
+  bool NewListSlice(BufferImpl* b, bool discarded, bool written);
   HRESULT MapInList(Resource* resource, UINT sub, MAP type, MAPPED_SUBRESOURCE* mapped);
   void UnmapInList(Resource* resource);
   void UpdateConstantsInList(BufferImpl* b, const BOX* box, const void* data);
@@ -253,6 +253,7 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void Retain(T* object);
   void RetainInList(Unknown* object);
   void CopyImports(CommandListImpl& list);
+  void ExportConstants(ListRecording& rec);
   // A CPU-visible use of a resource (GpuUse): now on the immediate context,
   // at ExecuteCommandList for a list.
   void NoteUse(GpuUse& u, bool write) {

@@ -127,6 +127,7 @@ void ContextImpl::ExecuteCommandList(CommandList* commandList, BOOL restoreState
   const uint64_t serial = dev_->CurrentSerial();
   for (const auto& [use, written] : r.uses) written ? use->Write(serial) : use->Read(serial);
   list->lastExecuted = serial;
+  ExportConstants(r);
   if (!restoreState) ClearState();
   MarkDirtyAll();  // the secondary buffer left the primary's bindings undefined
 }
@@ -148,6 +149,19 @@ void ContextImpl::CopyImports(CommandListImpl& list) {
     dev_->queue().WaitForSerial(last);
   }
   for (const ListImport& im : r.imports) std::memcpy(im.slot.ptr, im.buffer->shadow(), im.buffer->size());
+}
+
+// Constant buffers the list wrote hold the list's last contents afterwards,
+// as if its updates had run on this context.
+void ContextImpl::ExportConstants(ListRecording& r) {
+  for (auto& [buffer, slice] : r.slices) {
+    if (!slice.written || !buffer->IsConstantBuffer()) continue;
+    auto* b = const_cast<BufferImpl*>(buffer);  // retained by the list
+    b->SyncShadow();  // drops a stale mark of this context's own discard
+    std::memcpy(b->shadow(), slice.ring.ptr, b->size());
+    b->ShadowChanged();
+  }
+  dirty_ |= kConstants;
 }
 
 // ---------------------------------------------------------------------------
@@ -233,11 +247,11 @@ void ContextImpl::RetainDrawState(bool indexed) {
 
 // ---------------------------------------------------------------------------
 // Recording: buffer contents in the list's own ring
-bool ContextImpl::NewListSlice(BufferImpl* b, bool discarded) {
+bool ContextImpl::NewListSlice(BufferImpl* b, bool discarded, bool written) {
   const VkDeviceSize align = b->IsConstantBuffer() ? dev_->uboAlign() : kDynamicAlign;
   RingAlloc a;
   if (!rec_->ring.TryAllocate(b->size(), align, &a) && !rec_->ring.Allocate(b->size(), align, &a)) return false;
-  rec_->slices[b] = {a, discarded};
+  rec_->slices[b] = {a, discarded, written};
   rec_->lastBuffer = b;
   rec_->lastSlice = a;
   Retain(b);
@@ -249,7 +263,7 @@ const RingAlloc& ContextImpl::ListCbRing(BufferImpl* b) {
   if (r.lastBuffer == b) return r.lastSlice;
   auto it = r.slices.find(b);
   if (it == r.slices.end()) {  // read before written in this list: its contents at execution
-    if (!NewListSlice(b, false)) return r.lastSlice;
+    if (!NewListSlice(b, false, false)) return r.lastSlice;
     r.imports.push_back({b, r.lastSlice});
     return r.lastSlice;
   }
@@ -271,7 +285,7 @@ HRESULT ContextImpl::MapInList(Resource* resource, UINT sub, MAP type, MAPPED_SU
   const HRESULT hr = ValidateDeferredMap(*dev_, resource, sub, type, mapped, discarded);
   if (mapped) *mapped = {};
   if (FAILED(hr)) return hr;
-  if (type == MAP_WRITE_DISCARD && !NewListSlice(b, true)) return E_OUTOFMEMORY;
+  if (type == MAP_WRITE_DISCARD && !NewListSlice(b, true, true)) return E_OUTOFMEMORY;
   const RingAlloc& a = rec_->slices[b].ring;
   mapped->pData = a.ptr;
   mapped->RowPitch = mapped->DepthPitch = b->size();
@@ -293,7 +307,7 @@ void ContextImpl::UpdateConstantsInList(BufferImpl* b, const BOX* box, const voi
   const UINT lo = box ? box->left : 0, hi = box ? box->right : b->size();
   std::vector<uint8_t> bytes(base, base + b->size());
   std::memcpy(bytes.data() + lo, data, hi - lo);
-  if (!NewListSlice(b, false)) return;
+  if (!NewListSlice(b, false, true)) return;
   std::memcpy(rec_->lastSlice.ptr, bytes.data(), b->size());
   dirty_ |= kConstants;
 }
