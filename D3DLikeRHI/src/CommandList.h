@@ -62,6 +62,8 @@ struct ListRecording {
   std::unordered_set<const void*> retained;
   std::vector<Held> held;
 
+  uint64_t draws = 0;  // added to DEVICE_STATS::DrawCalls at each execution
+
   // Single-entry cache of `slices` (one constant buffer per draw is common).
   const BufferImpl* lastBuffer = nullptr;
   RingAlloc lastSlice;

@@ -269,6 +269,8 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   }
   // The slice of a DYNAMIC vertex/index buffer's last Map(WRITE_DISCARD).
   const RingAlloc& DynRing(const BufferImpl* b) { return rec_ ? ListDynRing(b) : b->ring(); }
+  // DEVICE_STATS::DrawCalls: a list's draws are counted when it is executed.
+  void CountDraw() { rec_ ? ++rec_->draws : ++dev_->stats.DrawCalls; }
   // On a deferred context: logs that `fn` is forbidden there (as in D3D11),
   // or not supported there by this port (`portLimit`), and returns true.
   bool RejectDeferred(const char* fn, bool portLimit = false);

@@ -127,6 +127,7 @@ void ContextImpl::ExecuteCommandList(CommandList* commandList, BOOL restoreState
   const uint64_t serial = dev_->CurrentSerial();
   for (const auto& [use, written] : r.uses) written ? use->Write(serial) : use->Read(serial);
   list->lastExecuted = serial;
+  dev_->stats.DrawCalls += r.draws;
   ExportConstants(r);
   if (!restoreState) ClearState();
   MarkDirtyAll();  // the secondary buffer left the primary's bindings undefined
@@ -251,10 +252,11 @@ bool ContextImpl::NewListSlice(BufferImpl* b, bool discarded, bool written) {
   const VkDeviceSize align = b->IsConstantBuffer() ? dev_->uboAlign() : kDynamicAlign;
   RingAlloc a;
   if (!rec_->ring.TryAllocate(b->size(), align, &a) && !rec_->ring.Allocate(b->size(), align, &a)) return false;
-  rec_->slices[b] = {a, discarded, written};
+  auto [it, added] = rec_->slices.try_emplace(b);
+  it->second = {a, discarded, written};
   rec_->lastBuffer = b;
   rec_->lastSlice = a;
-  Retain(b);
+  if (added) Retain(b);
   return true;
 }
 

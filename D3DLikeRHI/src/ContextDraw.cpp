@@ -339,22 +339,22 @@ bool ContextImpl::WriteNewSet() {
 void ContextImpl::Draw(UINT count, UINT start) {
   if (!Commit(false)) return;
   vkCmdDraw(cmd_, count, 1, start, 0);
-  ++dev_->stats.DrawCalls;
+  CountDraw();
 }
 void ContextImpl::DrawInstanced(UINT count, UINT instances, UINT start, UINT startInstance) {
   if (!Commit(false)) return;
   vkCmdDraw(cmd_, count, instances, start, startInstance);
-  ++dev_->stats.DrawCalls;
+  CountDraw();
 }
 void ContextImpl::DrawIndexed(UINT count, UINT start, int32_t base) {
   if (!Commit(true)) return;
   vkCmdDrawIndexed(cmd_, count, 1, start, base, 0);
-  ++dev_->stats.DrawCalls;
+  CountDraw();
 }
 void ContextImpl::DrawIndexedInstanced(UINT count, UINT instances, UINT start, int32_t base, UINT startInstance) {
   if (!Commit(true)) return;
   vkCmdDrawIndexed(cmd_, count, instances, start, base, startInstance);
-  ++dev_->stats.DrawCalls;
+  CountDraw();
 }
 
 }  // namespace d3dl::impl
