@@ -39,6 +39,12 @@ void OnLog(d3dl::LogLevel level, const char* message, void*) {
   }
 }
 
+double Seconds(clockid_t clock) {
+  timespec ts;
+  clock_gettime(clock, &ts);
+  return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
+}
+
 class DeferredRecorder {
  public:
   ~DeferredRecorder() {
@@ -88,20 +94,24 @@ class DeferredRecorder {
 
   // Timed part: draws [0, n) split into `threads` contiguous ranges, each
   // recorded into its own list by its own worker thread. Returns the CPU
-  // seconds the workers spent (all threads together).
-  double Record(uint32_t n, uint32_t threads) {
+  // seconds the workers spent (all together) and the longest worker's wall
+  // time from its start to its FinishCommandList (no thread start-up).
+  struct Cost {
+    double cpu, wall;
+  };
+  Cost Record(uint32_t n, uint32_t threads) {
     std::thread workers[kMaxThreads];
-    double cpu[kMaxThreads] = {};
+    double cpu[kMaxThreads] = {}, wall[kMaxThreads] = {};
     for (uint32_t t = 0; t < threads; ++t)
-      workers[t] = std::thread([this, n, t, threads, &cpu] {
+      workers[t] = std::thread([this, n, t, threads, &cpu, &wall] {
+        const double start = Seconds(CLOCK_MONOTONIC);
         RecordRange(t, n * t / threads, n * (t + 1) / threads, n);
-        timespec ts;
-        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-        cpu[t] = double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
+        wall[t] = Seconds(CLOCK_MONOTONIC) - start;
+        cpu[t] = Seconds(CLOCK_THREAD_CPUTIME_ID);
       });
     for (uint32_t t = 0; t < threads; ++t) workers[t].join();
     listCount_ = threads;
-    return cpu[0] + cpu[1];
+    return {cpu[0] + cpu[1], std::max(wall[0], wall[1])};
   }
 
   // Not timed: the lists in draw order after a clear, then the copy for ReadBack.
@@ -185,9 +195,11 @@ DeferredRecorder& Recorder() {
 
 void RecordOnThreads(benchmark::State& state, uint32_t n, uint32_t threads) {
   DeferredRecorder& rec = Recorder();
-  double workerCpu = 0;
+  double workerCpu = 0, workerWall = 0;
   for (auto _ : state) {
-    workerCpu += rec.Record(n, threads);
+    const DeferredRecorder::Cost cost = rec.Record(n, threads);
+    workerCpu += cost.cpu;
+    workerWall += cost.wall;
     state.PauseTiming();
     rec.ExecuteAndWait();
     state.ResumeTiming();
@@ -196,18 +208,33 @@ void RecordOnThreads(benchmark::State& state, uint32_t n, uint32_t threads) {
   // CPU time of the recording threads per iteration: equal for 1 and 2
   // threads when the contexts do not contend (whatever the wall clock says).
   state.counters["worker_cpu_ms"] = 1e3 * workerCpu / double(state.iterations());
+  state.counters["worker_wall_ms"] = 1e3 * workerWall / double(state.iterations());
 }
 
-// Real time per iteration of each registered run, by name.
+// Per registered run: real time per iteration (thread start-up, recording,
+// joins) and the workers' own recording time (worker_wall_ms).
 class PairReporter : public benchmark::ConsoleReporter {
  public:
   void ReportRuns(const std::vector<Run>& runs) override {
     ConsoleReporter::ReportRuns(runs);
-    for (const Run& run : runs)
-      if (run.run_type == Run::RT_Iteration) times[run.run_name.function_name] = run.GetAdjustedRealTime();
+    for (const Run& run : runs) {
+      if (run.run_type != Run::RT_Iteration) continue;
+      times[run.run_name.function_name] = run.GetAdjustedRealTime();
+      const auto w = run.counters.find("worker_wall_ms");
+      if (w != run.counters.end()) recording[run.run_name.function_name] = w->second.value;
+    }
   }
-  std::map<std::string, double> times;
+  std::map<std::string, double> times, recording;
 };
+
+struct RatioSummary {
+  double median, min, max;
+};
+RatioSummary Summarise(std::vector<double> r) {
+  std::sort(r.begin(), r.end());
+  const size_t m = r.size();
+  return {m % 2 ? r[m / 2] : 0.5 * (r[m / 2 - 1] + r[m / 2]), r.front(), r.back()};
+}
 
 int Smoke(uint32_t draws) {
   DeferredRecorder& rec = Recorder();
@@ -230,28 +257,33 @@ int Smoke(uint32_t draws) {
   return ok ? 0 : 1;
 }
 
-int PrintPairs(const PairReporter& reporter, int pairs, int64_t draws) {
-  std::vector<double> ratios;
+void PrintPairs(const PairReporter& reporter, int pairs, int64_t draws) {
+  std::vector<double> ratios, recordingRatios;
   double sum1 = 0, sum2 = 0;
   for (int k = 0; k < pairs; ++k) {
-    const auto one = reporter.times.find("BM_Deferred1Thread/pair:" + std::to_string(k));
-    const auto two = reporter.times.find("BM_Deferred2Threads/pair:" + std::to_string(k));
-    if (one == reporter.times.end() || two == reporter.times.end() || one->second <= 0) continue;
-    ratios.push_back(two->second / one->second);
-    sum1 += one->second;
-    sum2 += two->second;
-    std::printf("pair %d: 1 thread %.3f ms, 2 threads %.3f ms, ratio %.3f\n", k, one->second, two->second,
-                ratios.back());
+    const std::string one = "BM_Deferred1Thread/pair:" + std::to_string(k);
+    const std::string two = "BM_Deferred2Threads/pair:" + std::to_string(k);
+    if (!reporter.times.count(one) || !reporter.times.count(two) || reporter.times.at(one) <= 0) continue;
+    const double t1 = reporter.times.at(one), t2 = reporter.times.at(two);
+    const double r1 = reporter.recording.count(one) ? reporter.recording.at(one) : 0;
+    const double r2 = reporter.recording.count(two) ? reporter.recording.at(two) : 0;
+    ratios.push_back(t2 / t1);
+    if (r1 > 0) recordingRatios.push_back(r2 / r1);
+    sum1 += t1;
+    sum2 += t2;
+    std::printf("pair %d: 1 thread %.3f ms, 2 threads %.3f ms, ratio %.3f; recording alone %.3f / %.3f ms, ratio %.3f\n",
+                k, t1, t2, t2 / t1, r1, r2, r1 > 0 ? r2 / r1 : 0.0);
   }
-  if (ratios.empty()) return 0;
-  std::sort(ratios.begin(), ratios.end());
-  const size_t m = ratios.size();
-  const double median = m % 2 ? ratios[m / 2] : 0.5 * (ratios[m / 2 - 1] + ratios[m / 2]);
-  std::printf("ratio 2-thread / 1-thread deferred recording (%lld draws, %zu pairs): median %.3f, "
-              "min %.3f, max %.3f, of the totals %.3f (hardware threads: %u)\n",
-              static_cast<long long>(draws), m, median, ratios.front(), ratios.back(), sum2 / sum1,
-              std::thread::hardware_concurrency());
-  return 0;
+  if (ratios.empty()) return;
+  const RatioSummary all = Summarise(ratios);
+  std::printf("ratio 2-thread / 1-thread deferred recording (%lld draws, %zu pairs, hardware threads %u): "
+              "median %.3f, min %.3f, max %.3f, of the totals %.3f\n",
+              static_cast<long long>(draws), ratios.size(), std::thread::hardware_concurrency(), all.median,
+              all.min, all.max, sum2 / sum1);
+  if (recordingRatios.empty()) return;
+  const RatioSummary rec = Summarise(recordingRatios);
+  std::printf("ratio of the workers' recording alone (without thread start-up and join): median %.3f, "
+              "min %.3f, max %.3f\n", rec.median, rec.min, rec.max);
 }
 
 }  // namespace
