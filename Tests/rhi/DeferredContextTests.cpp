@@ -179,6 +179,8 @@ TEST_F(RhiDeferred, ListsFromTwoThreadsReplayTwiceLikeImmediateDraws) {
   for (auto& w : workers) w.join();
   ASSERT_EQ(failures[0] + failures[1], 0);
 
+  DEVICE_STATS before, after;
+  device()->GetStats(&before);
   std::vector<uint8_t> runs[2];
   for (auto& run : runs) {
     context()->ClearRenderTargetView(rt.rtv.Get(), kBlack);
@@ -187,6 +189,8 @@ TEST_F(RhiDeferred, ListsFromTwoThreadsReplayTwiceLikeImmediateDraws) {
     run = Pixels(ReadBack(rt.texture.Get()));
   }
   EXPECT_TRUE(runs[0] == runs[1]) << "the second execution drew a different image";
+  device()->GetStats(&after);
+  EXPECT_EQ(after.DrawCalls - before.DrawCalls, 2u * 120u) << "a list's draws count at each execution";
 
   context()->ClearRenderTargetView(rt.rtv.Get(), kBlack);
   EXPECT_EQ(RecordQuads(context(), rt.rtv.Get(), quads[0]), 0);
