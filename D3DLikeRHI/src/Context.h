@@ -150,6 +150,7 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void SetSRVs(ShaderStage stage, UINT start, UINT num, ShaderResourceView* const* views);
   void SetSamplers(ShaderStage stage, UINT start, UINT num, SamplerState* const* samplers);
   void UnbindAliasedSRVs();
+  bool BoundAsTarget(const TextureCore* t) const;
   void CreateDefaultStates();
 
   // ContextDraw.cpp

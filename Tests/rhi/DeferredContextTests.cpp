@@ -352,6 +352,19 @@ TEST_F(RhiDeferred, TextureRenderedByOneListIsSampledByTheNext) {
   EXPECT_EQ(img.RGBA8(60, 60)[1], 255);
 }
 
+// The SRV/render-target hazard rule is per context: a texture bound as a
+// target on a deferred context stays bindable as an SRV elsewhere.
+TEST_F(RhiDeferred, HazardRuleIsPerContext) {
+  auto tex = MakeRenderTarget(kW, kH);
+  auto ctx = MakeDeferred();
+  ctx->OMSetRenderTargets(1, tex.rtv.GetAddressOf(), nullptr);
+  context()->PSSetShaderResources(0, 1, tex.srv.GetAddressOf());
+  EXPECT_EQ(CountMessages(LogLevel::Warning, "bound as a render target"), 0u);
+  ctx->PSSetShaderResources(0, 1, tex.srv.GetAddressOf());
+  EXPECT_EQ(CountMessages(LogLevel::Warning, "bound as a render target"), 1u) << "still applies within a context";
+  ClearMessages();
+}
+
 // A list keeps what it uses alive: released by the application before the
 // execution, still drawn; everything goes once the list is released.
 TEST_F(RhiDeferred, ListKeepsItsObjectsAlive) {
