@@ -126,6 +126,7 @@ void BarrierBatch::Record(VkCommandBuffer cmd) {
 
 // ---------------------------------------------------------------------------
 void ContextImpl::UseTexture(TextureCore* t, const SubresourceRange& r, const Usage& u) {
+  if (rec_) return UseTextureInList(t, r, u);  // a deferred context's list
   TextureImage& img = t->Cur();
   const uint32_t mipCount = t->desc.MipLevels;
   for (uint32_t l = r.baseLayer; l < r.baseLayer + r.layers; ++l) {
@@ -139,6 +140,7 @@ void ContextImpl::UseTexture(TextureCore* t, const SubresourceRange& r, const Us
 }
 
 void ContextImpl::UseBuffer(VkBuffer buf, SyncState& s, const Usage& u) {
+  if (rec_) return UseBufferInList(buf, s, u);
   BarrierInfo info;
   if (!Transition(s, u, &info)) return;
   barriers_.AddBuffer(buf, info);

@@ -62,6 +62,14 @@ void ConstantRing::Reset() {
   offset_ = 0;
 }
 
+void ConstantRing::DeferDestroy() {
+  for (auto& c : chunks_) {
+    dev_->Defer(VK_OBJECT_TYPE_BUFFER, reinterpret_cast<uint64_t>(c.buffer));
+    dev_->Defer(VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<uint64_t>(c.memory));
+  }
+  chunks_.clear();
+}
+
 void ConstantRing::Destroy() {
   for (auto& c : chunks_) {
     dev_->DestroyNow({VK_OBJECT_TYPE_BUFFER, reinterpret_cast<uint64_t>(c.buffer)});

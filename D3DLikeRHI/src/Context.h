@@ -6,6 +6,7 @@
 // submission) and Barriers.cpp.
 #pragma once
 
+#include "CommandList.h"
 #include "ContextState.h"
 #include "Device.h"
 #include "d3dl/BlitExtension.h"
@@ -65,10 +66,11 @@ struct BoundDescriptors {
 
 class ContextImpl final : public DeviceContext, public BlitExtension {
  public:
-  explicit ContextImpl(DeviceImpl* dev);
+  // deferred: a deferred context (CreateDeferredContext), counted on its own.
+  explicit ContextImpl(DeviceImpl* dev, bool deferred = false);
   ~ContextImpl();
-  UINT AddRef() override { return dev_->AddRef(); }
-  UINT Release() override { return dev_->Release(); }
+  UINT AddRef() override { return deferred_ ? ++deferredRefs_ : dev_->AddRef(); }
+  UINT Release() override;
 
   void IASetInputLayout(InputLayout* layout) override;
   void IASetVertexBuffers(UINT startSlot, UINT numBuffers, Buffer* const* buffers,
@@ -133,6 +135,11 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   // Formats, views, MSAA (ContextCopy.cpp)
   void ResolveSubresource(Resource* dst, UINT dstSubresource, Resource* src, UINT srcSubresource,
                           DXGI_FORMAT format) override;
+  // Deferred contexts (ContextDeferred.cpp)
+  DEVICE_CONTEXT_TYPE GetType() override;
+  HRESULT FinishCommandList(BOOL restoreDeferredContextState, CommandList** commandList) override;
+  void ExecuteCommandList(CommandList* commandList, BOOL restoreContextState) override;
+
   // BlitExtension (ContextBlit.cpp)
   void BlitRegion(Texture2D* dst, const RECT& dstRect, Texture2D* src, const RECT& srcRect,
                   FILTER filter) override;
@@ -166,6 +173,7 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void SetSRVs(ShaderStage stage, UINT start, UINT num, ShaderResourceView* const* views);
   void SetSamplers(ShaderStage stage, UINT start, UINT num, SamplerState* const* samplers);
   void UnbindAliasedSRVs();
+  bool BoundAsTarget(const TextureCore* t) const;
   void CreateDefaultStates();
 
   // ContextStages.cpp: the bound HS/DS/GS fit each other and the topology.
@@ -263,6 +271,49 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   // only in the ring: copied back to their shadows before the frame ends
   // (no references held; see ForgetDiscardedConstants).
   std::vector<BufferImpl*> discardedCBs_;
+
+  // ---- Deferred contexts (ContextDeferred.cpp). `rec_` is set on a deferred
+  // context only: the list being recorded (cmd_ is its secondary buffer).
+  void BeginRecording();
+  ListSyncEntry& ListEntry(SyncState* global, const Usage& u, bool* first);
+  void UseTextureInList(TextureCore* t, const SubresourceRange& range, const Usage& u);
+  void UseBufferInList(VkBuffer buf, SyncState& s, const Usage& u);
+  const RingAlloc& ListCbRing(BufferImpl* b);
+  const RingAlloc& ListDynRing(const BufferImpl* b);
+  bool NewListSlice(BufferImpl* b, bool discarded, bool written);
+  HRESULT MapInList(Resource* resource, UINT sub, MAP type, MAPPED_SUBRESOURCE* mapped);
+  void UnmapInList(Resource* resource);
+  void UpdateConstantsInList(BufferImpl* b, const BOX* box, const void* data);
+  void RetainDrawState(bool indexed);
+  template <class T>
+  void Retain(T* object);
+  void RetainInList(Unknown* object);
+  void CopyImports(CommandListImpl& list);
+  void ExportConstants(ListRecording& rec);
+  // A CPU-visible use of a resource (GpuUse): now on the immediate context,
+  // at ExecuteCommandList for a list.
+  void NoteUse(GpuUse& u, bool write) {
+    if (rec_) return NoteUseInList(u, write);
+    write ? u.Write(dev_->CurrentSerial()) : u.Read(dev_->CurrentSerial());
+  }
+  void NoteUseInList(GpuUse& u, bool write);
+  // The ring slice with a constant buffer's data for this context's commands.
+  const RingAlloc& CbRing(BufferImpl* b) {
+    if (rec_) return ListCbRing(b);
+    b->EnsureUploaded();
+    return b->ring();
+  }
+  // The slice of a DYNAMIC vertex/index buffer's last Map(WRITE_DISCARD).
+  const RingAlloc& DynRing(const BufferImpl* b) { return rec_ ? ListDynRing(b) : b->ring(); }
+  // DEVICE_STATS::DrawCalls: a list's draws are counted when it is executed.
+  void CountDraw() { rec_ ? ++rec_->draws : ++dev_->stats.DrawCalls; }
+  // On a deferred context: logs that `fn` is forbidden there (as in D3D11),
+  // or not supported there by this port (`portLimit`), and returns true.
+  bool RejectDeferred(const char* fn, bool portLimit = false);
+
+  const bool deferred_;
+  std::atomic<UINT> deferredRefs_{1};
+  std::unique_ptr<ListRecording> rec_;
 };
 
 // Pipeline statistics queries (QueryStatistics.cpp): the query's pool, and
@@ -300,9 +351,9 @@ inline bool ContextImpl::BindConstantsHot(VkCommandBuffer cmd) {
   for (uint32_t i = 0; i < desc_.nHotCbs; ++i) {
     BufferImpl* b = desc_.hotCbs[i];
     if (!b) continue;  // the dummy buffer: offset 0
-    b->EnsureUploaded();
-    if (b->ring().buffer != desc_.cbBuffers[i]) return BindDescriptors(cmd);
-    desc_.dynOffsets[i] = static_cast<uint32_t>(b->ring().offset);
+    const RingAlloc& r = CbRing(b);
+    if (r.buffer != desc_.cbBuffers[i]) return BindDescriptors(cmd);
+    desc_.dynOffsets[i] = static_cast<uint32_t>(r.offset);
   }
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, desc_.hotLayout, 0, 1, &desc_.set,
                           desc_.nHotCbs, desc_.dynOffsets);

@@ -45,6 +45,7 @@ int ContextImpl::BoundRenderTargetSlot(const RTVImpl* v) const {
 void ContextImpl::ClearRenderTargetView(RenderTargetView* rtv, const float color[4]) {
   if (!ValidateClearRenderTargetView(*dev_, rtv, color)) return;
   auto* v = static_cast<RTVImpl*>(rtv);
+  if (rec_) RetainInList(v);
   VkClearValue cv;
   cv.color = ToClearColor(v->v, color);
   const int slot = BoundRenderTargetSlot(v);
@@ -58,7 +59,7 @@ void ContextImpl::ClearRenderTargetView(RenderTargetView* rtv, const float color
   FlushBarriers();
   VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, v->v.baseMip, 1, v->v.baseLayer, v->v.layerCount};
   vkCmdClearColorImage(cmd_, v->v.tex->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &cv.color, 1, &range);
-  v->v.tex->use.Write(dev_->CurrentSerial());
+  NoteUse(v->v.tex->use, true);
 }
 
 void ContextImpl::ClearDepthStencilView(DepthStencilView* dsv, UINT flags, float depth, uint8_t stencil) {
@@ -67,6 +68,7 @@ void ContextImpl::ClearDepthStencilView(DepthStencilView* dsv, UINT flags, float
   VkImageAspectFlags aspect = (flags & CLEAR_DEPTH) ? VK_IMAGE_ASPECT_DEPTH_BIT : 0;
   if (flags & CLEAR_STENCIL) aspect |= v->v.aspect & VK_IMAGE_ASPECT_STENCIL_BIT;
   if (!aspect) return;
+  if (rec_) RetainInList(v);
   VkClearValue cv;
   cv.depthStencil = {std::clamp(depth, 0.0f, 1.0f), stencil};
   if (state_.om.depthStencilView.Get() == v && (rendering_ || BeginRendering())) {
@@ -84,6 +86,7 @@ void ContextImpl::ClearDepthStencilView(DepthStencilView* dsv, UINT flags, float
 void ContextImpl::ClearView(View* view, const float color[4], const RECT* rects, UINT numRects) {
   RTVImpl* v = ValidateClearView(*dev_, view, color, rects, numRects);
   if (!v) return;
+  if (rec_) RetainInList(v);
   if (numRects == 0) {
     ClearRenderTargetView(v, color);
     return;
@@ -114,7 +117,7 @@ void ContextImpl::ClearUnboundView(RTVImpl* v, const VkClearValue& cv, const REC
   ClearRectsInScope(0, VK_IMAGE_ASPECT_COLOR_BIT, cv, rects, numRects, w, h);
   vkCmdEndRendering(cmd_);
   rendering_ = false;
-  v->v.tex->use.Write(dev_->CurrentSerial());
+  NoteUse(v->v.tex->use, true);
 }
 
 }  // namespace d3dl::impl

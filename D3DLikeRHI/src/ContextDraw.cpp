@@ -89,16 +89,15 @@ bool ContextImpl::BeginRendering() {
   if (const DSVImpl* d = om.depthStencilView.Get()) UseTexture(d->v.tex, d->v.range(), usage::DepthAttachment);
   FlushBarriers();
   VkRenderingAttachmentInfo color[SIMULTANEOUS_RENDER_TARGET_COUNT]{};
-  const uint64_t serial = dev_->CurrentSerial();
   for (uint32_t i = 0; i < om.numRenderTargets; ++i) {
     const RTVImpl* r = om.renderTargets[i].Get();
     color[i] = LoadStoreAttachment(r ? r->v.Current() : VK_NULL_HANDLE, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
-    if (r) r->v.tex->use.Write(serial);
+    if (r) NoteUse(r->v.tex->use, true);
   }
   VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   if (const DSVImpl* d = om.depthStencilView.Get()) {
     depth = LoadStoreAttachment(d->v.Current(), VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
-    d->v.tex->use.Write(serial);
+    NoteUse(d->v.tex->use, true);
   }
   VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
   ri.renderArea = {{0, 0}, {w, h}};
@@ -161,6 +160,7 @@ bool ContextImpl::CommitSlow(bool indexed) {
     dirty_ |= kDescriptors | kConstants;
   }
   UseDrawResources(indexed);
+  if (rec_) RetainDrawState(indexed);
   if (HasPendingBarriers()) FlushBarriers();
   if (!rendering_ && !BeginRendering()) return false;
   VkCommandBuffer cmd = cmd_;
@@ -243,10 +243,11 @@ void ContextImpl::BindVertexBuffers(VkCommandBuffer cmd) {
     VkBuffer buf = dev_->dummies().uniform;
     VkDeviceSize off = 0, stride = v.stride;
     if (b && b->storage() == Storage::Ring) {
-      if (!b->RingFromFrame(dev_->CurrentSerial()) && b->ring().buffer) ErrorOnce(OnceError::StaleDynamicBuffer);
-      if (b->ring().buffer) {
-        buf = b->ring().buffer;
-        off = b->ring().offset + v.offset;
+      const RingAlloc& ring = DynRing(b);
+      if (!rec_ && !b->RingFromFrame(dev_->CurrentSerial()) && ring.buffer) ErrorOnce(OnceError::StaleDynamicBuffer);
+      if (ring.buffer) {
+        buf = ring.buffer;
+        off = ring.offset + v.offset;
       } else {
         stride = 0;
       }
@@ -264,8 +265,8 @@ bool ContextImpl::BindIndexBuffer(VkCommandBuffer cmd) {
   const InputAssemblerState& ia = state_.ia;
   const BufferImpl* ib = ia.indexBuffer.Get();
   const bool ring = ib->storage() == Storage::Ring;
-  VkBuffer buf = ring ? ib->ring().buffer : ib->vkBuffer();
-  VkDeviceSize off = (ring ? ib->ring().offset : 0) + ia.indexOffset;
+  VkBuffer buf = ring ? DynRing(ib).buffer : ib->vkBuffer();
+  VkDeviceSize off = (ring ? DynRing(ib).offset : 0) + ia.indexOffset;
   if (!buf) return ErrorOnce(OnceError::IndexBufferNeverMapped), false;
   vkCmdBindIndexBuffer(cmd, buf, off, ia.indexType);
   return true;
@@ -287,9 +288,9 @@ bool ContextImpl::BindDescriptors(VkCommandBuffer cmd) {
     VkBuffer buf = dev_->dummies().uniform;
     uint32_t off = 0, range = static_cast<uint32_t>(dev_->dummies().uniformSize);
     if (b) {
-      b->EnsureUploaded();
-      buf = b->ring().buffer;
-      off = static_cast<uint32_t>(b->ring().offset);
+      const RingAlloc& r = CbRing(b);
+      buf = r.buffer;
+      off = static_cast<uint32_t>(r.offset);
       range = b->size();
     }
     if (buf != desc_.cbBuffers[i] || range != desc_.cbRanges[i]) newSet = true;
@@ -325,8 +326,8 @@ bool ContextImpl::WriteNewSet() {
   const uint32_t nCB = static_cast<uint32_t>(program_->cbs.size());
   for (uint32_t i = 0; i < nCB; ++i) {
     const auto& s = program_->cbs[i];
-    const BufferImpl* b = state_.stages[s.stage].constantBuffers[s.slot].Get();
-    bufInfo[i] = {b ? b->ring().buffer : dummy.uniform, 0, b ? b->size() : dummy.uniformSize};
+    BufferImpl* b = state_.stages[s.stage].constantBuffers[s.slot].Get();
+    bufInfo[i] = {b ? CbRing(b).buffer : dummy.uniform, 0, b ? b->size() : dummy.uniformSize};
     desc_.cbBuffers[i] = bufInfo[i].buffer;
     desc_.cbRanges[i] = static_cast<uint32_t>(bufInfo[i].range);
     writes[nw] = WriteOf(set, s.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC);
@@ -354,22 +355,22 @@ bool ContextImpl::WriteNewSet() {
 void ContextImpl::Draw(UINT count, UINT start) {
   if (!Commit(false)) return;
   vkCmdDraw(cmd_, count, 1, start, 0);
-  ++dev_->stats.DrawCalls;
+  CountDraw();
 }
 void ContextImpl::DrawInstanced(UINT count, UINT instances, UINT start, UINT startInstance) {
   if (!Commit(false)) return;
   vkCmdDraw(cmd_, count, instances, start, startInstance);
-  ++dev_->stats.DrawCalls;
+  CountDraw();
 }
 void ContextImpl::DrawIndexed(UINT count, UINT start, int32_t base) {
   if (!Commit(true)) return;
   vkCmdDrawIndexed(cmd_, count, 1, start, base, 0);
-  ++dev_->stats.DrawCalls;
+  CountDraw();
 }
 void ContextImpl::DrawIndexedInstanced(UINT count, UINT instances, UINT start, int32_t base, UINT startInstance) {
   if (!Commit(true)) return;
   vkCmdDrawIndexed(cmd_, count, instances, start, base, startInstance);
-  ++dev_->stats.DrawCalls;
+  CountDraw();
 }
 
 }  // namespace d3dl::impl

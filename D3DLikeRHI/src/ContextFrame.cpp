@@ -9,8 +9,13 @@ constexpr uint32_t kTimestampsPerFrame = 1024;
 constexpr uint32_t kSetsPerPool = 512;
 }  // namespace
 
-ContextImpl::ContextImpl(DeviceImpl* dev) : dev_(dev) {
+ContextImpl::ContextImpl(DeviceImpl* dev, bool deferred) : dev_(dev), deferred_(deferred) {
   CreateDefaultStates();
+  if (deferred) {  // records into command lists (ContextDeferred.cpp)
+    dev_->ChildCreated();
+    BeginRecording();
+    return;
+  }
   CreateCommandFrames();
   BeginCommandFrame();
 }
@@ -20,7 +25,19 @@ ContextImpl::~ContextImpl() {
   SaveDiscardedConstants();
   ClearState();
   defaults_ = {};
+  if (rec_) DestroyRecording(dev_, *rec_);  // an unfinished list, never submitted
   DestroyCommandFrames();
+}
+
+UINT ContextImpl::Release() {
+  if (!deferred_) return dev_->Release();
+  const UINT r = --deferredRefs_;
+  if (r == 0) {
+    DeviceImpl* dev = dev_;
+    delete this;
+    dev->ChildDestroyed();  // last: it may shut the device down
+  }
+  return r;
 }
 
 void ContextImpl::CreateCommandFrames() {
@@ -109,12 +126,16 @@ void ContextImpl::SubmitFrame(TextureCore* present, VkSemaphore signal) {
   BeginCommandFrame();
 }
 
-void ContextImpl::Flush() { SubmitFrame(); }
+void ContextImpl::Flush() {
+  if (!RejectDeferred("Flush")) SubmitFrame();
+}
 
 VkDescriptorSet ContextImpl::AllocateSet(VkDescriptorSetLayout layout) {
-  CommandFrame& f = frames_[dev_->queue().Slot()];
+  // A deferred context allocates from its list's pools, freed with the list.
+  std::vector<VkDescriptorPool>& pools = rec_ ? rec_->descPools : frames_[dev_->queue().Slot()].descPools;
+  size_t& current = rec_ ? rec_->descPoolCurrent : frames_[dev_->queue().Slot()].descPoolCurrent;
   for (;;) {
-    if (f.descPoolCurrent >= f.descPools.size()) {
+    if (current >= pools.size()) {
       VkDescriptorPoolSize sizes[] = {
           {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kSetsPerPool * 8},
           {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, kSetsPerPool * 16},
@@ -126,20 +147,20 @@ VkDescriptorSet ContextImpl::AllocateSet(VkDescriptorSetLayout layout) {
       ci.pPoolSizes = sizes;
       VkDescriptorPool pool;
       if (vkCreateDescriptorPool(dev_->vk(), &ci, nullptr, &pool) != VK_SUCCESS) return VK_NULL_HANDLE;
-      f.descPools.push_back(pool);
+      pools.push_back(pool);
     }
     VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    ai.descriptorPool = f.descPools[f.descPoolCurrent];
+    ai.descriptorPool = pools[current];
     ai.descriptorSetCount = 1;
     ai.pSetLayouts = &layout;
     VkDescriptorSet set = VK_NULL_HANDLE;
     VkResult r = vkAllocateDescriptorSets(dev_->vk(), &ai, &set);
     if (r == VK_SUCCESS) {
-      ++dev_->stats.DescriptorSetsAllocated;
+      if (!rec_) ++dev_->stats.DescriptorSetsAllocated;  // the immediate context's thread only
       return set;
     }
     if (r != VK_ERROR_OUT_OF_POOL_MEMORY && r != VK_ERROR_FRAGMENTED_POOL) return VK_NULL_HANDLE;
-    ++f.descPoolCurrent;
+    ++current;
   }
 }
 

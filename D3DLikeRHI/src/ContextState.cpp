@@ -92,7 +92,7 @@ void ContextImpl::SetSRVs(ShaderStage stage, UINT start, UINT num, ShaderResourc
   auto& slots = state_.stages[stage].shaderResources;
   for (UINT i = 0; i < num; ++i) {
     auto* v = views ? static_cast<SRVImpl*>(views[i]) : nullptr;
-    if (v && v->v.tex->boundAsTarget > 0) {
+    if (v && BoundAsTarget(v->v.tex)) {
       // D3D11 hazard rule: a resource bound for output cannot be bound as input.
       dev_->Log(LogLevel::Warning, "%sSetShaderResources: slot %u: the texture is bound as a render target; bound as null",
                 StagePrefix(stage), start + i);
@@ -176,19 +176,12 @@ void ContextImpl::OMSetRenderTargets(UINT num, RenderTargetView* const* rtvs, De
   for (UINT i = 0; i < SIMULTANEOUS_RENDER_TARGET_COUNT; ++i) same = same && newRt[i] == om.renderTargets[i].Get();
   if (same) return;
   EndRendering();
-  for (auto& r : om.renderTargets)
-    if (r) --r->v.tex->boundAsTarget;
-  if (om.depthStencilView) --om.depthStencilView->v.tex->boundAsTarget;
   om.numRenderTargets = 0;
   for (UINT i = 0; i < SIMULTANEOUS_RENDER_TARGET_COUNT; ++i) {
     Assign(om.renderTargets[i], newRt[i]);
-    if (newRt[i]) {
-      ++newRt[i]->v.tex->boundAsTarget;
-      om.numRenderTargets = i + 1;
-    }
+    if (newRt[i]) om.numRenderTargets = i + 1;
   }
   Assign(om.depthStencilView, newDs);
-  if (newDs) ++newDs->v.tex->boundAsTarget;
   UnbindAliasedSRVs();
   dirty_ |= kPipeline | kScissor | kViewport;
 }
@@ -197,10 +190,19 @@ void ContextImpl::OMSetRenderTargets(UINT num, RenderTargetView* const* rtvs, De
 void ContextImpl::UnbindAliasedSRVs() {
   for (auto& stage : state_.stages)
     for (auto& srv : stage.shaderResources)
-      if (srv && srv->v.tex->boundAsTarget > 0) {
+      if (srv && BoundAsTarget(srv->v.tex)) {
         srv = nullptr;
         dirty_ |= kDescriptors;
       }
+}
+
+// Whether this context's output merger writes `t` (hazards are per context:
+// another thread's deferred context may render to it meanwhile).
+bool ContextImpl::BoundAsTarget(const TextureCore* t) const {
+  const OutputMergerState& om = state_.om;
+  for (uint32_t i = 0; i < om.numRenderTargets; ++i)
+    if (om.renderTargets[i] && om.renderTargets[i]->v.tex == t) return true;
+  return om.depthStencilView && om.depthStencilView->v.tex == t;
 }
 
 void ContextImpl::OMGetRenderTargets(UINT num, RenderTargetView** rtvs, DepthStencilView** dsv) {
@@ -217,7 +219,7 @@ void ContextImpl::OMGetRenderTargets(UINT num, RenderTargetView** rtvs, DepthSte
 
 void ContextImpl::ClearState() {
   EndRendering();
-  OMSetRenderTargets(0, nullptr, nullptr);  // keeps the textures' target counts right
+  OMSetRenderTargets(0, nullptr, nullptr);  // ends the rendering scope
   state_ = ContextState{};
   dirty_ = kAll;
 }

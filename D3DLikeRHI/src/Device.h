@@ -78,6 +78,7 @@ class DeviceImpl final : public Device {
   HRESULT CreateSwapChainForWindow(GLFWwindow*, const SWAP_CHAIN_DESC*, SwapChain**) override;
   HRESULT CreateHeadlessSwapChain(const SWAP_CHAIN_DESC*, SwapChain**) override;
   void GetImmediateContext(DeviceContext** context) override;
+  HRESULT CreateDeferredContext(UINT contextFlags, DeviceContext** context) override;  // ContextDeferred.cpp
   void GetAdapterDesc(ADAPTER_DESC* desc) const override {
     if (desc) *desc = adapter_;
   }

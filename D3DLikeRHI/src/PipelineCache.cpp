@@ -56,6 +56,7 @@ void AddStageBindings(const ShaderReflection& r, ShaderStage stage, ProgramLayou
 }  // namespace
 
 ProgramLayout* PipelineCache::GetProgram(const PerStage<ShaderBase*>& shaders) {
+  std::lock_guard<std::mutex> lock(mutex_);
   const ShaderIds key = IdsOf(shaders);
   auto it = programs_.find(key);
   if (it != programs_.end()) return it->second.get();
@@ -151,6 +152,7 @@ struct FixedFunction {
 }  // namespace
 
 VkPipeline PipelineCache::GetPipeline(const PipelineKey& key, const PipelineInputs& in, ProgramLayout* prog) {
+  std::lock_guard<std::mutex> lock(mutex_);
   auto it = pipelines_.find(key);
   if (it != pipelines_.end()) return it->second;
   VkPipelineShaderStageCreateInfo stages[kStageCount]{};
@@ -197,6 +199,7 @@ VkPipeline PipelineCache::GetPipeline(const PipelineKey& key, const PipelineInpu
 }
 
 void PipelineCache::ForgetShader(uint64_t cacheId) {
+  std::lock_guard<std::mutex> lock(mutex_);
   for (auto it = pipelines_.begin(); it != pipelines_.end();) {
     if (it->first.shaders.Uses(cacheId)) {
       dev_->Defer(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<uint64_t>(it->second));

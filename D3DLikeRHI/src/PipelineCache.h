@@ -4,6 +4,7 @@
 
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <unordered_map>
 
 #include "Shaders.h"
@@ -72,6 +73,8 @@ class PipelineCache {
   DeviceImpl* dev_ = nullptr;
   std::unordered_map<ShaderIds, std::unique_ptr<ProgramLayout>, WordHash> programs_;
   std::unordered_map<PipelineKey, VkPipeline, WordHash> pipelines_;
+  // Deferred contexts: contexts on several threads share the cache.
+  std::mutex mutex_;
 };
 
 }  // namespace d3dl::impl

@@ -59,9 +59,13 @@ void FrameQueue::Recycle(Frame& f) {
     completed_ = std::max(completed_, f.serial);
     f.submitted = false;
   }
-  dev_->stats.ObjectsDestroyed += f.garbage.size();
-  for (auto& g : f.garbage) dev_->DestroyNow(g);
-  f.garbage.clear();
+  std::vector<Garbage> garbage;
+  {
+    std::lock_guard<std::mutex> lock(garbageMutex_);
+    garbage.swap(f.garbage);
+  }
+  dev_->stats.ObjectsDestroyed += garbage.size();
+  for (auto& g : garbage) dev_->DestroyNow(g);
   f.ring.Reset();
   vkResetCommandPool(d, f.uploadPool, 0);
   f.uploadUsed = false;
@@ -122,8 +126,11 @@ void FrameQueue::Submit(VkCommandBuffer cmd, VkSemaphore signal) {
   if (r != VK_SUCCESS) dev_->Log(LogLevel::Error, "vkQueueSubmit2 failed (VkResult %d)", r);
   f.submitted = r == VK_SUCCESS;
   ++dev_->stats.FramesSubmitted;
-  ++serial_;
-  slot_ = static_cast<uint32_t>(serial_ % frames_.size());
+  {
+    std::lock_guard<std::mutex> lock(garbageMutex_);
+    ++serial_;
+    slot_ = static_cast<uint32_t>(serial_ % frames_.size());
+  }
   BeginFrame();
 }
 
@@ -147,6 +154,7 @@ void FrameQueue::WaitForSerial(uint64_t serial) {
 }
 
 size_t FrameQueue::PendingGarbage() const {
+  std::lock_guard<std::mutex> lock(garbageMutex_);
   size_t n = 0;
   for (auto& f : frames_) n += f.garbage.size();
   return n;

@@ -6,6 +6,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <mutex>
 #include <vector>
 
 #include "Ring.h"
@@ -32,7 +33,11 @@ class FrameQueue {
   // Per-frame resources of the frame being recorded.
   inline bool AllocateRing(VkDeviceSize size, VkDeviceSize align, RingAlloc* out);
   VkCommandBuffer UploadCmd();  // begun lazily, submitted before the frame's commands
-  void Defer(const Garbage& g) { frames_[slot_].garbage.push_back(g); }
+  // Any thread (command lists and objects are released on worker threads too).
+  void Defer(const Garbage& g) {
+    std::lock_guard<std::mutex> lock(garbageMutex_);
+    frames_[slot_].garbage.push_back(g);
+  }
   size_t PendingGarbage() const;
   VkSemaphore AcquireSemaphore() const { return frames_[slot_].acquireSemaphore; }
   // Semaphores the next submission waits for (swap-chain acquires).
@@ -69,6 +74,8 @@ class FrameQueue {
   uint64_t serial_ = 1;
   uint64_t completed_ = 0;
   std::vector<VkSemaphore> pendingWaits_;
+  // Guards the frames' garbage lists and slot_ against Defer from other threads.
+  mutable std::mutex garbageMutex_;
 };
 
 inline bool FrameQueue::AllocateRing(VkDeviceSize size, VkDeviceSize align, RingAlloc* out) {

@@ -146,7 +146,6 @@ struct TextureCore {
   StagingBuffer staging;  // Storage::Staging
   RingAlloc mapRing{};    // Storage::Ring: the slice written between Map and Unmap
   GpuUse use;
-  int boundAsTarget = 0;  // number of OM bindings
   SwapChainImplBase* swapChain = nullptr;
   std::vector<ViewCore*> registeredViews;  // swap-chain proxies: views to rebuild
   uint64_t uid = 0;

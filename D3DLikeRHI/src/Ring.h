@@ -29,6 +29,7 @@ class ConstantRing {
   void Init(DeviceImpl* dev) { dev_ = dev; }
   void Destroy();
   void Reset();  // the frame that used these chunks has completed
+  void DeferDestroy();  // a command list's ring: destroyed after the current frame's fence
   bool Allocate(VkDeviceSize size, VkDeviceSize align, RingAlloc* out);
   // Hot path of Allocate (one per constant-buffer Map): succeeds only when the
   // current chunk has room. `align` is a power of two (all callers; Vulkan

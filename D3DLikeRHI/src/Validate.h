@@ -115,4 +115,15 @@ bool ValidateTopology(DeviceImpl& dev, PRIMITIVE_TOPOLOGY t);
 bool ValidateBegin(DeviceImpl& dev, const QUERY_DESC& desc);
 bool ValidateGetData(DeviceImpl& dev, const QueryImpl* q, const void* data, UINT size);
 
+// ---- deferred contexts (ValidateContext.cpp)
+HRESULT ValidateCreateDeferredContext(DeviceImpl& dev, UINT flags, DeviceContext** out);
+HRESULT ValidateFinishCommandList(DeviceImpl& dev, bool deferredContext, CommandList** out);
+bool ValidateExecuteCommandList(DeviceImpl& dev, bool deferredContext, CommandList* list);
+// Map on a deferred context: DYNAMIC buffers, WRITE_DISCARD, or NO_OVERWRITE
+// after a WRITE_DISCARD of the same buffer in the list being recorded.
+HRESULT ValidateDeferredMap(DeviceImpl& dev, Resource* resource, UINT sub, MAP type,
+                            const MAPPED_SUBRESOURCE* mapped, bool discardedInList);
+// UpdateSubresource on a deferred context: constant buffers only (this port).
+bool ValidateDeferredUpdate(DeviceImpl& dev, Resource* dst);
+
 }  // namespace d3dl::impl

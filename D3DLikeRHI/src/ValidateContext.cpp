@@ -489,4 +489,73 @@ bool ValidateTopology(DeviceImpl& dev, PRIMITIVE_TOPOLOGY t) {
   return false;
 }
 
+// Deferred contexts and command lists
+HRESULT ValidateCreateDeferredContext(DeviceImpl& dev, UINT flags, DeviceContext** out) {
+  if (!out) {
+    dev.Log(LogLevel::Error, "CreateDeferredContext: ppDeferredContext is null");
+    return E_INVALIDARG;
+  }
+  *out = nullptr;
+  if (flags == 0) return S_OK;
+  dev.Log(LogLevel::Error, "CreateDeferredContext: ContextFlags must be 0 (got 0x%x)", flags);
+  return E_INVALIDARG;
+}
+
+HRESULT ValidateFinishCommandList(DeviceImpl& dev, bool deferredContext, CommandList** out) {
+  if (!deferredContext) {
+    dev.Log(LogLevel::Error, "FinishCommandList: only a deferred context records command lists");
+    return DXGI_ERROR_INVALID_CALL;
+  }
+  if (out) return S_OK;
+  dev.Log(LogLevel::Error, "FinishCommandList: ppCommandList is null");
+  return E_INVALIDARG;
+}
+
+bool ValidateExecuteCommandList(DeviceImpl& dev, bool deferredContext, CommandList* list) {
+  if (deferredContext) {
+    dev.Log(LogLevel::Error, "ExecuteCommandList: not supported on deferred contexts by this port (execute on the immediate context)");
+    return false;
+  }
+  if (!list) {
+    dev.Log(LogLevel::Error, "ExecuteCommandList: pCommandList is null");
+    return false;
+  }
+  if (static_cast<CommandListImpl*>(list)->dev() == &dev) return true;
+  dev.Log(LogLevel::Error, "ExecuteCommandList: the command list belongs to another device");
+  return false;
+}
+
+HRESULT ValidateDeferredMap(DeviceImpl& dev, Resource* resource, UINT sub, MAP type,
+                            const MAPPED_SUBRESOURCE* mapped, bool discardedInList) {
+  if (!resource || !mapped) {
+    dev.Log(LogLevel::Error, "Map: %s is null", resource ? "pMappedResource" : "pResource");
+    return E_INVALIDARG;
+  }
+  const BufferImpl* b = AsBuffer(resource);
+  if (!b) {
+    dev.Log(LogLevel::Error, "Map: textures cannot be mapped on deferred contexts by this port");
+    return E_NOTIMPL;
+  }
+  if (sub != 0) {
+    dev.Log(LogLevel::Error, "Map: buffers have one subresource (got %u)", sub);
+    return E_INVALIDARG;
+  }
+  if (b->storage() != Storage::DynamicConstants && b->storage() != Storage::Ring) {
+    dev.Log(LogLevel::Error, "Map: a deferred context maps USAGE_DYNAMIC buffers only");
+    return E_INVALIDARG;
+  }
+  if (type == MAP_WRITE_DISCARD || (type == MAP_WRITE_NO_OVERWRITE && discardedInList)) return S_OK;
+  dev.Log(LogLevel::Error,
+          "Map: a deferred context accepts WRITE_DISCARD, or WRITE_NO_OVERWRITE after a WRITE_DISCARD of the "
+          "same buffer in this command list (got MapType %u)", type);
+  return E_INVALIDARG;
+}
+
+bool ValidateDeferredUpdate(DeviceImpl& dev, Resource* dst) {
+  const BufferImpl* b = AsBuffer(dst);
+  if (b && b->IsConstantBuffer()) return true;
+  dev.Log(LogLevel::Error, "UpdateSubresource: on deferred contexts this port updates constant buffers only");
+  return false;
+}
+
 }  // namespace d3dl::impl

@@ -135,6 +135,12 @@ void DeviceImpl::DestroyNow(const Garbage& g) {
     case VK_OBJECT_TYPE_SHADER_MODULE:
       vkDestroyShaderModule(device_, reinterpret_cast<VkShaderModule>(g.handle), nullptr);
       break;
+    case VK_OBJECT_TYPE_COMMAND_POOL:  // a command list's (with its buffer)
+      vkDestroyCommandPool(device_, reinterpret_cast<VkCommandPool>(g.handle), nullptr);
+      break;
+    case VK_OBJECT_TYPE_DESCRIPTOR_POOL:
+      vkDestroyDescriptorPool(device_, reinterpret_cast<VkDescriptorPool>(g.handle), nullptr);
+      break;
     case VK_OBJECT_TYPE_PIPELINE: vkDestroyPipeline(device_, reinterpret_cast<VkPipeline>(g.handle), nullptr); break;
     case VK_OBJECT_TYPE_PIPELINE_LAYOUT:
       vkDestroyPipelineLayout(device_, reinterpret_cast<VkPipelineLayout>(g.handle), nullptr);

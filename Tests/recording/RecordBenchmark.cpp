@@ -122,6 +122,7 @@ int main(int argc, char** argv) {
   int64_t draws = 10000;
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--deferred") == 0) return drrbench::DeferredMain(argc, argv);
     if (std::strcmp(argv[i], "--smoke") == 0) return drrbench::Smoke();
     if (std::strcmp(argv[i], "--draws") == 0 && i + 1 < argc) {
       char* end = nullptr;

@@ -37,4 +37,7 @@ class Recorder {
 Recorder* CreateRawVulkanRecorder();
 Recorder* CreateRhiRecorder();
 
+// drr_rhi_bench --deferred (DeferredBenchmark.cpp): 1 against 2 recording threads.
+int DeferredMain(int argc, char** argv);
+
 }  // namespace drrbench

@@ -92,6 +92,8 @@ class Query : public DeviceChild {
 // ---------------------------------------------------------------------------
 // Immediate context. Setters only record state; state is committed at draw
 // time. Work is submitted by Flush() or SwapChain::Present().
+class CommandList;
+
 class DeviceContext : public Unknown {
  public:
   // Input assembler
@@ -192,6 +194,22 @@ class DeviceContext : public Unknown {
   // Integer and depth formats are rejected, as in D3D11.
   virtual void ResolveSubresource(Resource* dst, UINT dstSubresource, Resource* src,
                                   UINT srcSubresource, DXGI_FORMAT format) = 0;
+  // ---- Deferred contexts (D3D11 semantics; threading rules in
+  // Docs/D3D11-to-Vulkan.md). Each context is used by one thread at a time.
+  virtual DEVICE_CONTEXT_TYPE GetType() = 0;
+  // Deferred contexts only: ends the recording as a command list. FALSE resets
+  // the context to default state, TRUE keeps its state for the next list.
+  virtual HRESULT FinishCommandList(BOOL restoreDeferredContextState, CommandList** commandList) = 0;
+  // Immediate context only: runs the list (any number of times, until it is
+  // released). Afterwards the context's state is its prior state (TRUE) or the
+  // default state (FALSE).
+  virtual void ExecuteCommandList(CommandList* commandList, BOOL restoreContextState) = 0;
+};
+
+// Recorded commands of a deferred context (ID3D11CommandList).
+class CommandList : public DeviceChild {
+ public:
+  virtual UINT GetContextFlags() = 0;
 };
 
 // ---------------------------------------------------------------------------
@@ -265,6 +283,8 @@ class Device : public Unknown {
   virtual HRESULT CreateHeadlessSwapChain(const SWAP_CHAIN_DESC* desc, SwapChain** swapChain) = 0;
 
   virtual void GetImmediateContext(DeviceContext** context) = 0;
+  // ---- Deferred contexts: contextFlags must be 0 (as in D3D11).
+  virtual HRESULT CreateDeferredContext(UINT contextFlags, DeviceContext** context) = 0;
   virtual void GetAdapterDesc(ADAPTER_DESC* desc) const = 0;
   virtual void GetStats(DEVICE_STATS* stats) const = 0;
   // Whether the format can be used with the given BIND_* flags on this adapter.

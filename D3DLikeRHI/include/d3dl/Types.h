@@ -623,4 +623,13 @@ struct DEVICE_STATS {
   UINT64 LiveObjects = 0;                  // API objects (resources, views, states...) alive
 };
 
+// ---- Deferred contexts (D3D11_DEVICE_CONTEXT_TYPE) -------------------------
+enum DEVICE_CONTEXT_TYPE : uint32_t {
+  DEVICE_CONTEXT_IMMEDIATE = 0,
+  DEVICE_CONTEXT_DEFERRED = 1,
+};
+// A call made on the wrong kind of context (FinishCommandList on the
+// immediate context, GetData on a deferred one).
+inline constexpr HRESULT DXGI_ERROR_INVALID_CALL = static_cast<HRESULT>(0x887A0001u);
+
 }  // namespace d3dl

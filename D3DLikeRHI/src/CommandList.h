@@ -1,0 +1,88 @@
+// What a deferred context records (ListRecording) and the command list it
+// becomes at FinishCommandList (CommandListImpl); ContextDeferred.cpp.
+//
+// A list is one Vulkan secondary command buffer recorded on the deferred
+// context's thread, with its own descriptor pools and ring chunks. Layouts
+// are not known while recording: each resource's first use in the list is
+// kept as its entry use, and its tracked state at the end as its exit state;
+// ExecuteCommandList transitions the resource to the entry use and then makes
+// the exit state current.
+#pragma once
+
+#include <memory>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "Resources.h"
+
+namespace d3dl::impl {
+
+// One image subresource or buffer used by a list.
+struct ListSyncEntry {
+  SyncState* global = nullptr;  // the resource's current state (immediate context)
+  TextureCore* tex = nullptr;   // null for a buffer
+  VkBuffer buffer = VK_NULL_HANDLE;
+  uint32_t mip = 0, layer = 0;
+  Usage entry{};             // first use in the list
+  SyncState initial, local;  // right after the entry use; at the end of the list
+};
+
+// A constant buffer the list reads before writing it: its contents at
+// ExecuteCommandList are copied into `slot` (D3D11 reads them at execution).
+struct ListImport {
+  BufferImpl* buffer = nullptr;
+  RingAlloc slot;
+};
+
+struct ListRecording {
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;  // secondary
+  std::vector<VkDescriptorPool> descPools;
+  size_t descPoolCurrent = 0;
+  ConstantRing ring;
+
+  std::vector<ListSyncEntry> syncs;
+  std::unordered_map<const SyncState*, uint32_t> syncIndex;
+  // Contents of constant and DYNAMIC buffers in this list: the slice of the
+  // last Map(WRITE_DISCARD)/UpdateSubresource or the import slot.
+  struct Slice {
+    RingAlloc ring;
+    bool discarded;  // by a Map(WRITE_DISCARD) of this list (NO_OVERWRITE may follow)
+    bool written;    // by this list (else an import)
+  };
+  std::unordered_map<const BufferImpl*, Slice> slices;
+  std::vector<ListImport> imports;
+  std::unordered_map<GpuUse*, bool> uses;  // -> written
+  // API objects the commands use: one reference each, dropped with the list.
+  struct Held {
+    void* object;
+    void (*release)(void*);
+  };
+  std::unordered_set<const void*> retained;
+  std::vector<Held> held;
+
+  uint64_t draws = 0;  // added to DEVICE_STATS::DrawCalls at each execution
+
+  // Single-entry cache of `slices` (one constant buffer per draw is common).
+  const BufferImpl* lastBuffer = nullptr;
+  RingAlloc lastSlice;
+};
+
+class CommandListImpl final : public Child<CommandList> {
+ public:
+  CommandListImpl(DeviceImpl* d, std::unique_ptr<ListRecording> rec);
+  ~CommandListImpl() override;
+  UINT GetContextFlags() override { return 0; }
+  ListRecording& rec() { return *rec_; }
+  uint64_t lastExecuted = 0;  // frame serial of the last ExecuteCommandList
+
+ private:
+  std::unique_ptr<ListRecording> rec_;
+};
+
+// Releases the recording's references and hands its Vulkan objects to the
+// deferred destruction (after the fence of the frame being recorded).
+void DestroyRecording(DeviceImpl* dev, ListRecording& rec);
+
+}  // namespace d3dl::impl

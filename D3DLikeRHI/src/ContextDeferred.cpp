@@ -1,0 +1,317 @@
+// Deferred contexts and command lists (CommandList.h). A deferred context
+// is a ContextImpl whose commands go into a secondary command buffer of the
+// list being recorded, on the calling thread; its barriers, ring slices and
+// descriptor sets stay inside the list. ExecuteCommandList, on the immediate
+// context, brings each resource into the list's entry state, executes the
+// secondary buffer and makes the list's exit state current.
+#include "Context.h"
+#include "Validate.h"
+
+namespace d3dl::impl {
+namespace {
+constexpr VkDeviceSize kDynamicAlign = 256;  // vertex/index slices, as MapRingBuffer
+
+// The state of a resource right after the barrier into its entry use `u`.
+SyncState StateAfterEntry(const Usage& u) {
+  SyncState s;
+  s.layout = u.layout;
+  s.pending = true;
+  s.writeStages = u.stages;
+  s.writeAccess = u.write ? u.access : 0;
+  s.visible = u.write ? 0 : u.stages;
+  s.readStages = u.write ? 0 : u.stages;
+  return s;
+}
+
+bool SameState(const SyncState& a, const SyncState& b) {
+  return a.layout == b.layout && a.writeStages == b.writeStages && a.writeAccess == b.writeAccess &&
+         a.visible == b.visible && a.readStages == b.readStages && a.pending == b.pending;
+}
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Creation, command lists
+HRESULT DeviceImpl::CreateDeferredContext(UINT flags, DeviceContext** context) {
+  const HRESULT hr = ValidateCreateDeferredContext(*this, flags, context);
+  if (FAILED(hr)) return hr;
+  *context = new ContextImpl(this, true);
+  return S_OK;
+}
+
+CommandListImpl::CommandListImpl(DeviceImpl* d, std::unique_ptr<ListRecording> rec)
+    : Child<CommandList>(d), rec_(std::move(rec)) {}
+
+CommandListImpl::~CommandListImpl() { DestroyRecording(dev_, *rec_); }
+
+void DestroyRecording(DeviceImpl* dev, ListRecording& rec) {
+  for (const auto& h : rec.held) h.release(h.object);
+  rec.held.clear();
+  rec.retained.clear();
+  rec.ring.DeferDestroy();
+  for (VkDescriptorPool p : rec.descPools) dev->Defer(VK_OBJECT_TYPE_DESCRIPTOR_POOL, reinterpret_cast<uint64_t>(p));
+  rec.descPools.clear();
+  dev->Defer(VK_OBJECT_TYPE_COMMAND_POOL, reinterpret_cast<uint64_t>(rec.pool));  // frees rec.cmd
+  rec.pool = VK_NULL_HANDLE;
+}
+
+DEVICE_CONTEXT_TYPE ContextImpl::GetType() {
+  return deferred_ ? DEVICE_CONTEXT_DEFERRED : DEVICE_CONTEXT_IMMEDIATE;
+}
+
+bool ContextImpl::RejectDeferred(const char* fn, bool portLimit) {
+  if (!rec_) return false;
+  if (portLimit)
+    dev_->Log(LogLevel::Error, "%s: not supported on deferred contexts by this port (use the immediate context)", fn);
+  else
+    dev_->Log(LogLevel::Error, "%s: not allowed on a deferred context", fn);
+  return true;
+}
+
+// A fresh list: its own command pool, secondary buffer, descriptor pools and
+// ring; nothing is bound in a new command buffer.
+void ContextImpl::BeginRecording() {
+  rec_ = std::make_unique<ListRecording>();
+  rec_->ring.Init(dev_);
+  VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pci.queueFamilyIndex = dev_->queueFamily();
+  vkCreateCommandPool(dev_->vk(), &pci, nullptr, &rec_->pool);
+  VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  ai.commandPool = rec_->pool;
+  ai.level = VK_COMMAND_BUFFER_LEVEL_SECONDARY;
+  ai.commandBufferCount = 1;
+  vkAllocateCommandBuffers(dev_->vk(), &ai, &rec_->cmd);
+  // Executed outside rendering scopes (it begins its own): nothing inherited.
+  VkCommandBufferInheritanceInfo inherit{VK_STRUCTURE_TYPE_COMMAND_BUFFER_INHERITANCE_INFO};
+  VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  bi.flags = VK_COMMAND_BUFFER_USAGE_SIMULTANEOUS_USE_BIT;  // a list may run twice in one frame
+  bi.pInheritanceInfo = &inherit;
+  vkBeginCommandBuffer(rec_->cmd, &bi);
+  cmd_ = rec_->cmd;
+  rendering_ = false;
+  labelDepth_ = 0;
+  MarkDirtyAll();
+}
+
+HRESULT ContextImpl::FinishCommandList(BOOL restoreState, CommandList** out) {
+  const HRESULT hr = ValidateFinishCommandList(*dev_, deferred_, out);
+  if (FAILED(hr)) return hr;
+  EndRendering();
+  FlushBarriers();
+  while (labelDepth_ > 0) EndEvent();
+  vkEndCommandBuffer(cmd_);
+  std::unique_ptr<ListRecording> done = std::move(rec_);
+  BeginRecording();
+  if (!restoreState) ClearState();
+  *out = new CommandListImpl(dev_, std::move(done));
+  return S_OK;
+}
+
+// ---------------------------------------------------------------------------
+// Execution on the immediate context
+void ContextImpl::ExecuteCommandList(CommandList* commandList, BOOL restoreState) {
+  if (!ValidateExecuteCommandList(*dev_, deferred_, commandList)) return;
+  auto* list = static_cast<CommandListImpl*>(commandList);
+  ListRecording& r = list->rec();
+  EndRendering();
+  CopyImports(*list);
+  for (const ListSyncEntry& e : r.syncs) {
+    if (e.tex)
+      UseTexture(e.tex, OneSubresource(e.mip, e.layer), e.entry);
+    else
+      UseBuffer(e.buffer, *e.global, e.entry);
+  }
+  FlushBarriers();
+  vkCmdExecuteCommands(cmd_, 1, &r.cmd);
+  for (const ListSyncEntry& e : r.syncs)
+    if (!SameState(e.local, e.initial)) *e.global = e.local;  // the list changed it
+  const uint64_t serial = dev_->CurrentSerial();
+  for (const auto& [use, written] : r.uses) written ? use->Write(serial) : use->Read(serial);
+  list->lastExecuted = serial;
+  dev_->stats.DrawCalls += r.draws;
+  ExportConstants(r);
+  if (!restoreState) ClearState();
+  MarkDirtyAll();  // the secondary buffer left the primary's bindings undefined
+}
+
+// Constant buffers the list reads without writing them hold their contents
+// at execution. A slot still read by an earlier execution on the GPU is
+// overwritten only after it (when the contents differ).
+void ContextImpl::CopyImports(CommandListImpl& list) {
+  ListRecording& r = list.rec();
+  if (r.imports.empty()) return;
+  bool differs = false;
+  for (const ListImport& im : r.imports) {
+    im.buffer->SyncShadow();
+    differs = differs || std::memcmp(im.slot.ptr, im.buffer->shadow(), im.buffer->size()) != 0;
+  }
+  const uint64_t last = list.lastExecuted;
+  if (differs && last && dev_->queue().CompletedSerial() < last) {
+    if (last >= dev_->CurrentSerial()) Flush();
+    dev_->queue().WaitForSerial(last);
+  }
+  for (const ListImport& im : r.imports) std::memcpy(im.slot.ptr, im.buffer->shadow(), im.buffer->size());
+}
+
+// Constant buffers the list wrote hold the list's last contents afterwards,
+// as if its updates had run on this context.
+void ContextImpl::ExportConstants(ListRecording& r) {
+  for (auto& [buffer, slice] : r.slices) {
+    if (!slice.written || !buffer->IsConstantBuffer()) continue;
+    auto* b = const_cast<BufferImpl*>(buffer);  // retained by the list
+    b->SyncShadow();  // drops a stale mark of this context's own discard
+    std::memcpy(b->shadow(), slice.ring.ptr, b->size());
+    b->ShadowChanged();
+  }
+  dirty_ |= kConstants;
+}
+
+// ---------------------------------------------------------------------------
+// Recording: synchronisation state local to the list
+ListSyncEntry& ContextImpl::ListEntry(SyncState* global, const Usage& u, bool* first) {
+  auto [it, added] = rec_->syncIndex.emplace(global, static_cast<uint32_t>(rec_->syncs.size()));
+  *first = added;
+  if (added) {
+    ListSyncEntry e;
+    e.global = global;
+    e.entry = u;
+    e.initial = e.local = StateAfterEntry(u);
+    rec_->syncs.push_back(e);
+  }
+  return rec_->syncs[it->second];
+}
+
+void ContextImpl::UseTextureInList(TextureCore* t, const SubresourceRange& r, const Usage& u) {
+  TextureImage& img = t->Cur();
+  const uint32_t mipCount = t->desc.MipLevels;
+  for (uint32_t l = r.baseLayer; l < r.baseLayer + r.layers; ++l) {
+    for (uint32_t m = r.baseMip; m < r.baseMip + r.mips; ++m) {
+      bool first;
+      ListSyncEntry& e = ListEntry(&img.sync[l * mipCount + m], u, &first);
+      if (first) {  // the immediate context records this barrier at execution
+        e.tex = t;
+        e.mip = m;
+        e.layer = l;
+        continue;
+      }
+      BarrierInfo info;
+      if (Transition(e.local, u, &info)) barriers_.AddImage(img.image, t->aspect, m, l, info);
+    }
+  }
+  if (u.layout != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) dirty_ |= kSrvLayouts;
+}
+
+void ContextImpl::UseBufferInList(VkBuffer buf, SyncState& s, const Usage& u) {
+  bool first;
+  ListSyncEntry& e = ListEntry(&s, u, &first);
+  if (first) {
+    e.buffer = buf;
+    return;
+  }
+  BarrierInfo info;
+  if (!Transition(e.local, u, &info)) return;
+  barriers_.AddBuffer(buf, info);
+  if (u.write) dirty_ |= kVertexBuffers | kIndexBuffer;
+}
+
+void ContextImpl::NoteUseInList(GpuUse& u, bool write) {
+  auto [it, added] = rec_->uses.emplace(&u, write);
+  if (!added) it->second = it->second || write;
+}
+
+template <class T>
+void ContextImpl::Retain(T* object) {
+  if (!object || !rec_->retained.insert(object).second) return;
+  object->AddRef();
+  rec_->held.push_back({object, [](void* p) { static_cast<T*>(p)->Release(); }});
+}
+
+void ContextImpl::RetainInList(Unknown* object) { Retain(object); }
+
+// Every object a draw reads, referenced by the list (D3D11 lists keep them).
+void ContextImpl::RetainDrawState(bool indexed) {
+  for (ShaderStage s : kStages) Retain(state_.stages[s].shader.Get());
+  const InputAssemblerState& ia = state_.ia;
+  Retain(ia.layout.Get());
+  for (uint32_t m = ia.layout ? ia.layout->slotMask : 0; m; m &= m - 1)
+    Retain(ia.vertexBuffers[__builtin_ctz(m)].buffer.Get());
+  if (indexed) Retain(ia.indexBuffer.Get());
+  for (const auto& s : program_->cbs) Retain(state_.stages[s.stage].constantBuffers[s.slot].Get());
+  for (const auto& s : program_->srvs) Retain(state_.stages[s.stage].shaderResources[s.slot].Get());
+  for (const auto& s : program_->samplers) Retain(state_.stages[s.stage].samplers[s.slot].Get());
+  Retain(state_.rs.state.Get());
+  const OutputMergerState& om = state_.om;
+  for (uint32_t i = 0; i < om.numRenderTargets; ++i) Retain(om.renderTargets[i].Get());
+  Retain(om.depthStencilView.Get());
+  Retain(om.blend.Get());
+  Retain(om.depthStencil.Get());
+}
+
+// ---------------------------------------------------------------------------
+// Recording: buffer contents in the list's own ring
+bool ContextImpl::NewListSlice(BufferImpl* b, bool discarded, bool written) {
+  const VkDeviceSize align = b->IsConstantBuffer() ? dev_->uboAlign() : kDynamicAlign;
+  RingAlloc a;
+  if (!rec_->ring.TryAllocate(b->size(), align, &a) && !rec_->ring.Allocate(b->size(), align, &a)) return false;
+  auto [it, added] = rec_->slices.try_emplace(b);
+  it->second = {a, discarded, written};
+  rec_->lastBuffer = b;
+  rec_->lastSlice = a;
+  if (added) Retain(b);
+  return true;
+}
+
+const RingAlloc& ContextImpl::ListCbRing(BufferImpl* b) {
+  ListRecording& r = *rec_;
+  if (r.lastBuffer == b) return r.lastSlice;
+  auto it = r.slices.find(b);
+  if (it == r.slices.end()) {  // read before written in this list: its contents at execution
+    if (!NewListSlice(b, false, false)) return r.lastSlice;
+    r.imports.push_back({b, r.lastSlice});
+    return r.lastSlice;
+  }
+  r.lastBuffer = b;
+  r.lastSlice = it->second.ring;
+  return r.lastSlice;
+}
+
+const RingAlloc& ContextImpl::ListDynRing(const BufferImpl* b) {
+  static const RingAlloc kNone{};
+  auto it = rec_->slices.find(b);
+  return it == rec_->slices.end() ? kNone : it->second.ring;
+}
+
+HRESULT ContextImpl::MapInList(Resource* resource, UINT sub, MAP type, MAPPED_SUBRESOURCE* mapped) {
+  BufferImpl* b = AsBuffer(resource);
+  const auto it = b ? rec_->slices.find(b) : rec_->slices.end();
+  const bool discarded = it != rec_->slices.end() && it->second.discarded;
+  const HRESULT hr = ValidateDeferredMap(*dev_, resource, sub, type, mapped, discarded);
+  if (mapped) *mapped = {};
+  if (FAILED(hr)) return hr;
+  if (type == MAP_WRITE_DISCARD && !NewListSlice(b, true, true)) return E_OUTOFMEMORY;
+  const RingAlloc& a = rec_->slices[b].ring;
+  mapped->pData = a.ptr;
+  mapped->RowPitch = mapped->DepthPitch = b->size();
+  return S_OK;
+}
+
+void ContextImpl::UnmapInList(Resource* resource) {
+  const BufferImpl* b = AsBuffer(resource);
+  if (!b) return;
+  dirty_ |= b->IsConstantBuffer() ? uint32_t(kConstants) : uint32_t(kVertexBuffers | kIndexBuffer);
+}
+
+// A new slice with the whole buffer: the list's latest contents (or the
+// shadow at recording time, for a partial update of a buffer the list did
+// not write yet) under the updated range.
+void ContextImpl::UpdateConstantsInList(BufferImpl* b, const BOX* box, const void* data) {
+  const auto it = rec_->slices.find(b);
+  const uint8_t* base = it != rec_->slices.end() ? it->second.ring.ptr : b->shadow();
+  const UINT lo = box ? box->left : 0, hi = box ? box->right : b->size();
+  std::vector<uint8_t> bytes(base, base + b->size());
+  std::memcpy(bytes.data() + lo, data, hi - lo);
+  if (!NewListSlice(b, false, true)) return;
+  std::memcpy(rec_->lastSlice.ptr, bytes.data(), b->size());
+  dirty_ |= kConstants;
+}
+
+}  // namespace d3dl::impl

@@ -1,0 +1,338 @@
+// drr_rhi_bench --deferred: the frame of RhiRecorder (one Map(WRITE_DISCARD)
+// of a constant buffer + Draw per draw) recorded on deferred contexts, all
+// draws on one worker thread against half of them on each of two worker
+// threads at the same time. Timed (wall clock): the recording on the workers
+// up to FinishCommandList and the joins; not timed: ExecuteCommandList,
+// submission and the wait. The two benchmarks run in alternating pairs so
+// that load from other processes hits both alike; the ratio of each pair and
+// their median are printed.
+//
+//   drr_rhi_bench --deferred [--draws N] [--pairs K] [google benchmark flags]
+//   drr_rhi_bench --deferred --smoke     the 1- and 2-thread images equal, validation-clean
+#include <benchmark/benchmark.h>
+#include <time.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "Recorder.h"
+#include "d3dl/D3DLike.h"
+#include "d3dl/ShaderCompiler.h"
+
+namespace drrbench {
+namespace {
+
+using d3dl::ComPtr;
+constexpr uint32_t kMaxThreads = 2;
+
+uint64_t g_messages = 0;
+void OnLog(d3dl::LogLevel level, const char* message, void*) {
+  if (level == d3dl::LogLevel::Validation || level == d3dl::LogLevel::Error) {
+    ++g_messages;
+    std::fprintf(stderr, "rhi: %s\n", message);
+  }
+}
+
+double Seconds(clockid_t clock) {
+  timespec ts;
+  clock_gettime(clock, &ts);
+  return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
+}
+
+class DeferredRecorder {
+ public:
+  ~DeferredRecorder() {
+    if (device_) device_->WaitIdle();
+  }
+
+  bool Init(std::string* error) {
+    d3dl::DEVICE_CREATE_DESC dd;
+    dd.Log = OnLog;
+    dd.EnableWindowSurfaces = false;
+    dd.ApplicationName = "rhi-deferred-benchmark";
+    if (d3dl::FAILED(d3dl::CreateDevice(&dd, device_.GetAddressOf(), context_.GetAddressOf()))) {
+      *error = "CreateDevice failed";
+      return false;
+    }
+    d3dl::TEXTURE2D_DESC td;
+    td.Width = td.Height = kTargetSize;
+    td.Format = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM;
+    td.BindFlags = d3dl::BIND_RENDER_TARGET;
+    d3dl::TEXTURE2D_DESC sd = td;
+    sd.BindFlags = 0;
+    sd.Usage = d3dl::USAGE_STAGING;
+    sd.CPUAccessFlags = d3dl::CPU_ACCESS_READ;
+    d3dl::BUFFER_DESC bd;
+    bd.ByteWidth = sizeof(DrawConstants);
+    bd.Usage = d3dl::USAGE_DYNAMIC;
+    bd.BindFlags = d3dl::BIND_CONSTANT_BUFFER;
+    bd.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
+    const std::string dir = BenchShaderDir();
+    std::vector<uint32_t> vs, ps;
+    if (d3dl::FAILED(d3dl::ReadSpirvFile(dir + "/BenchDraw.vs.spv", &vs, error)) ||
+        d3dl::FAILED(d3dl::ReadSpirvFile(dir + "/BenchDraw.ps.spv", &ps, error)))
+      return false;
+    d3dl::RASTERIZER_DESC rd;
+    rd.CullMode = d3dl::CULL_NONE;
+    bool ok = d3dl::SUCCEEDED(device_->CreateTexture2D(&td, nullptr, target_.GetAddressOf())) &&
+              d3dl::SUCCEEDED(device_->CreateRenderTargetView(target_.Get(), nullptr, rtv_.GetAddressOf())) &&
+              d3dl::SUCCEEDED(device_->CreateTexture2D(&sd, nullptr, staging_.GetAddressOf())) &&
+              d3dl::SUCCEEDED(device_->CreateBuffer(&bd, nullptr, constants_.GetAddressOf())) &&
+              d3dl::SUCCEEDED(device_->CreateVertexShader(vs.data(), vs.size() * 4, vs_.GetAddressOf())) &&
+              d3dl::SUCCEEDED(device_->CreatePixelShader(ps.data(), ps.size() * 4, ps_.GetAddressOf())) &&
+              d3dl::SUCCEEDED(device_->CreateRasterizerState(&rd, rs_.GetAddressOf()));
+    for (auto& c : deferred_) ok = ok && d3dl::SUCCEEDED(device_->CreateDeferredContext(0, c.GetAddressOf()));
+    if (!ok) *error = "creating the benchmark resources failed (shaders in " + dir + ")";
+    return ok;
+  }
+
+  // Timed part: draws [0, n) split into `threads` contiguous ranges, each
+  // recorded into its own list by its own worker thread. Returns the CPU
+  // seconds the workers spent (all together) and the longest worker's wall
+  // time from its start to its FinishCommandList (no thread start-up).
+  struct Cost {
+    double cpu, wall;
+  };
+  Cost Record(uint32_t n, uint32_t threads) {
+    std::thread workers[kMaxThreads];
+    double cpu[kMaxThreads] = {}, wall[kMaxThreads] = {};
+    for (uint32_t t = 0; t < threads; ++t)
+      workers[t] = std::thread([this, n, t, threads, &cpu, &wall] {
+        const double start = Seconds(CLOCK_MONOTONIC);
+        RecordRange(t, n * t / threads, n * (t + 1) / threads, n);
+        wall[t] = Seconds(CLOCK_MONOTONIC) - start;
+        cpu[t] = Seconds(CLOCK_THREAD_CPUTIME_ID);
+      });
+    for (uint32_t t = 0; t < threads; ++t) workers[t].join();
+    listCount_ = threads;
+    return {cpu[0] + cpu[1], std::max(wall[0], wall[1])};
+  }
+
+  // Not timed: the lists in draw order after a clear, then the copy for ReadBack.
+  void ExecuteAndWait() {
+    const float black[4] = {0, 0, 0, 0};
+    context_->ClearRenderTargetView(rtv_.Get(), black);
+    for (uint32_t t = 0; t < listCount_; ++t) context_->ExecuteCommandList(lists_[t].Get(), 0);
+    context_->CopyResource(staging_.Get(), target_.Get());
+    context_->Flush();
+    device_->WaitIdle();
+    for (auto& l : lists_) l = {};
+  }
+
+  std::vector<uint8_t> ReadBack() {
+    d3dl::MAPPED_SUBRESOURCE m;
+    std::vector<uint8_t> pixels(kTargetSize * kTargetSize * 4);
+    if (d3dl::FAILED(context_->Map(staging_.Get(), 0, d3dl::MAP_READ, 0, &m))) return {};
+    for (uint32_t y = 0; y < kTargetSize; ++y)
+      std::memcpy(&pixels[y * kTargetSize * 4], static_cast<const uint8_t*>(m.pData) + y * m.RowPitch,
+                  kTargetSize * 4);
+    context_->Unmap(staging_.Get(), 0);
+    return pixels;
+  }
+
+  uint64_t Messages() const {
+    d3dl::DEVICE_STATS stats;
+    device_->GetStats(&stats);
+    return stats.ValidationMessages + g_messages;
+  }
+
+ private:
+  void RecordRange(uint32_t t, uint32_t first, uint32_t last, uint32_t n) {
+    d3dl::DeviceContext* ctx = deferred_[t].Get();
+    ctx->OMSetRenderTargets(1, rtv_.GetAddressOf(), nullptr);
+    d3dl::VIEWPORT vp{0, 0, float(kTargetSize), float(kTargetSize), 0, 1};
+    ctx->RSSetViewports(1, &vp);
+    ctx->RSSetState(rs_.Get());
+    ctx->IASetInputLayout(nullptr);
+    ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    ctx->VSSetShader(vs_.Get());
+    ctx->PSSetShader(ps_.Get());
+    ctx->VSSetConstantBuffers(0, 1, constants_.GetAddressOf());
+    for (uint32_t i = first; i < last; ++i) {
+      d3dl::MAPPED_SUBRESOURCE m;
+      ctx->Map(constants_.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &m);
+      const DrawConstants c = ConstantsForDraw(i, n);
+      std::memcpy(m.pData, &c, sizeof(c));
+      ctx->Unmap(constants_.Get(), 0);
+      ctx->Draw(3, 0);
+    }
+    ctx->FinishCommandList(0, lists_[t].ReleaseAndGetAddressOf());
+  }
+
+  ComPtr<d3dl::Device> device_;
+  ComPtr<d3dl::DeviceContext> context_;
+  ComPtr<d3dl::DeviceContext> deferred_[kMaxThreads];
+  ComPtr<d3dl::CommandList> lists_[kMaxThreads];
+  uint32_t listCount_ = 0;
+  ComPtr<d3dl::Texture2D> target_, staging_;
+  ComPtr<d3dl::RenderTargetView> rtv_;
+  ComPtr<d3dl::Buffer> constants_;
+  ComPtr<d3dl::VertexShader> vs_;
+  ComPtr<d3dl::PixelShader> ps_;
+  ComPtr<d3dl::RasterizerState> rs_;
+};
+
+std::unique_ptr<DeferredRecorder> g_recorder;  // reset before returning (see RecordBenchmark.cpp)
+
+DeferredRecorder& Recorder() {
+  if (!g_recorder) {
+    g_recorder = std::make_unique<DeferredRecorder>();
+    std::string error;
+    if (!g_recorder->Init(&error)) {
+      std::fprintf(stderr, "deferred recorder: %s\n", error.c_str());
+      g_recorder.reset();
+      std::exit(1);
+    }
+  }
+  return *g_recorder;
+}
+
+void RecordOnThreads(benchmark::State& state, uint32_t n, uint32_t threads) {
+  DeferredRecorder& rec = Recorder();
+  double workerCpu = 0, workerWall = 0;
+  for (auto _ : state) {
+    const DeferredRecorder::Cost cost = rec.Record(n, threads);
+    workerCpu += cost.cpu;
+    workerWall += cost.wall;
+    state.PauseTiming();
+    rec.ExecuteAndWait();
+    state.ResumeTiming();
+  }
+  state.SetItemsProcessed(int64_t(state.iterations()) * n);
+  // CPU time of the recording threads per iteration: equal for 1 and 2
+  // threads when the contexts do not contend (whatever the wall clock says).
+  state.counters["worker_cpu_ms"] = 1e3 * workerCpu / double(state.iterations());
+  state.counters["worker_wall_ms"] = 1e3 * workerWall / double(state.iterations());
+}
+
+// Per registered run: real time per iteration (thread start-up, recording,
+// joins) and the workers' own recording time (worker_wall_ms).
+class PairReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& run : runs) {
+      if (run.run_type != Run::RT_Iteration) continue;
+      times[run.run_name.function_name] = run.GetAdjustedRealTime();
+      const auto w = run.counters.find("worker_wall_ms");
+      if (w != run.counters.end()) recording[run.run_name.function_name] = w->second.value;
+    }
+  }
+  std::map<std::string, double> times, recording;
+};
+
+struct RatioSummary {
+  double median, min, max;
+};
+RatioSummary Summarise(std::vector<double> r) {
+  std::sort(r.begin(), r.end());
+  const size_t m = r.size();
+  return {m % 2 ? r[m / 2] : 0.5 * (r[m / 2 - 1] + r[m / 2]), r.front(), r.back()};
+}
+
+int Smoke(uint32_t draws) {
+  DeferredRecorder& rec = Recorder();
+  rec.Record(draws, 1);
+  rec.ExecuteAndWait();
+  const auto one = rec.ReadBack();
+  rec.Record(draws, 2);
+  rec.ExecuteAndWait();
+  const auto two = rec.ReadBack();
+  size_t differing = 0, lit = 0;
+  for (size_t i = 0; i + 3 < one.size() && one.size() == two.size(); i += 4) {
+    differing += std::memcmp(&one[i], &two[i], 4) != 0;
+    lit += one[i + 3] != 0;
+  }
+  const uint64_t messages = rec.Messages();
+  std::printf("deferred smoke: %u draws, %zu lit pixels, %zu differing pixels, %llu messages\n", draws, lit,
+              differing, static_cast<unsigned long long>(messages));
+  const bool ok = !one.empty() && one.size() == two.size() && differing == 0 && lit > 0 && messages == 0;
+  std::printf("%d passed, %d failed\n", ok ? 1 : 0, ok ? 0 : 1);
+  return ok ? 0 : 1;
+}
+
+void PrintPairs(const PairReporter& reporter, int pairs, int64_t draws) {
+  std::vector<double> ratios, recordingRatios;
+  double sum1 = 0, sum2 = 0;
+  for (int k = 0; k < pairs; ++k) {
+    const std::string one = "BM_Deferred1Thread/pair:" + std::to_string(k);
+    const std::string two = "BM_Deferred2Threads/pair:" + std::to_string(k);
+    if (!reporter.times.count(one) || !reporter.times.count(two) || reporter.times.at(one) <= 0) continue;
+    const double t1 = reporter.times.at(one), t2 = reporter.times.at(two);
+    const double r1 = reporter.recording.count(one) ? reporter.recording.at(one) : 0;
+    const double r2 = reporter.recording.count(two) ? reporter.recording.at(two) : 0;
+    ratios.push_back(t2 / t1);
+    if (r1 > 0) recordingRatios.push_back(r2 / r1);
+    sum1 += t1;
+    sum2 += t2;
+    std::printf("pair %d: 1 thread %.3f ms, 2 threads %.3f ms, ratio %.3f; recording alone %.3f / %.3f ms, ratio %.3f\n",
+                k, t1, t2, t2 / t1, r1, r2, r1 > 0 ? r2 / r1 : 0.0);
+  }
+  if (ratios.empty()) return;
+  const RatioSummary all = Summarise(ratios);
+  std::printf("ratio 2-thread / 1-thread deferred recording (%lld draws, %zu pairs, hardware threads %u): "
+              "median %.3f, min %.3f, max %.3f, of the totals %.3f\n",
+              static_cast<long long>(draws), ratios.size(), std::thread::hardware_concurrency(), all.median,
+              all.min, all.max, sum2 / sum1);
+  if (recordingRatios.empty()) return;
+  const RatioSummary rec = Summarise(recordingRatios);
+  std::printf("ratio of the workers' recording alone (without thread start-up and join): median %.3f, "
+              "min %.3f, max %.3f\n", rec.median, rec.min, rec.max);
+}
+
+}  // namespace
+
+int DeferredMain(int argc, char** argv) {
+  int64_t draws = 10000;
+  int pairs = 10;
+  bool smoke = false;
+  std::vector<char*> args{argv[0]};
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--deferred") == 0) continue;
+    if (std::strcmp(argv[i], "--smoke") == 0) {
+      smoke = true;
+    } else if (std::strcmp(argv[i], "--draws") == 0 && i + 1 < argc) {
+      draws = std::strtoll(argv[++i], nullptr, 10);
+    } else if (std::strcmp(argv[i], "--pairs") == 0 && i + 1 < argc) {
+      pairs = std::atoi(argv[++i]);
+    } else {
+      args.push_back(argv[i]);
+    }
+  }
+  if (draws < 2 || draws > 1000000 || pairs < 1 || pairs > 1000) {
+    std::fprintf(stderr, "--draws expects [2, 1000000], --pairs [1, 1000]\n");
+    return 2;
+  }
+  if (smoke) {
+    const int rc = Smoke(400);
+    g_recorder.reset();
+    return rc;
+  }
+  // Alternating pairs; wall-clock time, as the work runs on worker threads.
+  const auto count = static_cast<uint32_t>(draws);
+  for (int k = 0; k < pairs; ++k) {
+    const std::string suffix = "/pair:" + std::to_string(k);
+    benchmark::RegisterBenchmark(("BM_Deferred1Thread" + suffix).c_str(),
+                                 [count](benchmark::State& s) { RecordOnThreads(s, count, 1); })
+        ->Unit(benchmark::kMillisecond)->UseRealTime();
+    benchmark::RegisterBenchmark(("BM_Deferred2Threads" + suffix).c_str(),
+                                 [count](benchmark::State& s) { RecordOnThreads(s, count, 2); })
+        ->Unit(benchmark::kMillisecond)->UseRealTime();
+  }
+  int n = static_cast<int>(args.size());
+  benchmark::Initialize(&n, args.data());
+  PairReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  g_recorder.reset();
+  PrintPairs(reporter, pairs, draws);
+  benchmark::Shutdown();
+  return 0;
+}
+
+}  // namespace drrbench
