@@ -23,6 +23,20 @@ constexpr FilterInfo kFilters[] = {
      true},
     {"Bicubic B-spline", "bicubic-bspline", "PostProcessDynamic_BicubicBSplinePS", nullptr, "ResolveBicubicBSpline",
      "ResolveBicubicBSpline", false, false},
+    {"Upscale 0: Nearest", "upscale-nearest", "UpscaleSpatial_NearestPS", nullptr, "UpscaleNearest",
+     "UpscaleNearest", false, false},
+    {"Upscale 1: Bilinear", "upscale-bilinear", "UpscaleSpatial_BilinearPS", nullptr, "UpscaleBilinear",
+     "UpscaleBilinear", false, false},
+    {"Upscale 2: Directional", "upscale-directional", "UpscaleSpatial_DirectionalPS", nullptr,
+     "UpscaleDirectional", "UpscaleDirectional", false, false},
+    {"Upscale 3: Catmull-Rom", "upscale-catmull-rom", "UpscaleSpatial_CatmullRomPS", nullptr, "UpscaleCatmullRom",
+     "UpscaleCatmullRom", false, false},
+    {"Upscale 4: Lanczos 3", "upscale-lanczos3", "UpscaleSpatial_Lanczos3PS", nullptr, "UpscaleLanczos3",
+     "UpscaleLanczos3", false, false},
+    {"Upscale 5: Gauss. unsharp", "upscale-gaussian-unsharp", "UpscaleSpatial_GaussianUnsharpPS", nullptr,
+     "UpscaleGaussianUnsharp", "UpscaleGaussianUnsharp", false, false},
+    {"Temporal Upsample", "taau", "UpscaleTemporal_TemporalUpsamplePS", nullptr, "TemporalUpsample",
+     "TemporalUpsample", false, false},
 };
 static_assert(std::size(kFilters) == size_t(Filter::Count));
 constexpr FilterInfo kUnknown{"?", "?", kPoint, nullptr, "ResolvePoint", "ResolvePoint", false, false};

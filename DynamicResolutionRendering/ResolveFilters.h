@@ -21,6 +21,15 @@ enum class Filter : int {
   TAANoiseOffset,
   TAABasic,
   BicubicBSpline,  // port addition: a true cubic B-spline (the original's Bicubic is not one)
+  // Port additions: the primary spatial upscale qualities of r.Upscale.Quality
+  // 0..5 (Docs/Upscaling.md), in that order, then the temporal upsample.
+  UpscaleNearest,
+  UpscaleBilinear,
+  UpscaleDirectional,
+  UpscaleCatmullRom,
+  UpscaleLanczos3,
+  UpscaleGaussianUnsharp,
+  TAAU,  // temporal upsample: output-resolution history (FramePasses::TemporalUpsample)
   Count
 };
 
@@ -39,5 +48,12 @@ const FilterInfo& GetFilterInfo(Filter f);
 inline const char* FilterName(Filter f) { return GetFilterInfo(f).name; }
 inline const char* FilterOption(Filter f) { return GetFilterInfo(f).option; }
 inline bool IsTAA(Filter f) { return GetFilterInfo(f).temporal; }
+
+// r.Upscale.Quality: the engine's numbering 0..5 (its documentation's 1..6).
+constexpr int kUpscaleQualities = 6;
+inline Filter UpscaleQualityFilter(int quality) { return Filter(int(Filter::UpscaleNearest) + quality); }
+// The temporal upsample keeps its own history at output resolution; it is
+// not one of the original's TAA modes (IsTAA is false for it).
+inline bool IsTemporalUpsample(Filter f) { return f == Filter::TAAU; }
 
 }  // namespace drr
