@@ -16,10 +16,16 @@ void UnbindPixelSRVs(d3dl::DeviceContext* ctx) {
 
 // Upscaling tuning (Docs/Upscaling.md).
 constexpr float kUnsharpAmount = 0.5f;          // Directional and Gaussian Unsharp
-constexpr float kHistoryWeightStill = 32.0f;    // TAAU: most frames' worth of history, still pixels
-constexpr float kHistoryWeightMoving = 8.0f;    // ... pixels moving 2 output pixels a frame or more
-constexpr float kClipGammaStill = 2.0f;         // TAAU: neighbourhood box half-size in sigmas
-constexpr float kClipGammaMoving = 1.0f;
+// TAAU, tuned on the Arena's moving cinematic camera at 0.5 and 0.71
+// (Docs/Upscaling.md): history is worth most where nothing moves; each
+// resampling of a moving history blurs it, so there the current frame counts more.
+constexpr float kHistoryWeightStill = 32.0f;    // most frames' worth of history, still pixels
+constexpr float kHistoryWeightMoving = 1.5f;    // ... pixels moving kMotionPixels a frame or more
+constexpr float kMotionPixels = 0.25f;          // output pixels per frame counted as fully moving
+constexpr float kClipGammaStill = 2.0f;         // neighbourhood box half-size in sigmas
+constexpr float kClipGammaMoving = 1.25f;
+constexpr float kSampleSigmaStill = 0.4f;       // output pixels: sharp where history accumulates
+constexpr float kSampleSigmaMoving = 0.55f;     // smoother where the current frame dominates
 
 float RadicalInverse(uint32_t i, uint32_t base) {
   float f = 1.0f, r = 0.0f;
@@ -233,7 +239,8 @@ void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dyn, glm::
   const glm::vec2 jitterPx = h.jitterCurr * glm::vec2(s.sceneViewport.Width, s.sceneViewport.Height);
   s.uc = {{out.x, out.y}, {1.0f / out.x, 1.0f / out.y}, {s.taau ? jitterPx.x : 0.0f, s.taau ? jitterPx.y : 0.0f},
           s.historyValid ? 1.0f : 0.0f, kUnsharpAmount, {out.x, out.y}, {1.0f / out.x, 1.0f / out.y},
-          {kHistoryWeightStill, kHistoryWeightMoving, kClipGammaStill, kClipGammaMoving}};
+          {kHistoryWeightStill, kHistoryWeightMoving, kClipGammaStill, kClipGammaMoving},
+          {kSampleSigmaStill, kSampleSigmaMoving}, kMotionPixels, 0.0f};
 }
 
 glm::vec2 UpsampleJitter(uint32_t index) {

@@ -51,8 +51,13 @@ struct UpscaleConstants {
   float sharpness;        // unsharp amount of Directional and Gaussian Unsharp
   float sourceSize[2], invSourceSize[2];  // the secondary upscale's source
   float temporalParams[4];  // max history weight still / moving, clip gamma still / moving
+  // TAAU: a sample's weight falls as exp(-d^2 / 2 sigma^2), d in output
+  // pixels, sigma still / moving; and the output pixels per frame counted as fully moving.
+  float sampleSigma[2];
+  float motionPixels;
+  float pad;
 };
-static_assert(sizeof(UpscaleConstants) == 64);
+static_assert(sizeof(UpscaleConstants) == 80);
 
 // TAAU's sub-pixel jitter: Halton(2, 3) points 1..kUpsampleJitterLength,
 // centred on 0 (dynamic pixels, each axis in (-0.5, 0.5)).

@@ -56,4 +56,13 @@ inline Filter UpscaleQualityFilter(int quality) { return Filter(int(Filter::Upsc
 // not one of the original's TAA modes (IsTAA is false for it).
 inline bool IsTemporalUpsample(Filter f) { return f == Filter::TAAU; }
 
+// The document's table of primary screen percentages: what each range is
+// for. The sample's scales run from 1 % to 200 % (with super sampling);
+// outside the table's 50..200 % the range says so.
+struct ScreenPercentageRange {
+  double lowPercent, highPercent;  // [low, high)
+  const char* use;
+};
+const ScreenPercentageRange& ScreenPercentageRangeOf(double scale);
+
 }  // namespace drr

@@ -15,6 +15,9 @@ cbuffer cbUpscale : register(b1) {
   float2 g_SourceSize;     // secondary pass: its source's size in pixels
   float2 g_InvSourceSize;
   float4 g_TemporalParams; // x, y: max history weight still / moving; z, w: clip gamma still / moving
+  float2 g_SampleSigma;    // TAAU: a sample's weight by its distance (output pixels), still / moving
+  float g_MotionPixels;    // TAAU: output pixels per frame counted as fully moving
+  float g_UpscalePad;
 };
 
 Texture2D<float> g_DepthCurr : register(t6);  // TAAU: the dynamic depth (closest-depth velocity)
