@@ -2,14 +2,19 @@
 // DRR_UPSCALE_MEASURE=1). On the Arena's cinematic camera, still (fixed time
 // 12 s) and moving (1/30 s per frame, captured at 12 s), it prints PSNR
 // against the 4x4 super-sampled reference of the captured time (as the
-// bench's) and the median GPU frame time as a ratio to point at the same
-// scale in the same run. Motion blur off, as the bench's ghosting rows.
+// bench's) and the GPU frame time as a ratio to point at the same scale and
+// to native in the same run: each configuration's median over its frames,
+// the smallest of kRounds interleaved rounds (other work on a shared CPU
+// rasteriser only ever adds time). Motion blur off, as the bench's ghosting rows.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <map>
+#include <string>
+#include <vector>
 
 #include "SampleTestKit.h"
 #include "analysis/ImageMetrics.h"
@@ -19,6 +24,7 @@ namespace {
 
 constexpr uint32_t kW = 640, kH = 360;
 constexpr int kFrames = 32;
+constexpr int kRounds = 3;
 constexpr double kCapture = 12.0, kStep = 1.0 / 30.0;
 
 ImageF ToF(const Image& img) { return ImageFromRGBA8(img.pixels.data(), img.width, img.height, img.width * 4); }
@@ -86,19 +92,31 @@ TEST(UpscaleMeasure, ArenaCinematic) {
   const char* only = std::getenv("DRR_UPSCALE_ONLY");
   for (bool moving : {false, true}) {
     if (only && !moving) continue;
+    std::vector<Result> results(std::size(configs));
+    for (int round = 0; round < kRounds; ++round)
+      for (size_t i = 0; i < std::size(configs); ++i) {
+        const Config& c = configs[i];
+        if (only && std::string(c.name) != only && c.filter != Filter::Point) continue;
+        Options o = Base(moving);
+        o.filter = c.filter;
+        o.dynamicResolution = c.dynamic;
+        o.scaleX = o.scaleY = c.scale;
+        const Result r = Measure(o, ref);
+        results[i].psnr = r.psnr;
+        results[i].gpuMs = round == 0 ? r.gpuMs : std::min(results[i].gpuMs, r.gpuMs);
+      }
     std::map<float, double> pointMs;
     double nativeMs = 0;
-    std::printf("\n%s camera, %ux%u, PSNR against the 4x4 reference, GPU frame ms (median):\n",
-                moving ? "moving" : "still", kW, kH);
-    for (const Config& c : configs) {
+    for (size_t i = 0; i < std::size(configs); ++i) {
+      if (!configs[i].dynamic) nativeMs = results[i].gpuMs;
+      if (configs[i].filter == Filter::Point && configs[i].dynamic) pointMs[configs[i].scale] = results[i].gpuMs;
+    }
+    std::printf("\n%s camera, %ux%u, PSNR against the 4x4 reference, GPU frame ms (min of %d medians):\n",
+                moving ? "moving" : "still", kW, kH, kRounds);
+    for (size_t i = 0; i < std::size(configs); ++i) {
+      const Config& c = configs[i];
       if (only && std::string(c.name) != only && c.filter != Filter::Point) continue;
-      Options o = Base(moving);
-      o.filter = c.filter;
-      o.dynamicResolution = c.dynamic;
-      o.scaleX = o.scaleY = c.scale;
-      const Result r = Measure(o, ref);
-      if (!c.dynamic) nativeMs = r.gpuMs;
-      if (c.filter == Filter::Point && c.dynamic) pointMs[c.scale] = r.gpuMs;
+      const Result& r = results[i];
       const double point = pointMs.count(c.scale) ? pointMs[c.scale] : r.gpuMs;
       std::printf("  %-20s scale %.2f  PSNR %6.2f dB  GPU %7.3f ms  x%.2f of point  x%.2f of native\n", c.name,
                   c.scale, r.psnr, r.gpuMs, r.gpuMs / point, nativeMs > 0 ? r.gpuMs / nativeMs : 1.0);

@@ -269,3 +269,44 @@ TEST_F(UpscaleTaau, ScaleChangeKeepsTheHistory) {
 
 }  // namespace
 }  // namespace drr
+
+namespace drr {
+namespace {
+
+// The scene colour of TAAU's first frame (jitter 0 of its sequence).
+Image TaauSceneColour(float scale, bool autoBias, double userBias) {
+  Options o = Base(Filter::TAAU, scale);
+  o.autoMipBias = autoBias;
+  o.mipBias = userBias;
+  Sample s;
+  std::string err;
+  EXPECT_EQ(s.Init(o, &err), 0) << err;
+  testkit::RenderAndCapture(s, 1);
+  Image img = s.CapturedSceneColor();
+  EXPECT_EQ(s.ValidationMessages(), 0u);
+  s.Shutdown();
+  return img;
+}
+
+// The automatic view mip bias is log2(screen percentage) + the user's: a user
+// bias of -log2(scale) cancels it exactly (the same image as without it),
+// while the automatic bias alone, or half of it cancelled at 0.25, samples
+// other (finer) mips.
+TEST(UpscaleMipBias, FollowsLog2OfTheScale) {
+  for (float scale : {0.5f, 0.25f}) {
+    const double log2Scale = std::log2(double(scale));
+    const Image unbiased = TaauSceneColour(scale, false, 0.0);
+    const Image cancelled = TaauSceneColour(scale, true, -log2Scale);
+    const Image automatic = TaauSceneColour(scale, true, 0.0);
+    EXPECT_EQ(testkit::Compare(cancelled, unbiased).maxAbs, 0) << scale;
+    EXPECT_GT(testkit::Compare(automatic, unbiased).differing, 100u) << "log2(" << scale << ") samples finer mips";
+    if (scale == 0.25f) {
+      const Image half = TaauSceneColour(scale, true, -0.5 * log2Scale);  // total bias -1
+      EXPECT_GT(testkit::Compare(half, unbiased).differing, 100u);
+      EXPECT_GT(testkit::Compare(half, automatic).differing, 100u);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace drr
