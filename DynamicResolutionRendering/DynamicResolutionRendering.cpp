@@ -176,6 +176,7 @@ RenderTargetPlan Sample::Plan() const {
                      m_Options.fixes.Has(Fix::SrgbTargets), m_Device.Width(), m_Device.Height()};
   // Upscaling (Docs/Upscaling.md): TAAU's history and the secondary upscale's output size.
   p.taau = m_Options.dynamicResolution && IsTemporalUpsample(m_Options.filter);
+  p.sharpenPass = m_Options.dynamicResolution && HasSharpenPass(m_Options.filter);
   const double secondary = m_Options.dynamicResolution ? m_Options.secondaryScreenPercentage / 100.0 : 1.0;
   p.outputW = std::max(1u, uint32_t(std::lround(m_Device.Width() * secondary)));
   p.outputH = std::max(1u, uint32_t(std::lround(m_Device.Height() * secondary)));

@@ -42,6 +42,7 @@ struct FramePasses::Shaders {
   d3dl::ComPtr<d3dl::VertexShader> dynamicVS, fullVS;
   d3dl::ComPtr<d3dl::PixelShader> clear, clearVelocity, motionBlur, fullClear, fullClearVelocity, fullMotionBlur;
   d3dl::ComPtr<d3dl::PixelShader> secondary;  // the secondary spatial upscale
+  d3dl::ComPtr<d3dl::PixelShader> sharpen;    // after the edge-adaptive upscale
   std::map<std::string, d3dl::ComPtr<d3dl::PixelShader>> resolve;  // the filters' (ResolveFilters.cpp)
 
   struct VS {
@@ -62,6 +63,7 @@ struct FramePasses::Shaders {
       {"PostProcess_ClearVelocityPS", &Shaders::fullClearVelocity},
       {"PostProcess_MotionBlurPS", &Shaders::fullMotionBlur},
       {"UpscaleSpatial_SecondaryPS", &Shaders::secondary},
+      {"UpscaleSpatial_SharpenPS", &Shaders::sharpen},
   };
 };
 
@@ -369,8 +371,15 @@ d3dl::PixelShader* FramePasses::ResolveShader(const FrameSetup& s, const char** 
 void FramePasses::Scale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb) {
   m_Timers.scale.Start(ctx);
   if (s.dynamic) {
-    if (s.taau) TemporalUpsample(ctx, s, rts, bb);
-    else Resolve(ctx, s, rts, s.secondary ? rts[RT::UpscaleOutput].rtv.Get() : bb.rtv);
+    d3dl::RenderTargetView* out = s.secondary ? rts[RT::UpscaleOutput].rtv.Get() : bb.rtv;
+    if (s.taau) {
+      TemporalUpsample(ctx, s, rts, bb);
+    } else if (HasSharpenPass(s.filter)) {
+      Resolve(ctx, s, rts, rts[RT::UpscaleSharpenInput].rtv.Get());
+      Sharpen(ctx, s, rts, out);
+    } else {
+      Resolve(ctx, s, rts, out);
+    }
     if (s.secondary) SecondaryUpscale(ctx, s, rts, bb);
   }
   m_Timers.scale.Stop(ctx);
@@ -414,6 +423,22 @@ void FramePasses::Resolve(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderT
   DrawFullScreen(ctx, m_Shaders->dynamicVS.Get(), ps);
   UnbindPixelSRVs(ctx);
   CountPass(pass);
+  ctx->EndEvent();
+}
+
+// Contrast-limited sharpening of the edge-adaptive upscale's output.
+void FramePasses::Sharpen(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
+                          d3dl::RenderTargetView* target) {
+  ctx->BeginEvent("Sharpen");
+  ctx->OMSetRenderTargets(1, &target, nullptr);
+  ctx->RSSetViewports(1, &s.outputViewport);
+  SetConstants(ctx, &s.dc, sizeof s.dc);
+  SetUpscaleConstants(ctx, s.uc);
+  d3dl::ShaderResourceView* source = rts[RT::UpscaleSharpenInput].srv.Get();
+  ctx->PSSetShaderResources(0, 1, &source);
+  DrawFullScreen(ctx, m_Shaders->dynamicVS.Get(), m_Shaders->sharpen.Get());
+  UnbindPixelSRVs(ctx);
+  CountPass("Sharpen");
   ctx->EndEvent();
 }
 

@@ -141,6 +141,7 @@ class FramePasses {
   // Upscaling passes, run by Scale (Docs/Upscaling.md).
   void TemporalUpsample(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb);
   void SecondaryUpscale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb);
+  void Sharpen(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, d3dl::RenderTargetView* target);
 
   FrameTimers& Timers() { return m_Timers; }
   ZoomBox& GetZoomBox() { return m_ZoomBox; }

@@ -25,6 +25,7 @@ constexpr TargetInfo kTargets[] = {
     {"upscale history[0]", d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT, false, true},
     {"upscale history[1]", d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT, false, true},
     {"upscale output", kColor, false, true},
+    {"upscale sharpen input", kColor, false, true},
 };
 // TAAU reads the dynamic depth: typeless, with a depth and a float view.
 constexpr d3dl::DXGI_FORMAT kReadableDepth = d3dl::DXGI_FORMAT_R32_TYPELESS;
@@ -104,6 +105,7 @@ bool RenderTargetSet::Needed(RT rt, const RenderTargetPlan& p) {
     if (!p.dynamic) return false;
     // TAAU writes its history; the secondary upscale reads it, or the primary spatial upscale's output.
     if (rt == RT::UpscaleOutput) return p.Secondary() && !p.taau;
+    if (rt == RT::UpscaleSharpenInput) return p.sharpenPass;
     return p.taau;
   }
   if (kTargets[int(rt)].dynamic != p.dynamic) return false;

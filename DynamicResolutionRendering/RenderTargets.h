@@ -44,6 +44,7 @@ enum class RT : int {
   UpscaleHistory0,
   UpscaleHistory1,
   UpscaleOutput,
+  UpscaleSharpenInput,  // the edge-adaptive upscale's output, read by its sharpening pass
   Count
 };
 
@@ -54,7 +55,7 @@ struct RenderTargetPlan {
   uint32_t backBufferW = 0, backBufferH = 0;
   // Upscaling (Docs/Upscaling.md): TAAU on, and the output size of the primary
   // upscale (the back buffer's times the secondary screen percentage).
-  bool taau = false;
+  bool taau = false, sharpenPass = false;
   uint32_t outputW = 0, outputH = 0;
   bool Secondary() const { return outputW != 0 && (outputW != backBufferW || outputH != backBufferH); }
   bool operator==(const RenderTargetPlan&) const = default;

@@ -37,6 +37,8 @@ constexpr FilterInfo kFilters[] = {
      "UpscaleGaussianUnsharp", "UpscaleGaussianUnsharp", false, false},
     {"Temporal Upsample", "taau", "UpscaleTemporal_TemporalUpsamplePS", nullptr, "TemporalUpsample",
      "TemporalUpsample", false, false},
+    {"Edge-adaptive + sharpen", "upscale-edge-adaptive", "UpscaleSpatial_EdgeAdaptivePS", nullptr,
+     "UpscaleEdgeAdaptive", "UpscaleEdgeAdaptive", false, false},
 };
 static_assert(std::size(kFilters) == size_t(Filter::Count));
 constexpr FilterInfo kUnknown{"?", "?", kPoint, nullptr, "ResolvePoint", "ResolvePoint", false, false};

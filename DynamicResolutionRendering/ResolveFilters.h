@@ -30,6 +30,7 @@ enum class Filter : int {
   UpscaleLanczos3,
   UpscaleGaussianUnsharp,
   TAAU,  // temporal upsample: output-resolution history (FramePasses::TemporalUpsample)
+  UpscaleEdgeAdaptive,  // port design: edge-adaptive upscale + contrast-limited sharpening (two passes)
   Count
 };
 
@@ -55,6 +56,8 @@ inline Filter UpscaleQualityFilter(int quality) { return Filter(int(Filter::Upsc
 // The temporal upsample keeps its own history at output resolution; it is
 // not one of the original's TAA modes (IsTAA is false for it).
 inline bool IsTemporalUpsample(Filter f) { return f == Filter::TAAU; }
+// The edge-adaptive upscale writes an output-size target that its sharpening pass reads.
+inline bool HasSharpenPass(Filter f) { return f == Filter::UpscaleEdgeAdaptive; }
 
 // The document's table of primary screen percentages: what each range is
 // for. The sample's scales run from 1 % to 200 % (with super sampling);
