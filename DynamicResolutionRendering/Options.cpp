@@ -164,7 +164,7 @@ constexpr Spec kSpecs[] = {
            "TAAU: added to its automatic texture mip bias log2(scale)\n({range}, default 0)"),
     Flag("--no-auto-mip-bias", &Options::autoMipBias, false,
          "TAAU: no automatic view mip bias (the original's sampler)"),
-    Path("--mip-bias-opt-out", "NAMES", &Options::mipBiasOptOut,
+    Path("--mip-bias-opt-out", "LIST", &Options::mipBiasOptOut,
          "TAAU: materials (comma-separated) sampled without the view mip bias"),
 };
 
@@ -339,8 +339,9 @@ std::string Usage() {
     if (!s->help) continue;  // listed with the entry before
     std::string label = Label(*s);
     for (auto next = s + 1; next != std::end(kSpecs) && !next->help; ++next) label += ", " + Label(*next);
-    const std::size_t pad = label.size() + 3 <= kHelpColumn ? kHelpColumn - 2 - label.size() : 1;
-    u << "  " << label << std::string(pad, ' ');
+    // A label too long for the column gets its help on the next line.
+    const bool fits = label.size() + 3 <= kHelpColumn;
+    u << "  " << label << (fits ? std::string(kHelpColumn - 2 - label.size(), ' ') : "\n" + std::string(kHelpColumn, ' '));
     AppendHelp(u, *s);
   }
   u << "\nFixes (--fix), each off by default so that the default frame is the original's\n"
