@@ -172,8 +172,15 @@ bool Sample::TAAActive() const {
 }
 
 RenderTargetPlan Sample::Plan() const {
-  return {m_Options.dynamicResolution, m_Options.superSampling, m_Options.motionBlur, TAAActive(),
-          m_Options.fixes.Has(Fix::SrgbTargets), m_Device.Width(), m_Device.Height()};
+  RenderTargetPlan p{m_Options.dynamicResolution, m_Options.superSampling, m_Options.motionBlur, TAAActive(),
+                     m_Options.fixes.Has(Fix::SrgbTargets), m_Device.Width(), m_Device.Height()};
+  // Upscaling (Docs/Upscaling.md): TAAU's history and the secondary upscale's output size.
+  p.taau = m_Options.dynamicResolution && IsTemporalUpsample(m_Options.filter);
+  p.sharpenPass = m_Options.dynamicResolution && HasSharpenPass(m_Options.filter);
+  const double secondary = m_Options.dynamicResolution ? m_Options.secondaryScreenPercentage / 100.0 : 1.0;
+  p.outputW = std::max(1u, uint32_t(std::lround(m_Device.Width() * secondary)));
+  p.outputH = std::max(1u, uint32_t(std::lround(m_Device.Height() * secondary)));
+  return p;
 }
 
 bool Sample::InitDynamicResolution() {
@@ -210,9 +217,14 @@ void Sample::ApplySettings(const Options& o) {
   else if (o.control != keep.control) m_Controller->Reset();
   // The original keeps the velocity history across a camera change (one frame
   // of smear); the camera-cut fix restarts it.
-  if (o.camera >= 0 && o.camera < m_Cameras.Count() && o.camera != m_Cameras.Current() && m_Cameras.Select(o.camera) &&
-      m_Options.fixes.Has(Fix::CameraCut))
+  const bool cut = o.camera >= 0 && o.camera < m_Cameras.Count() && o.camera != m_Cameras.Current() &&
+                   m_Cameras.Select(o.camera);
+  if (cut && m_Options.fixes.Has(Fix::CameraCut)) m_ResetVelocityHistory = true;
+  // TAAU always restarts its history (and jitter) on a camera cut.
+  if (cut && IsTemporalUpsample(m_Options.filter)) {
     m_ResetVelocityHistory = true;
+    m_History.valid = false;
+  }
   m_Options.camera = m_Cameras.Current();
   if (!(Plan() == m_Targets.Plan())) InitDynamicResolution();
   if (scaleChanged || m_Options.control == ControlMode::Manual)
@@ -345,6 +357,12 @@ FrameSetup Sample::MakeFrameSetup() {
   s.backBufferViewport = {0, 0, float(m_Device.Width()), float(m_Device.Height()), 0, 1};
   s.sceneViewport = s.dynamic ? d3dl::VIEWPORT{v.TopLeftX, v.TopLeftY, v.Width, v.Height, v.MinDepth, v.MaxDepth}
                               : s.backBufferViewport;
+  const RenderTargetPlan& plan = m_Targets.Plan();
+  s.taau = plan.taau;
+  s.secondary = plan.dynamic && plan.Secondary();
+  s.holdJitter = m_Options.pause;
+  s.outputViewport = s.secondary ? d3dl::VIEWPORT{0, 0, float(plan.outputW), float(plan.outputH), 0, 1}
+                                 : s.backBufferViewport;
   m_History.Advance(s, s.dynamic ? glm::vec2(dr.GetRTScaleX(), dr.GetRTScaleY()) : glm::vec2(1.f),
                     m_Options.symmetricTAA);
   FillConstants(s, m_History, glm::vec2(dr.GetDynamicBufferWidth(), dr.GetDynamicBufferHeight()),
@@ -363,6 +381,14 @@ SceneRenderParams Sample::SceneParams() const {
   // Jitter in pixels (x right, y down) -> NDC (+Y up).
   p.jitterNdc = glm::vec2(2.0f * m_History.jitterCurr.x, -2.0f * m_History.jitterCurr.y);
   p.mipBiasSampler = TAAActive();
+  // TAAU's automatic view mip bias: log2(screen percentage) + the user's bias.
+  if (m_Targets.Plan().taau && m_Options.autoMipBias)
+    p.viewMipBias = std::log2(m_DynamicResolution.GetScaleX()) + float(m_Options.mipBias);
+  for (size_t at = 0; at < m_Options.mipBiasOptOut.size();) {
+    const size_t comma = std::min(m_Options.mipBiasOptOut.find(',', at), m_Options.mipBiasOptOut.size());
+    if (comma > at) p.mipBiasOptOut.push_back(m_Options.mipBiasOptOut.substr(at, comma - at));
+    at = comma + 1;
+  }
   p.resetHistory = m_ResetVelocityHistory;
   p.paused = m_Options.pause;
   p.target = m_History.current;
@@ -400,7 +426,7 @@ void Sample::OnFrameRender(double elapsed) {
   }
   m_Passes.MotionBlur(ctx, setup, m_Targets, bb);
   m_Passes.Scale(ctx, setup, m_Targets, bb);
-  if (setup.taa) m_History.valid = true;
+  if (setup.taa || setup.taau) m_History.valid = true;
 
   // Zoom box, then the GUI at back-buffer resolution: both inside the inner
   // frame, as in the original (its timer ends after the GUI and the text).

@@ -10,8 +10,30 @@ constexpr float kMarkerColor[4] = {1.0f, 0.0f, 1.0f, 1.0f};      // magenta, nev
 constexpr float kMarkerVelocity[4] = {0.5f, -0.5f, 0.0f, 0.0f};  // a huge velocity
 
 void UnbindPixelSRVs(d3dl::DeviceContext* ctx) {
-  d3dl::ShaderResourceView* none[6] = {};
-  ctx->PSSetShaderResources(0, 6, none);
+  d3dl::ShaderResourceView* none[7] = {};  // t6: the upscalers' depth
+  ctx->PSSetShaderResources(0, 7, none);
+}
+
+// Upscaling tuning (Docs/Upscaling.md).
+constexpr float kUnsharpAmount = 0.5f;          // Directional and Gaussian Unsharp
+// TAAU, tuned on the Arena's moving cinematic camera at 0.5 and 0.71
+// (Docs/Upscaling.md): history is worth most where nothing moves; each
+// resampling of a moving history blurs it, so there the current frame counts more.
+constexpr float kHistoryWeightStill = 32.0f;    // most frames' worth of history, still pixels
+constexpr float kHistoryWeightMoving = 1.5f;    // ... pixels moving kMotionPixels a frame or more
+constexpr float kMotionPixels = 0.25f;          // output pixels per frame counted as fully moving
+constexpr float kClipGammaStill = 2.0f;         // neighbourhood box half-size in sigmas
+constexpr float kClipGammaMoving = 1.25f;
+constexpr float kSampleSigmaStill = 0.4f;       // output pixels: sharp where history accumulates
+constexpr float kSampleSigmaMoving = 0.55f;     // smoother where the current frame dominates
+
+float RadicalInverse(uint32_t i, uint32_t base) {
+  float f = 1.0f, r = 0.0f;
+  for (; i > 0; i /= base) {
+    f /= float(base);
+    r += f * float(i % base);
+  }
+  return r;
 }
 }  // namespace
 
@@ -19,6 +41,8 @@ void UnbindPixelSRVs(d3dl::DeviceContext* ctx) {
 struct FramePasses::Shaders {
   d3dl::ComPtr<d3dl::VertexShader> dynamicVS, fullVS;
   d3dl::ComPtr<d3dl::PixelShader> clear, clearVelocity, motionBlur, fullClear, fullClearVelocity, fullMotionBlur;
+  d3dl::ComPtr<d3dl::PixelShader> secondary;  // the secondary spatial upscale
+  d3dl::ComPtr<d3dl::PixelShader> sharpen;    // after the edge-adaptive upscale
   std::map<std::string, d3dl::ComPtr<d3dl::PixelShader>> resolve;  // the filters' (ResolveFilters.cpp)
 
   struct VS {
@@ -38,6 +62,8 @@ struct FramePasses::Shaders {
       {"PostProcess_ClearPS", &Shaders::fullClear},
       {"PostProcess_ClearVelocityPS", &Shaders::fullClearVelocity},
       {"PostProcess_MotionBlurPS", &Shaders::fullMotionBlur},
+      {"UpscaleSpatial_SecondaryPS", &Shaders::secondary},
+      {"UpscaleSpatial_SharpenPS", &Shaders::sharpen},
   };
 };
 
@@ -84,7 +110,10 @@ bool FramePasses::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::
   nd.DepthWriteMask = d3dl::DEPTH_WRITE_MASK_ZERO;
   d3dl::RASTERIZER_DESC rd;
   rd.CullMode = d3dl::CULL_NONE;
+  d3dl::BUFFER_DESC ucb = cb;
+  ucb.ByteWidth = sizeof(UpscaleConstants);
   if (d3dl::FAILED(device->CreateBuffer(&cb, nullptr, m_CB.GetAddressOf())) ||
+      d3dl::FAILED(device->CreateBuffer(&ucb, nullptr, m_UpscaleCB.GetAddressOf())) ||
       d3dl::FAILED(device->CreateSamplerState(&point, m_SamplerPoint.GetAddressOf())) ||
       d3dl::FAILED(device->CreateSamplerState(&linear, m_SamplerLinear.GetAddressOf())) ||
       d3dl::FAILED(device->CreateSamplerState(&wrap, m_SamplerLinearWrap.GetAddressOf())) ||
@@ -140,6 +169,7 @@ void FramePasses::Release() {
   m_Noise.Release();
   m_Shaders.reset();
   m_CB = nullptr;
+  m_UpscaleCB = nullptr;
   m_SamplerPoint = m_SamplerLinear = m_SamplerLinearWrap = nullptr;
   m_NoDepth = nullptr;
   m_NoCull = nullptr;
@@ -179,6 +209,17 @@ void TemporalHistory::Advance(FrameSetup& s, glm::vec2 ratio, bool symmetric) {
     const glm::vec2 px = (symmetric ? kSymmetric : kAsymmetric)[current];
     jitterCurr = px / glm::vec2(s.sceneViewport.Width, s.sceneViewport.Height);
   }
+  if (s.taau) {
+    // Halton jitter; held while paused, since the scene then redraws with its last matrices.
+    if (!valid) jitterIndex = 0;
+    const glm::vec2 px = UpsampleJitter((s.holdJitter ? jitterIndex + kUpsampleJitterLength - 1 : jitterIndex++) %
+                                        kUpsampleJitterLength);
+    jitterCurr = px / glm::vec2(s.sceneViewport.Width, s.sceneViewport.Height);
+    upsampleCurrent = valid ? 1 - upsampleCurrent : 0;
+    s.historyCur = upsampleCurrent;
+    s.historyPrev = 1 - upsampleCurrent;
+    s.historyValid = valid;
+  }
   if (!valid) {
     jitterPrev = jitterCurr;
     ratioPrev = ratioCurr;
@@ -196,6 +237,16 @@ void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dyn, glm::
   s.fc = {{bb.x, bb.y}, {1.0f / bb.x, 1.0f / bb.y}, {}, 0, {}};
   std::memcpy(s.fc.clearColor, kClearColor, sizeof kClearColor);
   dc.fixes = s.fc.fixes = s.fixes.bits;
+  const glm::vec2 out(s.outputViewport.Width, s.outputViewport.Height);
+  const glm::vec2 jitterPx = h.jitterCurr * glm::vec2(s.sceneViewport.Width, s.sceneViewport.Height);
+  s.uc = {{out.x, out.y}, {1.0f / out.x, 1.0f / out.y}, {s.taau ? jitterPx.x : 0.0f, s.taau ? jitterPx.y : 0.0f},
+          s.historyValid ? 1.0f : 0.0f, kUnsharpAmount, {out.x, out.y}, {1.0f / out.x, 1.0f / out.y},
+          {kHistoryWeightStill, kHistoryWeightMoving, kClipGammaStill, kClipGammaMoving},
+          {kSampleSigmaStill, kSampleSigmaMoving}, kMotionPixels, 0.0f};
+}
+
+glm::vec2 UpsampleJitter(uint32_t index) {
+  return glm::vec2(RadicalInverse(index + 1, 2), RadicalInverse(index + 1, 3)) - 0.5f;
 }
 
 SceneTargets ChooseSceneTargets(RenderTargetSet& rts, const FrameSetup& s, const BackBuffer& bb) {
@@ -204,7 +255,7 @@ SceneTargets ChooseSceneTargets(RenderTargetSet& rts, const FrameSetup& s, const
     RenderTarget& colour = s.motionBlur ? rts[RT::ColorDynamic] : rts.Final(s.cur);
     t.rtv[0] = colour.rtv.Get();
     t.colour = colour.texture.Get();
-    if (s.motionBlur || s.taa) {
+    if (s.motionBlur || s.taa || s.taau) {
       RenderTarget& velocity = rts.Velocity((s.taa && !s.motionBlur) ? s.cur : 0);
       t.rtv[1] = velocity.rtv.Get();
       t.velocity = velocity.texture.Get();
@@ -320,44 +371,129 @@ d3dl::PixelShader* FramePasses::ResolveShader(const FrameSetup& s, const char** 
 void FramePasses::Scale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb) {
   m_Timers.scale.Start(ctx);
   if (s.dynamic) {
-    ctx->BeginEvent("Scale");
-    d3dl::RenderTargetView* rtv = bb.rtv;
-    ctx->OMSetRenderTargets(1, &rtv, nullptr);
-    ctx->RSSetViewports(1, &s.backBufferViewport);
-    DynamicConstants rc = s.dc;
-    if (s.filter == Filter::None) rc.ratioCurr[0] = rc.ratioCurr[1] = rc.ratioPrev[0] = rc.ratioPrev[1] = 1.0f;
-    if (s.filter == Filter::Noise) {
-      // The original draws a new offset (two rand() calls) each Noise frame.
-      const auto offset = m_Noise.NextOffset();
-      rc.noiseOffset[0] = offset[0];
-      rc.noiseOffset[1] = offset[1];
+    d3dl::RenderTargetView* out = s.secondary ? rts[RT::UpscaleOutput].rtv.Get() : bb.rtv;
+    if (s.taau) {
+      TemporalUpsample(ctx, s, rts, bb);
+    } else if (HasSharpenPass(s.filter)) {
+      Resolve(ctx, s, rts, rts[RT::UpscaleSharpenInput].rtv.Get());
+      Sharpen(ctx, s, rts, out);
+    } else {
+      Resolve(ctx, s, rts, out);
     }
-    const int cur = s.pausedSwap ? s.prev : s.cur, prev = s.pausedSwap ? s.cur : s.prev;
-    if (s.pausedSwap) {
-      std::swap(rc.ratioCurr, rc.ratioPrev);
-      std::swap(rc.jitterCurr, rc.jitterPrev);
-    }
-    SetConstants(ctx, &rc, sizeof rc);
-    const bool velocityTAA = s.taa && !s.motionBlur;
-    d3dl::ShaderResourceView* srv[6] = {rts.Final(cur).srv.Get(),
-                                        s.taa ? rts.Final(prev).srv.Get() : nullptr,
-                                        velocityTAA ? rts.Velocity(cur).srv.Get() : nullptr,
-                                        velocityTAA ? rts.Velocity(prev).srv.Get() : nullptr,
-                                        m_Noise.GetSRV(),
-                                        m_CubicLookup.GetSRV()};
-    ctx->PSSetShaderResources(0, 6, srv);
-    d3dl::SamplerState* samplers[3] = {
-        GetFilterInfo(s.filter).linearSampler ? m_SamplerLinear.Get() : m_SamplerPoint.Get(), m_SamplerLinear.Get(),
-        m_SamplerLinearWrap.Get()};
-    ctx->PSSetSamplers(0, 3, samplers);
-    const char* pass = nullptr;
-    d3dl::PixelShader* ps = ResolveShader(s, &pass);
-    DrawFullScreen(ctx, m_Shaders->dynamicVS.Get(), ps);
-    UnbindPixelSRVs(ctx);
-    CountPass(pass);
-    ctx->EndEvent();
+    if (s.secondary) SecondaryUpscale(ctx, s, rts, bb);
   }
   m_Timers.scale.Stop(ctx);
+}
+
+// The resolve filter into target (the back buffer, or the secondary upscale's source).
+void FramePasses::Resolve(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
+                          d3dl::RenderTargetView* target) {
+  ctx->BeginEvent("Scale");
+  ctx->OMSetRenderTargets(1, &target, nullptr);
+  ctx->RSSetViewports(1, &s.outputViewport);
+  DynamicConstants rc = s.dc;
+  if (s.filter == Filter::None) rc.ratioCurr[0] = rc.ratioCurr[1] = rc.ratioPrev[0] = rc.ratioPrev[1] = 1.0f;
+  if (s.filter == Filter::Noise) {
+    // The original draws a new offset (two rand() calls) each Noise frame.
+    const auto offset = m_Noise.NextOffset();
+    rc.noiseOffset[0] = offset[0];
+    rc.noiseOffset[1] = offset[1];
+  }
+  const int cur = s.pausedSwap ? s.prev : s.cur, prev = s.pausedSwap ? s.cur : s.prev;
+  if (s.pausedSwap) {
+    std::swap(rc.ratioCurr, rc.ratioPrev);
+    std::swap(rc.jitterCurr, rc.jitterPrev);
+  }
+  SetConstants(ctx, &rc, sizeof rc);
+  SetUpscaleConstants(ctx, s.uc);
+  const bool velocityTAA = s.taa && !s.motionBlur;
+  d3dl::ShaderResourceView* srv[6] = {rts.Final(cur).srv.Get(),
+                                      s.taa ? rts.Final(prev).srv.Get() : nullptr,
+                                      velocityTAA ? rts.Velocity(cur).srv.Get() : nullptr,
+                                      velocityTAA ? rts.Velocity(prev).srv.Get() : nullptr,
+                                      m_Noise.GetSRV(),
+                                      m_CubicLookup.GetSRV()};
+  ctx->PSSetShaderResources(0, 6, srv);
+  d3dl::SamplerState* samplers[3] = {
+      GetFilterInfo(s.filter).linearSampler ? m_SamplerLinear.Get() : m_SamplerPoint.Get(), m_SamplerLinear.Get(),
+      m_SamplerLinearWrap.Get()};
+  ctx->PSSetSamplers(0, 3, samplers);
+  const char* pass = nullptr;
+  d3dl::PixelShader* ps = ResolveShader(s, &pass);
+  DrawFullScreen(ctx, m_Shaders->dynamicVS.Get(), ps);
+  UnbindPixelSRVs(ctx);
+  CountPass(pass);
+  ctx->EndEvent();
+}
+
+// Contrast-limited sharpening of the edge-adaptive upscale's output.
+void FramePasses::Sharpen(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
+                          d3dl::RenderTargetView* target) {
+  ctx->BeginEvent("Sharpen");
+  ctx->OMSetRenderTargets(1, &target, nullptr);
+  ctx->RSSetViewports(1, &s.outputViewport);
+  SetConstants(ctx, &s.dc, sizeof s.dc);
+  SetUpscaleConstants(ctx, s.uc);
+  d3dl::ShaderResourceView* source = rts[RT::UpscaleSharpenInput].srv.Get();
+  ctx->PSSetShaderResources(0, 1, &source);
+  DrawFullScreen(ctx, m_Shaders->dynamicVS.Get(), m_Shaders->sharpen.Get());
+  UnbindPixelSRVs(ctx);
+  CountPass("Sharpen");
+  ctx->EndEvent();
+}
+
+void FramePasses::SetUpscaleConstants(d3dl::DeviceContext* ctx, const UpscaleConstants& uc) {
+  d3dl::MAPPED_SUBRESOURCE m;
+  if (d3dl::SUCCEEDED(ctx->Map(m_UpscaleCB.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &m))) {
+    std::memcpy(m.pData, &uc, sizeof uc);
+    ctx->Unmap(m_UpscaleCB.Get(), 0);
+  }
+  ctx->PSSetConstantBuffers(1, 1, m_UpscaleCB.GetAddressOf());
+}
+
+// TAAU: this frame's colour, velocity and depth (dynamic) and the last
+// history (output size) into the new history and, unless the secondary
+// upscale follows, the back buffer in the same draw.
+void FramePasses::TemporalUpsample(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
+                                   const BackBuffer& bb) {
+  ctx->BeginEvent("TemporalUpsample");
+  d3dl::RenderTargetView* rtv[2] = {rts.UpscaleHistory(s.historyCur).rtv.Get(), bb.rtv};
+  ctx->OMSetRenderTargets(s.secondary ? 1 : 2, rtv, nullptr);
+  ctx->RSSetViewports(1, &s.outputViewport);
+  SetConstants(ctx, &s.dc, sizeof s.dc);
+  SetUpscaleConstants(ctx, s.uc);
+  d3dl::ShaderResourceView* srv[7] = {rts.Final(s.cur).srv.Get(), rts.UpscaleHistory(s.historyPrev).srv.Get(),
+                                      rts.Velocity(0).srv.Get(), nullptr, nullptr, nullptr,
+                                      rts[RT::DepthDynamic].srv.Get()};
+  ctx->PSSetShaderResources(0, 7, srv);
+  d3dl::SamplerState* samplers[3] = {m_SamplerPoint.Get(), m_SamplerLinear.Get(), m_SamplerLinearWrap.Get()};
+  ctx->PSSetSamplers(0, 3, samplers);
+  const char* pass = nullptr;
+  DrawFullScreen(ctx, m_Shaders->dynamicVS.Get(), ResolveShader(s, &pass));
+  UnbindPixelSRVs(ctx);
+  CountPass(pass);
+  ctx->EndEvent();
+}
+
+// The static secondary spatial upscale: the primary upscale's output (or
+// TAAU's new history) to the back buffer, Catmull-Rom.
+void FramePasses::SecondaryUpscale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
+                                   const BackBuffer& bb) {
+  ctx->BeginEvent("SecondaryUpscale");
+  d3dl::RenderTargetView* rtv = bb.rtv;
+  ctx->OMSetRenderTargets(1, &rtv, nullptr);
+  ctx->RSSetViewports(1, &s.backBufferViewport);
+  SetConstants(ctx, &s.dc, sizeof s.dc);
+  SetUpscaleConstants(ctx, s.uc);
+  d3dl::ShaderResourceView* source =
+      s.taau ? rts.UpscaleHistory(s.historyCur).srv.Get() : rts[RT::UpscaleOutput].srv.Get();
+  ctx->PSSetShaderResources(0, 1, &source);
+  d3dl::SamplerState* samplers[3] = {m_SamplerPoint.Get(), m_SamplerLinear.Get(), m_SamplerLinearWrap.Get()};
+  ctx->PSSetSamplers(0, 3, samplers);
+  DrawFullScreen(ctx, m_Shaders->dynamicVS.Get(), m_Shaders->secondary.Get());
+  UnbindPixelSRVs(ctx);
+  CountPass("SecondaryUpscale");
+  ctx->EndEvent();
 }
 
 void FramePasses::Zoom(d3dl::DeviceContext* ctx, const BackBuffer& bb, float centreX, float centreY) {

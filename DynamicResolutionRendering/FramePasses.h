@@ -43,6 +43,27 @@ struct FullConstants {
 };
 static_assert(sizeof(FullConstants) == 64);
 
+// Constants of the upscalers (Shaders/UpscaleCommon.hlsli, cbUpscale at b1).
+struct UpscaleConstants {
+  float outputSize[2], invOutputSize[2];
+  float jitterPx[2];      // TAAU: this frame's jitter in dynamic pixels (y down)
+  float historyValid;     // TAAU: 0 on a reset
+  float sharpness;        // unsharp amount of Directional and Gaussian Unsharp
+  float sourceSize[2], invSourceSize[2];  // the secondary upscale's source
+  float temporalParams[4];  // max history weight still / moving, clip gamma still / moving
+  // TAAU: a sample's weight falls as exp(-d^2 / 2 sigma^2), d in output
+  // pixels, sigma still / moving; and the output pixels per frame counted as fully moving.
+  float sampleSigma[2];
+  float motionPixels;
+  float pad;
+};
+static_assert(sizeof(UpscaleConstants) == 80);
+
+// TAAU's sub-pixel jitter: Halton(2, 3) points 1..kUpsampleJitterLength,
+// centred on 0 (dynamic pixels, each axis in (-0.5, 0.5)).
+constexpr uint32_t kUpsampleJitterLength = 16;
+glm::vec2 UpsampleJitter(uint32_t index);
+
 // The original's five GPU timers.
 struct FrameTimers {
   AveragedGPUTimer frame{10}, clear{10}, scene{10}, postP{10}, scale{10};
@@ -63,6 +84,13 @@ struct FrameSetup {
   d3dl::VIEWPORT sceneViewport{}, backBufferViewport{};
   DynamicConstants dc{};
   FullConstants fc{};
+  // Upscaling (Docs/Upscaling.md). outputViewport: what the primary upscale
+  // (spatial or TAAU) writes, the back buffer's unless the secondary upscale runs.
+  bool taau = false, secondary = false, holdJitter = false;
+  int historyCur = 0, historyPrev = 0;  // TAAU's output-resolution history pair
+  bool historyValid = false;
+  d3dl::VIEWPORT outputViewport{};
+  UpscaleConstants uc{};
 };
 
 // Where the scene draws (colour, velocity when needed, depth).
@@ -80,6 +108,10 @@ struct TemporalHistory {
   int current = 0;
   bool valid = false;
   glm::vec2 jitterCurr{0.f}, jitterPrev{0.f}, ratioCurr{1.f}, ratioPrev{1.f};
+  // TAAU: which history target this frame writes and the next jitter index;
+  // both restart when the history is invalid (valid is shared with TAA).
+  int upsampleCurrent = 0;
+  uint32_t jitterIndex = 0;
   // This frame's jitter (the original's pair: (0,0)/(0.5,0.5) px, or
   // -0.25/+0.25 px symmetric, in clip-space directions: x right, y up) and
   // ratios; s.cur and s.prev; the viewport is already in s.
@@ -106,6 +138,10 @@ class FramePasses {
   void MotionBlur(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb);
   void Scale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb);
   void Zoom(d3dl::DeviceContext* ctx, const BackBuffer& bb, float centreX, float centreY);
+  // Upscaling passes, run by Scale (Docs/Upscaling.md).
+  void TemporalUpsample(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb);
+  void SecondaryUpscale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb);
+  void Sharpen(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, d3dl::RenderTargetView* target);
 
   FrameTimers& Timers() { return m_Timers; }
   ZoomBox& GetZoomBox() { return m_ZoomBox; }
@@ -118,10 +154,12 @@ class FramePasses {
   void SetConstants(d3dl::DeviceContext* ctx, const void* data, size_t size);
   void DrawFullScreen(d3dl::DeviceContext* ctx, d3dl::VertexShader* vs, d3dl::PixelShader* ps);
   d3dl::PixelShader* ResolveShader(const FrameSetup& s, const char** pass) const;
+  void Resolve(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, d3dl::RenderTargetView* target);
+  void SetUpscaleConstants(d3dl::DeviceContext* ctx, const UpscaleConstants& uc);
 
   d3dl::Device* m_Device = nullptr;
   std::unique_ptr<Shaders> m_Shaders;
-  d3dl::ComPtr<d3dl::Buffer> m_CB;
+  d3dl::ComPtr<d3dl::Buffer> m_CB, m_UpscaleCB;
   d3dl::ComPtr<d3dl::SamplerState> m_SamplerPoint, m_SamplerLinear, m_SamplerLinearWrap;
   d3dl::ComPtr<d3dl::DepthStencilState> m_NoDepth;
   d3dl::ComPtr<d3dl::RasterizerState> m_NoCull;

@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -31,7 +32,10 @@ bool SettingsDiffer(const Options& a, const Options& b) {
          a.zoom != b.zoom || a.camera != b.camera || a.psClear != b.psClear ||
          a.dynamicResolution != b.dynamicResolution || a.superSampling != b.superSampling ||
          a.aspectLock != b.aspectLock || a.filter != b.filter || a.symmetricTAA != b.symmetricTAA ||
-         a.control != b.control || a.law != b.law || a.fixes != b.fixes;
+         a.control != b.control || a.law != b.law || a.fixes != b.fixes ||
+         // Upscaling (port addition)
+         a.secondaryScreenPercentage != b.secondaryScreenPercentage || a.mipBias != b.mipBias ||
+         a.autoMipBias != b.autoMipBias;
 }
 
 int OptionPercent(float scale) { return int(std::lround(100.0 * double(scale))); }
@@ -113,6 +117,29 @@ void GuiPanel::Panel(const GuiView& v) {
   if (sliderMoved || SettingsDiffer(o, *v.options)) v.apply(o);
 }
 
+// Upscaling (Docs/Upscaling.md): r.Upscale.Quality, r.TemporalAA.Upsampling,
+// the secondary screen percentage and TAAU's view mip bias.
+void GuiPanel::UpscaleSection(Options* o) {
+  if (!ImGui::CollapsingHeader("Upscaling (port)")) return;
+  const ScreenPercentageRange& range = ScreenPercentageRangeOf(o->scaleX);
+  ImGui::TextWrapped("%.0f %%: %s", o->scaleX * 100.0, range.use);
+  const int current = int(o->filter) - int(Filter::UpscaleNearest);
+  int quality = current >= 0 && current < kUpscaleQualities ? current : -1;
+  ImGui::SetNextItemWidth(kComboWidth);
+  if (ImGui::SliderInt("r.Upscale.Quality", &quality, 0, kUpscaleQualities - 1, quality < 0 ? "-" : "%d"))
+    o->filter = UpscaleQualityFilter(std::clamp(quality, 0, kUpscaleQualities - 1));
+  bool taau = IsTemporalUpsample(o->filter);
+  if (ImGui::Checkbox("Temporal Upsample", &taau))
+    o->filter = taau ? Filter::TAAU : UpscaleQualityFilter(3);
+  float secondary = float(o->secondaryScreenPercentage);
+  ImGui::SetNextItemWidth(kComboWidth);
+  if (ImGui::SliderFloat("Secondary %", &secondary, 50.0f, 100.0f, "%.2f")) o->secondaryScreenPercentage = secondary;
+  ImGui::Checkbox("Automatic view mip bias", &o->autoMipBias);
+  float bias = float(o->mipBias);
+  ImGui::SetNextItemWidth(kComboWidth);
+  if (ImGui::SliderFloat("Mip bias", &bias, -2.0f, 2.0f, "%.2f")) o->mipBias = bias;
+}
+
 void GuiPanel::Buttons() {
   // The original's "Change device (F3)" opens DXUT's device dialog, which the port does not have.
   const ImVec2 size(kPanelWidth - 2.0f * ImGui::GetStyle().WindowPadding.x, 0.0f);
@@ -192,6 +219,7 @@ void GuiPanel::PortSection(Options* o) {
   ImGui::BeginDisabled(!m_Widgets.control);
   EnumCombo("Control law (port):", "##law", &o->law, ControlLawName);
   ImGui::EndDisabled();
+  UpscaleSection(o);
   if (ImGui::CollapsingHeader("Port fixes")) {
     for (const FixToggle& t : FixToggles(o->fixes)) {
       bool on = t.on;

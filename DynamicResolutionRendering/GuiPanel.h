@@ -76,6 +76,7 @@ class GuiPanel {
   bool ScaleSliders(const GuiView& view, Options* o);
   void FilterAndControl(Options* o);
   void PortSection(Options* o);
+  void UpscaleSection(Options* o);  // port addition (Docs/Upscaling.md)
   void Text(const GuiView& view);
 
   ImGuiContext* m_ImGui = nullptr;

@@ -146,6 +146,26 @@ constexpr Spec kSpecs[] = {
      .help = "port fixes of the original's defects: all, none or names\n"
              "separated by commas (default none: the original; see below)",
      .field = &Options::fixes},
+    // Upscaling (Docs/Upscaling.md)
+    Int("--upscale-quality", "Q", &Options::upscaleQuality, 0, 5,
+        "primary spatial upscale, r.Upscale.Quality in the engine's\n"
+        "numbering 0..5 (its documentation's 1..6): 0 nearest,\n"
+        "1 bilinear, 2 directional blur + unsharp mask, 3 Catmull-Rom\n"
+        "(5 taps, their default), 4 Lanczos 3, 5 Gaussian unsharp mask;\n"
+        "sets --filter upscale-*"),
+    Flag("--temporal-upsampling", &Options::temporalUpsampling, true,
+         "temporal upsample (r.TemporalAA.Upsampling 1): --filter taau;\n"
+         "wins over --upscale-quality"),
+    Number("--secondary-screen-percentage", "P", &Options::secondaryScreenPercentage, 25, 100,
+           "static second spatial upscale after the primary one (or\n"
+           "TAAU) and before the GUI, in percent of the back buffer\n"
+           "({range}; default 100: none; 83.33 renders 900p for 1080p)"),
+    Number("--mip-bias", "B", &Options::mipBias, -4, 4,
+           "TAAU: added to its automatic texture mip bias log2(scale)\n({range}, default 0)"),
+    Flag("--no-auto-mip-bias", &Options::autoMipBias, false,
+         "TAAU: no automatic view mip bias (the original's sampler)"),
+    Path("--mip-bias-opt-out", "LIST", &Options::mipBiasOptOut,
+         "TAAU: materials (comma-separated) sampled without the view mip bias"),
 };
 
 constexpr double kMinScale = 0.01;
@@ -319,8 +339,9 @@ std::string Usage() {
     if (!s->help) continue;  // listed with the entry before
     std::string label = Label(*s);
     for (auto next = s + 1; next != std::end(kSpecs) && !next->help; ++next) label += ", " + Label(*next);
-    const std::size_t pad = label.size() + 3 <= kHelpColumn ? kHelpColumn - 2 - label.size() : 1;
-    u << "  " << label << std::string(pad, ' ');
+    // A label too long for the column gets its help on the next line.
+    const bool fits = label.size() + 3 <= kHelpColumn;
+    u << "  " << label << (fits ? std::string(kHelpColumn - 2 - label.size(), ' ') : "\n" + std::string(kHelpColumn, ' '));
     AppendHelp(u, *s);
   }
   u << "\nFixes (--fix), each off by default so that the default frame is the original's\n"
@@ -363,6 +384,8 @@ ParseStatus ParseCommandLine(const std::vector<std::string>& args, Options* o, s
     if (std::string error = Apply(*spec, name, value, &r, &scales); !error.empty()) return Fail(message, error);
   }
   if (std::string error = FinishScales(scales, &r); !error.empty()) return Fail(message, error);
+  if (r.upscaleQuality >= 0) r.filter = UpscaleQualityFilter(r.upscaleQuality);
+  if (r.temporalUpsampling) r.filter = Filter::TAAU;
   *o = r;
   return ParseStatus::Ok;
 }
@@ -387,7 +410,9 @@ std::string OptionsToJson(const Options& o) {
     << ", \"anisotropy\": " << o.anisotropy
     << ", \"time\": " << o.time << ", \"fixed_dt\": " << o.fixedDt
     << ", \"validation\": " << (o.validation ? "true" : "false")
-    << ", \"fixes\": " << JsonQuote(FixNames(o.fixes)) << "}";
+    << ", \"fixes\": " << JsonQuote(FixNames(o.fixes))
+    << ", \"secondary_screen_percentage\": " << o.secondaryScreenPercentage << ", \"mip_bias\": " << o.mipBias
+    << ", \"auto_mip_bias\": " << (o.autoMipBias ? "true" : "false") << "}";
   return j.str();
 }
 

@@ -62,6 +62,14 @@ struct Options {
   bool windowTest = false;
   // The port's fixes of the original's defects (--fix); none by default.
   FixSet fixes;
+  // Upscaling (Docs/Upscaling.md). --upscale-quality Q (the engine's 0..5)
+  // and --temporal-upsampling choose the filter; the others act with them.
+  int upscaleQuality = -1;                  // -1: not given
+  bool temporalUpsampling = false;          // r.TemporalAA.Upsampling 1: filter taau
+  double secondaryScreenPercentage = 100.0; // r.SecondaryScreenPercentage.GameViewport
+  double mipBias = 0.0;                     // added to TAAU's automatic view mip bias
+  bool autoMipBias = true;                  // TAAU: texture sampling biased by log2(screen percentage)
+  std::string mipBiasOptOut;                // materials (comma-separated names) sampled without it
 
   int64_t EffectiveFrames() const { return frames >= 0 ? frames : (headless ? 300 : -1); }
   float MaxScale() const { return superSampling ? 2.0f : 1.0f; }

@@ -9,6 +9,7 @@ struct TargetInfo {
   const char* name;
   d3dl::DXGI_FORMAT format;
   bool dynamic;  // sized as the dynamic RT, else as the back buffer
+  bool output = false;  // port addition: on the dynamic path, at the upscale's output size
 };
 // The original's colour targets are R8G8B8A8_UNORM: they hold the shader's
 // linear values in 8 bits; only the back buffer is sRGB.
@@ -21,24 +22,41 @@ constexpr TargetInfo kTargets[] = {
     {"g_FinalRTDynamic[0]", kColor, true},     {"g_FinalRTDynamic[1]", kColor, true},
     {"g_ColorFull", kColor, false},            {"g_VelocityFull", kVelocity, false},
     {"g_DepthFull", kDepth, false},
+    {"upscale history[0]", d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT, false, true},
+    {"upscale history[1]", d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT, false, true},
+    {"upscale output", kColor, false, true},
+    {"upscale sharpen input", kColor, false, true},
 };
+// TAAU reads the dynamic depth: typeless, with a depth and a float view.
+constexpr d3dl::DXGI_FORMAT kReadableDepth = d3dl::DXGI_FORMAT_R32_TYPELESS;
 static_assert(std::size(kTargets) == size_t(RT::Count));
 }  // namespace
 
 d3dl::HRESULT RenderTarget::Create(d3dl::Device* device, uint32_t w, uint32_t h, d3dl::DXGI_FORMAT fmt,
                                    const char* name) {
   Release();
-  const bool depth = fmt == d3dl::DXGI_FORMAT_D32_FLOAT;
+  const bool readableDepth = fmt == kReadableDepth;
+  const bool depth = fmt == d3dl::DXGI_FORMAT_D32_FLOAT || readableDepth;
   d3dl::TEXTURE2D_DESC d;
   d.Width = w;
   d.Height = h;
   d.MipLevels = 1;
   d.Format = fmt;
   d.BindFlags = depth ? d3dl::BIND_DEPTH_STENCIL : (d3dl::BIND_RENDER_TARGET | d3dl::BIND_SHADER_RESOURCE);
+  if (readableDepth) d.BindFlags |= d3dl::BIND_SHADER_RESOURCE;
   d3dl::HRESULT hr = device->CreateTexture2D(&d, nullptr, texture.ReleaseAndGetAddressOf());
   if (d3dl::FAILED(hr)) return hr;
   texture->SetDebugName(name);
-  if (depth) {
+  if (readableDepth) {
+    d3dl::DEPTH_STENCIL_VIEW_DESC dv;
+    dv.Format = d3dl::DXGI_FORMAT_D32_FLOAT;
+    dv.ViewDimension = d3dl::DSV_DIMENSION_TEXTURE2D;
+    d3dl::SHADER_RESOURCE_VIEW_DESC sv;
+    sv.Format = d3dl::DXGI_FORMAT_R32_FLOAT;
+    sv.ViewDimension = d3dl::SRV_DIMENSION_TEXTURE2D;
+    hr = device->CreateDepthStencilView(texture.Get(), &dv, dsv.ReleaseAndGetAddressOf());
+    if (d3dl::SUCCEEDED(hr)) hr = device->CreateShaderResourceView(texture.Get(), &sv, srv.ReleaseAndGetAddressOf());
+  } else if (depth) {
     hr = device->CreateDepthStencilView(texture.Get(), nullptr, dsv.ReleaseAndGetAddressOf());
   } else {
     hr = device->CreateRenderTargetView(texture.Get(), nullptr, rtv.ReleaseAndGetAddressOf());
@@ -83,7 +101,15 @@ uint64_t RenderTargetSet::OriginalBytes(uint32_t backW, uint32_t backH, uint32_t
 }
 
 bool RenderTargetSet::Needed(RT rt, const RenderTargetPlan& p) {
+  if (kTargets[int(rt)].output) {
+    if (!p.dynamic) return false;
+    // TAAU writes its history; the secondary upscale reads it, or the primary spatial upscale's output.
+    if (rt == RT::UpscaleOutput) return p.Secondary() && !p.taau;
+    if (rt == RT::UpscaleSharpenInput) return p.sharpenPass;
+    return p.taau;
+  }
   if (kTargets[int(rt)].dynamic != p.dynamic) return false;
+  if (rt == RT::VelocityDynamic0 && p.taau) return true;
   switch (rt) {
     case RT::DepthDynamic:
     case RT::FinalDynamic0:
@@ -105,10 +131,11 @@ bool RenderTargetSet::Allocate(d3dl::Device* device, const RenderTargetPlan& pla
   for (int i = 0; i < int(RT::Count); ++i) {
     const RT rt = RT(i);
     if (!Needed(rt, plan)) continue;
-    const bool dyn = kTargets[i].dynamic;
-    ok = ok && d3dl::SUCCEEDED(m_Targets[i].Create(device, dyn ? dynW : plan.backBufferW,
-                                                   dyn ? dynH : plan.backBufferH, Format(rt, plan.srgbColour),
-                                                   Name(rt)));
+    const bool dyn = kTargets[i].dynamic, out = kTargets[i].output;
+    const uint32_t w = dyn ? dynW : out ? plan.outputW : plan.backBufferW;
+    const uint32_t h = dyn ? dynH : out ? plan.outputH : plan.backBufferH;
+    const d3dl::DXGI_FORMAT fmt = (rt == RT::DepthDynamic && plan.taau) ? kReadableDepth : Format(rt, plan.srgbColour);
+    ok = ok && d3dl::SUCCEEDED(m_Targets[i].Create(device, w, h, fmt, Name(rt)));
   }
   m_Plan = plan;
   return ok;

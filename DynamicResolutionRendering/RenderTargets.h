@@ -11,7 +11,8 @@
 namespace drr {
 
 // A texture with the views its bind flags allow: colour formats get an RTV
-// and an SRV, D32_FLOAT a DSV.
+// and an SRV, D32_FLOAT a DSV, R32_TYPELESS (depth read by TAAU) a DSV and an
+// R32_FLOAT SRV.
 struct RenderTarget {
   d3dl::ComPtr<d3dl::Texture2D> texture;
   d3dl::ComPtr<d3dl::RenderTargetView> rtv;
@@ -37,6 +38,13 @@ enum class RT : int {
   ColorFull,
   VelocityFull,
   DepthFull,
+  // Port additions on the dynamic path, at the output size (Docs/Upscaling.md):
+  // the TAAU history pair, and the primary upscale's output ahead of the
+  // secondary upscale.
+  UpscaleHistory0,
+  UpscaleHistory1,
+  UpscaleOutput,
+  UpscaleSharpenInput,  // the edge-adaptive upscale's output, read by its sharpening pass
   Count
 };
 
@@ -45,6 +53,11 @@ struct RenderTargetPlan {
   bool dynamic = false, superSampling = false, motionBlur = false, taa = false;
   bool srgbColour = false;  // fix srgb-targets: sRGB colour targets instead of the original's UNORM
   uint32_t backBufferW = 0, backBufferH = 0;
+  // Upscaling (Docs/Upscaling.md): TAAU on, and the output size of the primary
+  // upscale (the back buffer's times the secondary screen percentage).
+  bool taau = false, sharpenPass = false;
+  uint32_t outputW = 0, outputH = 0;
+  bool Secondary() const { return outputW != 0 && (outputW != backBufferW || outputH != backBufferH); }
   bool operator==(const RenderTargetPlan&) const = default;
 };
 
@@ -64,6 +77,7 @@ class RenderTargetSet {
   const RenderTarget& operator[](RT rt) const { return m_Targets[int(rt)]; }
   RenderTarget& Final(int i) { return (*this)[i ? RT::FinalDynamic1 : RT::FinalDynamic0]; }
   RenderTarget& Velocity(int i) { return (*this)[i ? RT::VelocityDynamic1 : RT::VelocityDynamic0]; }
+  RenderTarget& UpscaleHistory(int i) { return (*this)[i ? RT::UpscaleHistory1 : RT::UpscaleHistory0]; }
   uint64_t Bytes() const;
   // What the original allocates for the same back buffer and dynamic RT: all
   // of its targets whatever the mode (g_Color, g_Velocity, DXUT's depth and the

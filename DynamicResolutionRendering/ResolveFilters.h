@@ -21,6 +21,16 @@ enum class Filter : int {
   TAANoiseOffset,
   TAABasic,
   BicubicBSpline,  // port addition: a true cubic B-spline (the original's Bicubic is not one)
+  // Port additions: the primary spatial upscale qualities of r.Upscale.Quality
+  // 0..5 (Docs/Upscaling.md), in that order, then the temporal upsample.
+  UpscaleNearest,
+  UpscaleBilinear,
+  UpscaleDirectional,
+  UpscaleCatmullRom,
+  UpscaleLanczos3,
+  UpscaleGaussianUnsharp,
+  TAAU,  // temporal upsample: output-resolution history (FramePasses::TemporalUpsample)
+  UpscaleEdgeAdaptive,  // port design: edge-adaptive upscale + contrast-limited sharpening (two passes)
   Count
 };
 
@@ -39,5 +49,23 @@ const FilterInfo& GetFilterInfo(Filter f);
 inline const char* FilterName(Filter f) { return GetFilterInfo(f).name; }
 inline const char* FilterOption(Filter f) { return GetFilterInfo(f).option; }
 inline bool IsTAA(Filter f) { return GetFilterInfo(f).temporal; }
+
+// r.Upscale.Quality: the engine's numbering 0..5 (its documentation's 1..6).
+constexpr int kUpscaleQualities = 6;
+inline Filter UpscaleQualityFilter(int quality) { return Filter(int(Filter::UpscaleNearest) + quality); }
+// The temporal upsample keeps its own history at output resolution; it is
+// not one of the original's TAA modes (IsTAA is false for it).
+inline bool IsTemporalUpsample(Filter f) { return f == Filter::TAAU; }
+// The edge-adaptive upscale writes an output-size target that its sharpening pass reads.
+inline bool HasSharpenPass(Filter f) { return f == Filter::UpscaleEdgeAdaptive; }
+
+// The document's table of primary screen percentages: what each range is
+// for. The sample's scales run from 1 % to 200 % (with super sampling);
+// outside the table's 50..200 % the range says so.
+struct ScreenPercentageRange {
+  double lowPercent, highPercent;  // [low, high)
+  const char* use;
+};
+const ScreenPercentageRange& ScreenPercentageRangeOf(double scale);
 
 }  // namespace drr

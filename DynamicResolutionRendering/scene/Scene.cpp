@@ -208,6 +208,7 @@ bool SceneImpl::UploadMaterials(Entry& e, TextureCache& cache, std::string* erro
     gm.blend = md.alphaBlend || e.desc.type == EntryType::Decal;
     gm.twoSided = md.twoSided;
     gm.tint = md.diffuseColor;
+    gm.name = md.name;
     psWanted[VariantIndex(gm.hasNormal, gm.hasSpecular, true)] = true;
   }
   return true;

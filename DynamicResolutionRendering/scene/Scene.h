@@ -55,6 +55,11 @@ struct SceneRenderParams {
   // original's first-person eye (Cameras::ShadingEye).
   std::optional<glm::vec3> shadingEye;
   bool frustumCulling = false;  // fix frustum-cull; the original culls only meshes behind the eye
+  // Port addition (TAAU, Docs/Upscaling.md): the view mip bias of the texture
+  // sampler (anisotropic/trilinear as the scene's, MipLODBias this), except
+  // on the materials named in mipBiasOptOut.
+  std::optional<float> viewMipBias;
+  std::vector<std::string> mipBiasOptOut;
 };
 
 struct SceneStats {

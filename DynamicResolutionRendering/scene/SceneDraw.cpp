@@ -104,6 +104,10 @@ void SceneImpl::DrawItemNow(d3dl::DeviceContext* ctx, const SceneRenderParams& p
   ctx->PSSetShader(shader);
   d3dl::ShaderResourceView* views[3] = {mat.diffuse.Get(), mat.normal.Get(), mat.specular.Get()};
   ctx->PSSetShaderResources(0, 3, views);
+  if (p.viewMipBias) {
+    d3dl::SamplerState* smp = MaterialSampler(p, mat);
+    ctx->PSSetSamplers(0, 1, &smp);
+  }
   ctx->RSSetState(mat.twoSided ? rsNone.Get() : rsBack.Get());
   d3dl::Buffer* vb = m.vb.Get();
   UINT stride = sizeof(SceneVertex), offset = 0;
@@ -135,6 +139,30 @@ void SceneImpl::DrawEntry(d3dl::DeviceContext* ctx, const SceneRenderParams& p, 
     }
     DrawItemNow(ctx, p, e, it, world, jitter, eye);
   }
+}
+
+// TAAU's view mip bias: the scene's sampler with MipLODBias = bias (1/16
+// steps, cached), or the plain one for a material that opted out.
+d3dl::SamplerState* SceneImpl::ViewBiasSampler(float bias) {
+  const int key = int(std::lround(std::clamp(bias, -16.f, 15.99f) * 16.f));
+  ComPtr<d3dl::SamplerState>& smp = samplersViewBias[key];
+  if (!smp) {
+    d3dl::SAMPLER_DESC sd;
+    const uint32_t anisotropy = opts.maxAnisotropy;
+    sd.Filter = anisotropy > 1 ? d3dl::FILTER_ANISOTROPIC : d3dl::FILTER_MIN_MAG_MIP_LINEAR;
+    sd.AddressU = sd.AddressV = sd.AddressW = d3dl::TEXTURE_ADDRESS_WRAP;
+    sd.MaxAnisotropy = std::clamp<uint32_t>(anisotropy, 1, 16);
+    sd.MinLOD = 0.f;
+    sd.MipLODBias = float(key) / 16.f;
+    if (FAILED(device->CreateSamplerState(&sd, smp.GetAddressOf()))) return samplerAniso.Get();
+  }
+  return smp.Get();
+}
+
+d3dl::SamplerState* SceneImpl::MaterialSampler(const SceneRenderParams& p, const GpuMaterial& mat) {
+  for (const std::string& name : p.mipBiasOptOut)
+    if (name == mat.name) return samplerAniso.Get();
+  return ViewBiasSampler(*p.viewMipBias);
 }
 
 void Scene::Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p) {

@@ -54,6 +54,7 @@ struct GpuMaterial {
   ComPtr<d3dl::ShaderResourceView> diffuse, normal, specular;
   bool hasNormal = false, hasSpecular = false, blend = false, twoSided = false;
   glm::vec4 tint{1.f};
+  std::string name;  // the model's material name (the view mip bias opt-out)
 };
 
 // The original keeps three world-view-projection matrices per draw: the
@@ -112,6 +113,10 @@ struct SceneImpl {
   ComPtr<d3dl::PixelShader> ps[8];
   ComPtr<d3dl::Buffer> objectCB, litCB, unlitCB;
   ComPtr<d3dl::SamplerState> samplerAniso, samplerBias;
+  // TAAU's view mip bias samplers, by bias in 1/16 steps (Docs/Upscaling.md).
+  std::map<int, ComPtr<d3dl::SamplerState>> samplersViewBias;
+  d3dl::SamplerState* ViewBiasSampler(float bias);
+  d3dl::SamplerState* MaterialSampler(const SceneRenderParams& p, const GpuMaterial& mat);
   ComPtr<d3dl::RasterizerState> rsBack, rsNone;
   ComPtr<d3dl::DepthStencilState> dsOpaque, dsDecal;
   ComPtr<d3dl::BlendState> bsDecal;
