@@ -110,6 +110,22 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void ClearState() override;
   void Flush() override;
 
+  // Compute and unordered access (ContextCompute.cpp)
+  void CSSetShader(ComputeShader* shader) override;
+  void CSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) override;
+  void CSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) override;
+  void CSSetSamplers(UINT startSlot, UINT num, SamplerState* const* samplers) override;
+  void CSSetUnorderedAccessViews(UINT startSlot, UINT num, UnorderedAccessView* const* views,
+                                 const UINT* initialCounts) override;
+  void Dispatch(UINT groupsX, UINT groupsY, UINT groupsZ) override;
+  void DispatchIndirect(Buffer* args, UINT offset) override;
+  void ClearUnorderedAccessViewUint(UnorderedAccessView* uav, const UINT values[4]) override;
+  void ClearUnorderedAccessViewFloat(UnorderedAccessView* uav, const float values[4]) override;
+  void OMSetRenderTargetsAndUnorderedAccessViews(UINT numRTVs, RenderTargetView* const* rtvs,
+                                                 DepthStencilView* dsv, UINT uavStartSlot, UINT numUAVs,
+                                                 UnorderedAccessView* const* uavs,
+                                                 const UINT* initialCounts) override;
+
   // BlitExtension (ContextBlit.cpp)
   void BlitRegion(Texture2D* dst, const RECT& dstRect, Texture2D* src, const RECT& srcRect,
                   FILTER filter) override;
@@ -144,6 +160,20 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void SetSamplers(ShaderStage stage, UINT start, UINT num, SamplerState* const* samplers);
   void UnbindAliasedSRVs();
   void CreateDefaultStates();
+  // Compute and unordered access: the state block of any stage, and its dirty
+  // bits (the compute stage has its own).
+  ShaderStageState& Stage(ShaderStage s) { return s == ShaderStage::Compute ? state_.cs.stage : state_.stages[s]; }
+  void MarkDirty(ShaderStage s, uint32_t bits) { (s == ShaderStage::Compute ? computeDirty_ : dirty_) |= bits; }
+
+  // ContextCompute.cpp
+  void SetUavs(ComPtr<UAVImpl>* slots, const char* fn, UINT start, UINT num, UnorderedAccessView* const* views);
+  bool CommitCompute();
+  bool UavsBound(const ProgramLayout& p, ShaderStage stage);
+  void UseShaderViews(const ProgramLayout& p, ShaderStage stage);
+  UAVImpl* UavAt(ShaderStage s, uint32_t slot) const {
+    return (s == ShaderStage::Compute ? state_.cs.uavs : state_.psUavs.uavs)[slot].Get();
+  }
+  void ClearUav(UAVImpl* v, const VkClearColorValue& value, uint32_t fill);
 
   // ContextDraw.cpp
   inline bool Commit(bool indexed);
@@ -156,7 +186,11 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   bool BindIndexBuffer(VkCommandBuffer cmd);
   bool BindDescriptors(VkCommandBuffer cmd);
   inline bool BindConstantsHot(VkCommandBuffer cmd);
-  bool WriteNewSet();
+  // The program's descriptor set (new when `changed` or a CB moved), bound
+  // with this call's dynamic offsets at `point` (graphics or compute).
+  bool BindSet(VkCommandBuffer cmd, VkPipelineBindPoint point, const ProgramLayout& p, BoundDescriptors& d,
+               bool changed);
+  bool WriteSet(const ProgramLayout& p, BoundDescriptors& d);
   PerStage<ShaderBase*> BoundShaders() const;
   RasterizerImpl* Rasterizer() const { return state_.rs.state ? state_.rs.state.Get() : defaults_.raster.Get(); }
   bool BeginRendering();
@@ -214,6 +248,12 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   PipelineKey key_{};
   int labelDepth_ = 0;
   uint32_t errorsLogged_ = 0;  // bits of OnceError
+
+  // Compute and unordered access: the compute bind point's committed state.
+  uint32_t computeDirty_ = kAll;
+  ProgramLayout* computeProgram_ = nullptr;
+  VkPipeline computePipeline_ = VK_NULL_HANDLE;
+  BoundDescriptors computeDesc_;
 
   ContextState state_;
   // Default states (D3D11 defaults), used when nullptr is bound.

@@ -234,8 +234,10 @@ bool ReflectSpirv(const uint32_t* words, size_t n, ShaderReflection* out, std::s
     out->stage = ShaderStage::Vertex;
   } else if (m.model == 4) {
     out->stage = ShaderStage::Pixel;
+  } else if (m.model == 5) {
+    out->stage = ShaderStage::Compute;
   } else {
-    *error = "unsupported execution model " + std::to_string(m.model) + " (only vertex and pixel shaders)";
+    *error = "unsupported execution model " + std::to_string(m.model) + " (only vertex, pixel and compute shaders)";
     return false;
   }
   m.ReflectBindings(out);

@@ -59,6 +59,7 @@ class BufferImpl final : public Child<Buffer> {
   SyncState& sync() { return sync_; }
   uint8_t* mapped() const { return mapped_; }  // Staging
   GpuUse use;
+  int boundAsOutput = 0;  // UAV bindings (compute and pixel stages)
 
   // Ring storage: a constant buffer's copy for this frame, or the data of a
   // DYNAMIC buffer's last WRITE_DISCARD.
@@ -146,7 +147,7 @@ struct TextureCore {
   StagingBuffer staging;  // Storage::Staging
   RingAlloc mapRing{};    // Storage::Ring: the slice written between Map and Unmap
   GpuUse use;
-  int boundAsTarget = 0;  // number of OM bindings
+  int boundAsTarget = 0;  // number of OM bindings and UAV bindings
   SwapChainImplBase* swapChain = nullptr;
   std::vector<ViewCore*> registeredViews;  // swap-chain proxies: views to rebuild
   uint64_t uid = 0;

@@ -101,7 +101,9 @@ HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
   }
 
   EnsureGlslangInitialised();
-  const EShLanguage language = desc.Stage == ShaderStage::Vertex ? EShLangVertex : EShLangFragment;
+  const EShLanguage language = desc.Stage == ShaderStage::Vertex    ? EShLangVertex
+                               : desc.Stage == ShaderStage::Compute ? EShLangCompute
+                                                                    : EShLangFragment;
   glslang::TShader shader(language);
   const std::string name = desc.SourcePath.empty() ? "<memory>" : desc.SourcePath;
   const char* text = source.c_str();
@@ -120,6 +122,9 @@ HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
   shader.setShiftBinding(glslang::EResUbo, stageBase + kConstantBufferBase);
   shader.setShiftBinding(glslang::EResTexture, stageBase + kTextureBase);
   shader.setShiftBinding(glslang::EResSampler, stageBase + kSamplerBase);
+  // As --hlsl-iomap: t# and u# by register class (StructuredBuffer vs RWStructuredBuffer).
+  shader.setHlslIoMapping(true);
+  shader.setShiftBinding(glslang::EResUav, stageBase + kUnorderedAccessBase);
 
   const auto messages =
       static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | EShMsgReadHlsl |

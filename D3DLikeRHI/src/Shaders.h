@@ -62,6 +62,7 @@ class ShaderImpl final : public Child<Iface>, public ShaderBase {
 };
 using VertexShaderImpl = ShaderImpl<VertexShader>;
 using PixelShaderImpl = ShaderImpl<PixelShader>;
+using ComputeShaderImpl = ShaderImpl<ComputeShader>;
 
 class InputLayoutImpl final : public Child<InputLayout> {
  public:

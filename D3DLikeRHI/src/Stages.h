@@ -19,6 +19,10 @@ constexpr const char* StagePrefix(ShaderStage s) {
   switch (s) {
     case ShaderStage::Vertex: return "VS";
     case ShaderStage::Pixel: return "PS";
+    case ShaderStage::Hull: return "HS";
+    case ShaderStage::Domain: return "DS";
+    case ShaderStage::Geometry: return "GS";
+    case ShaderStage::Compute: return "CS";  // not in kStages: compute state is apart
   }
   return "?";
 }
@@ -28,6 +32,10 @@ constexpr const char* StageName(ShaderStage s) {
   switch (s) {
     case ShaderStage::Vertex: return "vertex";
     case ShaderStage::Pixel: return "pixel";
+    case ShaderStage::Hull: return "hull";
+    case ShaderStage::Domain: return "domain";
+    case ShaderStage::Geometry: return "geometry";
+    case ShaderStage::Compute: return "compute";
   }
   return "?";
 }
@@ -36,6 +44,10 @@ constexpr VkShaderStageFlagBits ToVkStage(ShaderStage s) {
   switch (s) {
     case ShaderStage::Vertex: return VK_SHADER_STAGE_VERTEX_BIT;
     case ShaderStage::Pixel: return VK_SHADER_STAGE_FRAGMENT_BIT;
+    case ShaderStage::Hull: return VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT;
+    case ShaderStage::Domain: return VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT;
+    case ShaderStage::Geometry: return VK_SHADER_STAGE_GEOMETRY_BIT;
+    case ShaderStage::Compute: return VK_SHADER_STAGE_COMPUTE_BIT;
   }
   return VK_SHADER_STAGE_ALL;
 }

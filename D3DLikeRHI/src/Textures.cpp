@@ -71,6 +71,7 @@ bool CreateTextureImage(DeviceImpl* dev, TextureCore& core, TextureImage* out) {
   if (d.BindFlags & BIND_SHADER_RESOURCE) ici.usage |= VK_IMAGE_USAGE_SAMPLED_BIT;
   if (d.BindFlags & BIND_RENDER_TARGET) ici.usage |= VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
   if (d.BindFlags & BIND_DEPTH_STENCIL) ici.usage |= VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+  if (d.BindFlags & BIND_UNORDERED_ACCESS) ici.usage |= VK_IMAGE_USAGE_STORAGE_BIT;
   // SRV/RTV may use the sRGB/UNORM sibling of the format.
   if (!core.fmt->depth && d.Format != DXGI_FORMAT_R32_TYPELESS) ici.flags |= VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT;
   if (vkCreateImage(dev->vk(), &ici, nullptr, &out->image) != VK_SUCCESS) {

@@ -46,6 +46,22 @@ HRESULT ValidateSrvMips(DeviceImpl& dev, const TextureCore& t, const SHADER_RESO
 HRESULT ValidateDsvFormat(DeviceImpl& dev, const DEPTH_STENCIL_VIEW_DESC* desc);
 HRESULT ValidateMipSlice(DeviceImpl& dev, const char* fn, const TextureCore& t, UINT mip);
 
+// Compute and unordered access (ValidateDevice.cpp).
+inline constexpr ViewKindInfo kUavKind{"CreateUnorderedAccessView", "ppUAView", BIND_UNORDERED_ACCESS,
+                                       "BIND_UNORDERED_ACCESS"};
+// What a buffer view names: its resource's elements [first, first + num).
+struct BufferViewRequest {
+  DXGI_FORMAT format;
+  UINT first, num, flags;
+  bool raw;  // BUFFEREX_SRV_FLAG_RAW / BUFFER_UAV_FLAG_RAW
+};
+// A structured or raw view of `r` (a buffer); *offset/*range in bytes.
+HRESULT ValidateBufferView(DeviceImpl& dev, const ViewKindInfo& kind, Resource* r, const void* out,
+                           const BufferViewRequest* req, VkDeviceSize* offset, VkDeviceSize* range);
+// A texture UAV: its format and mip (desc may be null).
+HRESULT ValidateTextureUav(DeviceImpl& dev, Resource* r, const UNORDERED_ACCESS_VIEW_DESC* desc, const void* out,
+                           ViewFormat* format, uint32_t* mip);
+
 HRESULT ValidateSamplerDesc(DeviceImpl& dev, const SAMPLER_DESC* desc, SamplerState** out);
 HRESULT ValidateBlendDesc(DeviceImpl& dev, const BLEND_DESC* desc, BlendState** out);
 HRESULT ValidateDepthStencilDesc(DeviceImpl& dev, const DEPTH_STENCIL_DESC* desc, DepthStencilState** out);
@@ -90,6 +106,18 @@ bool ValidateBlitRegion(DeviceImpl& dev, Texture2D* dst, const RECT& dstRect, Te
 // Whether the blit filters linearly: the filter's magnification half when
 // the blit enlarges or keeps the size on both axes, else its minification half.
 bool BlitIsLinear(const RECT& dstRect, const RECT& srcRect, FILTER filter);
+
+// Compute and unordered access (ValidateContext.cpp).
+// A UAV to bind at `slot`, or nullptr (logged) when it cannot be bound.
+UAVImpl* CheckedUav(DeviceImpl& dev, const char* fn, UnorderedAccessView* uav, UINT slot);
+bool ValidateDispatch(DeviceImpl& dev, UINT x, UINT y, UINT z);
+bool ValidateDispatchIndirect(DeviceImpl& dev, Buffer* args, UINT offset);
+// The UAV to clear, or nullptr (logged); `isFloat`: ClearUnorderedAccessViewFloat.
+UAVImpl* ValidateClearUav(DeviceImpl& dev, UnorderedAccessView* uav, const void* values, bool isFloat);
+bool ValidateOMUavs(DeviceImpl& dev, UINT numRTVs, UINT uavStart, UINT numUAVs);
+// Whether ClearUnorderedAccessViewUint can write the bits of this view format
+// exactly (ContextCompute.cpp).
+bool UavClearBitsSupported(VkFormat f);
 
 bool ValidateBegin(DeviceImpl& dev, const QUERY_DESC& desc);
 bool ValidateGetData(DeviceImpl& dev, const QueryImpl* q, const void* data, UINT size);
