@@ -45,6 +45,9 @@ function(d3dl_hlsl_shift_args out stage)
       PARENT_SCOPE)
 endfunction()
 
+# SPIR-V 1.3: glslang's HLSL front end declares StructuredBuffer and
+# (RW)ByteAddressBuffer with the BufferBlock decoration, which SPIR-V 1.4 and
+# later reject; nothing the shaders use needs a later version.
 # d3dl_compile_hlsl(OUTPUT <spv> SOURCE <hlsl> ENTRY <name> STAGE <vert|frag|comp>
 #                   [DEFINES A=1 B ...] [DEPENDS extra headers...] [NO_SEMANTICS])
 # Produces one .spv; only this shader rebuilds when its source or headers change.
@@ -70,7 +73,7 @@ function(d3dl_compile_hlsl)
                "${A_SOURCE}|${A_ENTRY}|${A_STAGE}|${joined_defines}|${A_OUTPUT}|${flags}")
   add_custom_command(
     OUTPUT ${A_OUTPUT}
-    COMMAND ${GLSLANG_VALIDATOR} -D -V --target-env vulkan1.3 ${semantics}
+    COMMAND ${GLSLANG_VALIDATOR} -D -V --target-env vulkan1.3 --target-env spirv1.3 ${semantics}
             --hlsl-offsets -S ${A_STAGE} -e ${A_ENTRY} ${shifts} ${defs}
             -I${src_dir} -o ${A_OUTPUT} ${A_SOURCE}
     DEPENDS ${A_SOURCE} ${A_DEPENDS}

@@ -115,7 +115,9 @@ HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
   shader.setSourceEntryPoint(desc.EntryPoint.c_str());
   shader.setEnvInput(glslang::EShSourceHlsl, language, glslang::EShClientVulkan, 100);
   shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
-  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_6);
+  // SPIR-V 1.3, as cmake/HLSL.cmake: glslang's HLSL storage buffers carry
+  // BufferBlock, which SPIR-V 1.4+ rejects.
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
   if (desc.KeepSemantics) shader.setEnvTargetHlslFunctionality1();
 
   const uint32_t stageBase = kStageBindingStride * static_cast<uint32_t>(desc.Stage);

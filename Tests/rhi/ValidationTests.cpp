@@ -219,7 +219,14 @@ TEST_F(RhiValidation, BindingFormulaMatchesHeaderCMakeAndSpirv) {
   EXPECT_EQ(ps["Extra"], VulkanBinding(ShaderStage::Pixel, RegisterClass::ConstantBuffer, 3));
   EXPECT_EQ(ps["texA"], VulkanBinding(ShaderStage::Pixel, RegisterClass::Texture, 5));
   EXPECT_EQ(ps["smpB"], VulkanBinding(ShaderStage::Pixel, RegisterClass::Sampler, 2));
-  EXPECT_EQ(ps["texA"], 64u + 16u + 5u);
+  EXPECT_EQ(ps["texA"], 72u + 16u + 5u);
+  // u# and buffer SRVs of the compute stage (5): cs_raw_cs.hlsl declares t1 and u2.
+  EXPECT_EQ(value("D3DL_UAV_BASE"), kUnorderedAccessBase);
+  EXPECT_NE(text.find("--shift-UAV-binding"), std::string::npos);
+  auto cs = ReflectBindings(LoadSpirv("rhi_cs_raw_cs.spv"));
+  EXPECT_EQ(cs["g_RawIn"], VulkanBinding(ShaderStage::Compute, RegisterClass::Texture, 1));
+  EXPECT_EQ(cs["g_RawOut"], VulkanBinding(ShaderStage::Compute, RegisterClass::UnorderedAccess, 2));
+  EXPECT_EQ(cs["g_RawOut"], 5u * 72u + 64u + 2u);
   auto vs = ReflectBindings(LoadSpirv("rhi_bindings_vs.spv"));
   EXPECT_EQ(vs["VSParams"], VulkanBinding(ShaderStage::Vertex, RegisterClass::ConstantBuffer, 1));
   EXPECT_EQ(vs["vsTex"], VulkanBinding(ShaderStage::Vertex, RegisterClass::Texture, 2));
