@@ -186,6 +186,7 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   bool BindIndexBuffer(VkCommandBuffer cmd);
   bool BindDescriptors(VkCommandBuffer cmd);
   inline bool BindConstantsHot(VkCommandBuffer cmd);
+  inline bool RebindWithNewOffsets(VkCommandBuffer cmd, VkPipelineBindPoint point, BoundDescriptors& d);
   // The program's descriptor set (new when `changed` or a CB moved), bound
   // with this call's dynamic offsets at `point` (graphics or compute).
   bool BindSet(VkCommandBuffer cmd, VkPipelineBindPoint point, const ProgramLayout& p, BoundDescriptors& d,
@@ -297,15 +298,20 @@ inline bool ContextImpl::Commit(bool indexed) {
 // dynamic offsets change (unless a CB's ring slice moved to another chunk).
 inline bool ContextImpl::BindConstantsHot(VkCommandBuffer cmd) {
   if (!desc_.hotLayout) return true;
-  for (uint32_t i = 0; i < desc_.nHotCbs; ++i) {
-    BufferImpl* b = desc_.hotCbs[i];
+  return RebindWithNewOffsets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, desc_) || BindDescriptors(cmd);
+}
+
+// The set `d` last bound, rebound with the CBs' current ring offsets; false
+// (nothing recorded) when a CB's slice moved to another ring chunk.
+inline bool ContextImpl::RebindWithNewOffsets(VkCommandBuffer cmd, VkPipelineBindPoint point, BoundDescriptors& d) {
+  for (uint32_t i = 0; i < d.nHotCbs; ++i) {
+    BufferImpl* b = d.hotCbs[i];
     if (!b) continue;  // the dummy buffer: offset 0
     b->EnsureUploaded();
-    if (b->ring().buffer != desc_.cbBuffers[i]) return BindDescriptors(cmd);
-    desc_.dynOffsets[i] = static_cast<uint32_t>(b->ring().offset);
+    if (b->ring().buffer != d.cbBuffers[i]) return false;
+    d.dynOffsets[i] = static_cast<uint32_t>(b->ring().offset);
   }
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, desc_.hotLayout, 0, 1, &desc_.set,
-                          desc_.nHotCbs, desc_.dynOffsets);
+  vkCmdBindDescriptorSets(cmd, point, d.hotLayout, 0, 1, &d.set, d.nHotCbs, d.dynOffsets);
   return true;
 }
 

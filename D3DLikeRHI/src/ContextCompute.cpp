@@ -101,7 +101,9 @@ bool ContextImpl::CommitCompute() {
     computeDirty_ |= kDescriptors | kPipeline;
   }
   const ProgramLayout& p = *computeProgram_;
-  if (!UavsBound(p, ShaderStage::Compute)) return ErrorOnce(OnceError::UnboundUav), false;
+  // UAV slots change only with kDescriptors (a failed check leaves it set).
+  if ((computeDirty_ & kDescriptors) && !UavsBound(p, ShaderStage::Compute))
+    return ErrorOnce(OnceError::UnboundUav), false;
   UseShaderViews(p, ShaderStage::Compute);
   EndRendering();
   FlushBarriers();
@@ -111,7 +113,10 @@ bool ContextImpl::CommitCompute() {
     if (pipeline != computePipeline_) vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
     computePipeline_ = pipeline;
   }
-  if (!BindSet(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, p, computeDesc_, (computeDirty_ & kDescriptors) != 0))
+  // Only constant data changed since the last dispatch: the same set, new offsets.
+  const bool sameSet = !(computeDirty_ & (kDescriptors | kCbSlots)) && computeDesc_.hotLayout;
+  if (!(sameSet && RebindWithNewOffsets(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, computeDesc_)) &&
+      !BindSet(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, p, computeDesc_, (computeDirty_ & kDescriptors) != 0))
     return false;
   computeDirty_ = 0;
   return true;
