@@ -3,21 +3,25 @@
 # D3D register slots map to Vulkan bindings (descriptor set 0) by ONE formula,
 # the same one D3DLikeRHI/include/d3dl/Bindings.h states and the RHI tests check:
 #
-#   binding = 64 * stage + classBase + slot
-#   stage:     VS = 0, PS = 1, HS = 2, DS = 3, GS = 4
+#   binding = 72 * stage + classBase + slot
+#   stage:     VS = 0, PS = 1, HS = 2, DS = 3, GS = 4, CS = 5
 #   classBase: b# (cbuffer) = 0   (slots 0..13)
-#              t# (texture) = 16  (slots 0..31)
+#              t# (texture, StructuredBuffer, ByteAddressBuffer) = 16  (slots 0..31)
 #              s# (sampler) = 48  (slots 0..15)
+#              u# (RWTexture2D, RWStructuredBuffer, RWByteAddressBuffer) = 64 (slots 0..7)
 #
 # It is applied with glslang's per-stage binding shifts, so the HLSL keeps its
-# register(b0)/register(t3)/register(s1) annotations unchanged.
-set(D3DL_STAGE_STRIDE 64)
+# register(b0)/register(t3)/register(s1)/register(u2) annotations unchanged.
+# --hlsl-iomap classes resources by register class (t, u) rather than by SPIR-V
+# kind, so a StructuredBuffer in t# and a RWStructuredBuffer in u# shift apart.
+set(D3DL_STAGE_STRIDE 72)
 set(D3DL_CBUFFER_BASE 0)
 set(D3DL_TEXTURE_BASE 16)
 set(D3DL_SAMPLER_BASE 48)
+set(D3DL_UAV_BASE 64)
 
-# d3dl_hlsl_shift_args(<out-var> <stage: vert|frag|tesc|tese|geom>)
-# (glslang's names of the VS, PS, HS, DS and GS stages)
+# d3dl_hlsl_shift_args(<out-var> <stage: vert|frag|tesc|tese|geom|comp>)
+# (glslang's names of the VS, PS, HS, DS, GS and CS stages)
 function(d3dl_hlsl_shift_args out stage)
   if(stage STREQUAL "vert")
     set(index 0)
@@ -29,6 +33,8 @@ function(d3dl_hlsl_shift_args out stage)
     set(index 3)
   elseif(stage STREQUAL "geom")
     set(index 4)
+  elseif(stage STREQUAL "comp")
+    set(index 5)
   else()
     message(FATAL_ERROR "d3dl: unsupported shader stage '${stage}'")
   endif()
@@ -36,14 +42,20 @@ function(d3dl_hlsl_shift_args out stage)
   math(EXPR cb "${base} + ${D3DL_CBUFFER_BASE}")
   math(EXPR tex "${base} + ${D3DL_TEXTURE_BASE}")
   math(EXPR smp "${base} + ${D3DL_SAMPLER_BASE}")
+  math(EXPR uav "${base} + ${D3DL_UAV_BASE}")
   set(${out}
+      --hlsl-iomap
       --shift-UBO-binding ${stage} ${cb}
       --shift-texture-binding ${stage} ${tex}
       --shift-sampler-binding ${stage} ${smp}
+      --shift-UAV-binding ${stage} ${uav}
       PARENT_SCOPE)
 endfunction()
 
-# d3dl_compile_hlsl(OUTPUT <spv> SOURCE <hlsl> ENTRY <name> STAGE <vert|frag|tesc|tese|geom>
+# SPIR-V 1.3: glslang's HLSL front end declares StructuredBuffer and
+# (RW)ByteAddressBuffer with the BufferBlock decoration, which SPIR-V 1.4 and
+# later reject; nothing the shaders use needs a later version.
+# d3dl_compile_hlsl(OUTPUT <spv> SOURCE <hlsl> ENTRY <name> STAGE <vert|frag|tesc|tese|geom|comp>
 #                   [DEFINES A=1 B ...] [DEPENDS extra headers...] [NO_SEMANTICS])
 # Produces one .spv; only this shader rebuilds when its source or headers change.
 # NO_SEMANTICS leaves out -fhlsl_functionality1 (no HLSL semantic strings in
@@ -68,7 +80,7 @@ function(d3dl_compile_hlsl)
                "${A_SOURCE}|${A_ENTRY}|${A_STAGE}|${joined_defines}|${A_OUTPUT}|${flags}")
   add_custom_command(
     OUTPUT ${A_OUTPUT}
-    COMMAND ${GLSLANG_VALIDATOR} -D -V --target-env vulkan1.3 ${semantics}
+    COMMAND ${GLSLANG_VALIDATOR} -D -V --target-env vulkan1.3 --target-env spirv1.3 ${semantics}
             --hlsl-offsets -S ${A_STAGE} -e ${A_ENTRY} ${shifts} ${defs}
             -I${src_dir} -o ${A_OUTPUT} ${A_SOURCE}
     DEPENDS ${A_SOURCE} ${A_DEPENDS}

@@ -114,11 +114,13 @@ void BarrierBatch::AddBuffer(VkBuffer buffer, const BarrierInfo& info) {
 }
 
 void BarrierBatch::Record(VkCommandBuffer cmd) {
+  // Null for empty arrays: drivers that copy the arrays (lavapipe) then skip
+  // a zero-sized allocation.
   VkDependencyInfo di{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   di.imageMemoryBarrierCount = static_cast<uint32_t>(images_.size());
-  di.pImageMemoryBarriers = images_.data();
+  di.pImageMemoryBarriers = images_.empty() ? nullptr : images_.data();
   di.bufferMemoryBarrierCount = static_cast<uint32_t>(buffers_.size());
-  di.pBufferMemoryBarriers = buffers_.data();
+  di.pBufferMemoryBarriers = buffers_.empty() ? nullptr : buffers_.data();
   vkCmdPipelineBarrier2(cmd, &di);
   images_.clear();
   buffers_.clear();

@@ -139,6 +139,21 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   DEVICE_CONTEXT_TYPE GetType() override;
   HRESULT FinishCommandList(BOOL restoreDeferredContextState, CommandList** commandList) override;
   void ExecuteCommandList(CommandList* commandList, BOOL restoreContextState) override;
+  // Compute and unordered access (ContextCompute.cpp)
+  void CSSetShader(ComputeShader* shader) override;
+  void CSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) override;
+  void CSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) override;
+  void CSSetSamplers(UINT startSlot, UINT num, SamplerState* const* samplers) override;
+  void CSSetUnorderedAccessViews(UINT startSlot, UINT num, UnorderedAccessView* const* views,
+                                 const UINT* initialCounts) override;
+  void Dispatch(UINT groupsX, UINT groupsY, UINT groupsZ) override;
+  void DispatchIndirect(Buffer* args, UINT offset) override;
+  void ClearUnorderedAccessViewUint(UnorderedAccessView* uav, const UINT values[4]) override;
+  void ClearUnorderedAccessViewFloat(UnorderedAccessView* uav, const float values[4]) override;
+  void OMSetRenderTargetsAndUnorderedAccessViews(UINT numRTVs, RenderTargetView* const* rtvs,
+                                                 DepthStencilView* dsv, UINT uavStartSlot, UINT numUAVs,
+                                                 UnorderedAccessView* const* uavs,
+                                                 const UINT* initialCounts) override;
 
   // BlitExtension (ContextBlit.cpp)
   void BlitRegion(Texture2D* dst, const RECT& dstRect, Texture2D* src, const RECT& srcRect,
@@ -173,8 +188,22 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void SetSRVs(ShaderStage stage, UINT start, UINT num, ShaderResourceView* const* views);
   void SetSamplers(ShaderStage stage, UINT start, UINT num, SamplerState* const* samplers);
   void UnbindAliasedSRVs();
-  bool BoundAsTarget(const TextureCore* t) const;
+  bool BoundForOutput(const ViewCore& v) const;
   void CreateDefaultStates();
+  // Compute and unordered access: the state block of any stage, and its dirty
+  // bits (the compute stage has its own).
+  ShaderStageState& Stage(ShaderStage s) { return s == ShaderStage::Compute ? state_.cs.stage : state_.stages[s]; }
+  void MarkDirty(ShaderStage s, uint32_t bits) { (s == ShaderStage::Compute ? computeDirty_ : dirty_) |= bits; }
+
+  // ContextCompute.cpp
+  void SetUavs(ComPtr<UAVImpl>* slots, const char* fn, UINT start, UINT num, UnorderedAccessView* const* views);
+  bool CommitCompute();
+  bool UavsBound(const ProgramLayout& p, ShaderStage stage);
+  void UseShaderViews(const ProgramLayout& p, ShaderStage stage);
+  UAVImpl* UavAt(ShaderStage s, uint32_t slot) const {
+    return (s == ShaderStage::Compute ? state_.cs.uavs : state_.psUavs.uavs)[slot].Get();
+  }
+  void ClearUav(UAVImpl* v, const VkClearColorValue& value, uint32_t fill);
 
   // ContextStages.cpp: the bound HS/DS/GS fit each other and the topology.
   bool CheckStageTopology();
@@ -196,7 +225,12 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   bool BindIndexBuffer(VkCommandBuffer cmd);
   bool BindDescriptors(VkCommandBuffer cmd);
   inline bool BindConstantsHot(VkCommandBuffer cmd);
-  bool WriteNewSet();
+  inline bool RebindWithNewOffsets(VkCommandBuffer cmd, VkPipelineBindPoint point, BoundDescriptors& d);
+  // The program's descriptor set (new when `changed` or a CB moved), bound
+  // with this call's dynamic offsets at `point` (graphics or compute).
+  bool BindSet(VkCommandBuffer cmd, VkPipelineBindPoint point, const ProgramLayout& p, BoundDescriptors& d,
+               bool changed);
+  bool WriteSet(const ProgramLayout& p, BoundDescriptors& d);
   PerStage<ShaderBase*> BoundShaders() const;
   RasterizerImpl* Rasterizer() const { return state_.rs.state ? state_.rs.state.Get() : defaults_.raster.Get(); }
   bool BeginRendering();
@@ -257,6 +291,12 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   PipelineKey key_{};
   int labelDepth_ = 0;
   uint32_t errorsLogged_ = 0;  // bits of OnceError
+
+  // Compute and unordered access: the compute bind point's committed state.
+  uint32_t computeDirty_ = kAll;
+  ProgramLayout* computeProgram_ = nullptr;
+  VkPipeline computePipeline_ = VK_NULL_HANDLE;
+  BoundDescriptors computeDesc_;
 
   ContextState state_;
   // Default states (D3D11 defaults), used when nullptr is bound.
@@ -348,15 +388,20 @@ inline bool ContextImpl::Commit(bool indexed) {
 // dynamic offsets change (unless a CB's ring slice moved to another chunk).
 inline bool ContextImpl::BindConstantsHot(VkCommandBuffer cmd) {
   if (!desc_.hotLayout) return true;
-  for (uint32_t i = 0; i < desc_.nHotCbs; ++i) {
-    BufferImpl* b = desc_.hotCbs[i];
+  return RebindWithNewOffsets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, desc_) || BindDescriptors(cmd);
+}
+
+// The set `d` last bound, rebound with the CBs' current ring offsets; false
+// (nothing recorded) when a CB's slice moved to another ring chunk.
+inline bool ContextImpl::RebindWithNewOffsets(VkCommandBuffer cmd, VkPipelineBindPoint point, BoundDescriptors& d) {
+  for (uint32_t i = 0; i < d.nHotCbs; ++i) {
+    BufferImpl* b = d.hotCbs[i];
     if (!b) continue;  // the dummy buffer: offset 0
     const RingAlloc& r = CbRing(b);
-    if (r.buffer != desc_.cbBuffers[i]) return BindDescriptors(cmd);
-    desc_.dynOffsets[i] = static_cast<uint32_t>(r.offset);
+    if (r.buffer != d.cbBuffers[i]) return false;
+    d.dynOffsets[i] = static_cast<uint32_t>(r.offset);
   }
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, desc_.hotLayout, 0, 1, &desc_.set,
-                          desc_.nHotCbs, desc_.dynOffsets);
+  vkCmdBindDescriptorSets(cmd, point, d.hotLayout, 0, 1, &d.set, d.nHotCbs, d.dynOffsets);
   return true;
 }
 

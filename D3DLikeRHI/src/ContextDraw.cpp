@@ -26,6 +26,10 @@ const char* OnceErrorMessage(OnceError e) {
       return "draw skipped: hull and domain shaders need a PRIMITIVE_TOPOLOGY_<n>_CONTROL_POINT_PATCHLIST topology";
     case OnceError::GeometryInputMismatch:
       return "draw skipped: the geometry shader's input primitive (point/line/triangle) differs from the topology's (or the tessellator's output)";
+    case OnceError::NoComputeShader: return "Dispatch skipped: no compute shader is bound";
+    case OnceError::UnboundUav:
+      return "dispatch/draw skipped: the shader writes a UAV slot that has no view of the kind it declares (RWTexture2D or RW buffer) bound";
+    case OnceError::NoFragmentStores: return "draw skipped: pixel-shader UAVs need fragmentStoresAndAtomics, which this adapter lacks";
   }
   return "?";
 }
@@ -138,9 +142,13 @@ PerStage<ShaderBase*> ContextImpl::BoundShaders() const {
 void ContextImpl::UseDrawResources(bool indexed) {
   if (dirty_ & (kDescriptors | kSrvLayouts)) {
     for (const auto& s : program_->srvs)
-      if (SRVImpl* v = state_.stages[s.stage].shaderResources[s.slot].Get())
+      if (SRVImpl* v = state_.stages[s.stage].shaderResources[s.slot].Get(); v && v->v.tex)
         UseTexture(v->v.tex, v->v.range(), usage::ShaderRead);
   }
+  // Buffer SRVs and pixel-shader UAVs (compute and unordered access); a buffer
+  // written since the last draw raises kVertexBuffers.
+  if ((dirty_ & (kDescriptors | kSrvLayouts | kVertexBuffers | kUavs)) || program_->HasUavs())
+    UseShaderViews(*program_, ShaderStage::Pixel);
   const InputAssemblerState& ia = state_.ia;
   if ((dirty_ & kVertexBuffers) && ia.layout) {
     for (uint32_t m = ia.layout->slotMask; m; m &= m - 1) {
@@ -159,6 +167,8 @@ bool ContextImpl::CommitSlow(bool indexed) {
     if (!program_) return ErrorOnce(OnceError::ProgramLayoutFailed), false;
     dirty_ |= kDescriptors | kConstants;
   }
+  if (program_->HasUavs() && !dev_->features().fragmentStores) return ErrorOnce(OnceError::NoFragmentStores), false;
+  if (program_->HasUavs() && !UavsBound(*program_, ShaderStage::Pixel)) return ErrorOnce(OnceError::UnboundUav), false;
   UseDrawResources(indexed);
   if (rec_) RetainDrawState(indexed);
   if (HasPendingBarriers()) FlushBarriers();
@@ -170,6 +180,7 @@ bool ContextImpl::CommitSlow(bool indexed) {
   if (indexed && (dirty_ & kIndexBuffer) && !BindIndexBuffer(cmd)) return false;
   if ((dirty_ & (kDescriptors | kConstants)) && !BindDescriptors(cmd)) return false;
   dirty_ = indexed ? 0u : (dirty_ & kIndexBuffer);
+  if (program_->HasUavs()) dirty_ |= kUavs;  // D3D11 orders UAV writes of consecutive draws
   return true;
 }
 
@@ -276,15 +287,19 @@ bool ContextImpl::BindIndexBuffer(VkCommandBuffer cmd) {
 // constant buffer the program uses). A new set is written only when a bound
 // SRV/sampler/CB changed identity or a CB's ring slice moved to another chunk.
 bool ContextImpl::BindDescriptors(VkCommandBuffer cmd) {
-  const ProgramLayout& p = *program_;
+  return BindSet(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, *program_, desc_, (dirty_ & kDescriptors) != 0);
+}
+
+bool ContextImpl::BindSet(VkCommandBuffer cmd, VkPipelineBindPoint point, const ProgramLayout& p,
+                          BoundDescriptors& d, bool changed) {
   const uint32_t nCB = static_cast<uint32_t>(p.cbs.size());
-  desc_.hotLayout = VK_NULL_HANDLE;
-  desc_.nHotCbs = 0;
-  if (nCB == 0 && p.srvs.empty() && p.samplers.empty()) return true;
-  bool newSet = (dirty_ & kDescriptors) || !desc_.set;
+  d.hotLayout = VK_NULL_HANDLE;
+  d.nHotCbs = 0;
+  if (p.Empty()) return true;
+  bool newSet = changed || !d.set;
   for (uint32_t i = 0; i < nCB; ++i) {
     const auto& s = p.cbs[i];
-    BufferImpl* b = state_.stages[s.stage].constantBuffers[s.slot].Get();
+    BufferImpl* b = Stage(s.stage).constantBuffers[s.slot].Get();
     VkBuffer buf = dev_->dummies().uniform;
     uint32_t off = 0, range = static_cast<uint32_t>(dev_->dummies().uniformSize);
     if (b) {
@@ -293,14 +308,14 @@ bool ContextImpl::BindDescriptors(VkCommandBuffer cmd) {
       off = static_cast<uint32_t>(r.offset);
       range = b->size();
     }
-    if (buf != desc_.cbBuffers[i] || range != desc_.cbRanges[i]) newSet = true;
-    desc_.dynOffsets[i] = off;
-    desc_.hotCbs[i] = b;
+    if (buf != d.cbBuffers[i] || range != d.cbRanges[i]) newSet = true;
+    d.dynOffsets[i] = off;
+    d.hotCbs[i] = b;
   }
-  if (newSet && !WriteNewSet()) return false;
-  desc_.hotLayout = p.layout;
-  desc_.nHotCbs = nCB;
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, p.layout, 0, 1, &desc_.set, nCB, desc_.dynOffsets);
+  if (newSet && !WriteSet(p, d)) return false;
+  d.hotLayout = p.layout;
+  d.nHotCbs = nCB;
+  vkCmdBindDescriptorSets(cmd, point, p.layout, 0, 1, &d.set, nCB, d.dynOffsets);
   return true;
 }
 
@@ -313,42 +328,64 @@ VkWriteDescriptorSet WriteOf(VkDescriptorSet set, uint32_t binding, VkDescriptor
   w.descriptorType = type;
   return w;
 }
+// At most every binding of every graphics stage in one set.
+constexpr uint32_t kMaxWrites = kStageCount * kStageBindingStride;
 }  // namespace
 
-bool ContextImpl::WriteNewSet() {
-  VkDescriptorSet set = AllocateSet(program_->setLayout);
+bool ContextImpl::WriteSet(const ProgramLayout& p, BoundDescriptors& d) {
+  VkDescriptorSet set = AllocateSet(p.setLayout);
   if (!set) return ErrorOnce(OnceError::DescriptorSetFailed), false;
   const DummyResources& dummy = dev_->dummies();
-  VkDescriptorBufferInfo bufInfo[BoundDescriptors::kMaxCbs];
-  VkDescriptorImageInfo imgInfo[kStageCount * (kMaxTextureSlots + kMaxSamplerSlots)];
-  VkWriteDescriptorSet writes[kStageCount * (kMaxConstantBufferSlots + kMaxTextureSlots + kMaxSamplerSlots)];
-  uint32_t nw = 0, ni = 0;
-  const uint32_t nCB = static_cast<uint32_t>(program_->cbs.size());
-  for (uint32_t i = 0; i < nCB; ++i) {
-    const auto& s = program_->cbs[i];
-    BufferImpl* b = state_.stages[s.stage].constantBuffers[s.slot].Get();
-    bufInfo[i] = {b ? CbRing(b).buffer : dummy.uniform, 0, b ? b->size() : dummy.uniformSize};
-    desc_.cbBuffers[i] = bufInfo[i].buffer;
-    desc_.cbRanges[i] = static_cast<uint32_t>(bufInfo[i].range);
+  VkDescriptorBufferInfo bufInfo[kMaxWrites];
+  VkDescriptorImageInfo imgInfo[kMaxWrites];
+  VkWriteDescriptorSet writes[kMaxWrites];
+  uint32_t nw = 0, ni = 0, nb = 0;
+  for (const auto& s : p.cbs) {
+    BufferImpl* b = Stage(s.stage).constantBuffers[s.slot].Get();
+    bufInfo[nb] = {b ? CbRing(b).buffer : dummy.uniform, 0, b ? b->size() : dummy.uniformSize};
+    d.cbBuffers[nb] = bufInfo[nb].buffer;
+    d.cbRanges[nb] = static_cast<uint32_t>(bufInfo[nb].range);
     writes[nw] = WriteOf(set, s.binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC);
-    writes[nw++].pBufferInfo = &bufInfo[i];
+    writes[nw++].pBufferInfo = &bufInfo[nb++];
   }
-  for (const auto& s : program_->srvs) {
-    const SRVImpl* v = state_.stages[s.stage].shaderResources[s.slot].Get();
+  for (const auto& s : p.srvs) {
+    const SRVImpl* v = Stage(s.stage).shaderResources[s.slot].Get();
+    const bool image = v && v->v.tex;
     VkImageView unbound = dummy.views[s.dummy] ? dummy.views[s.dummy] : (s.image1D ? dummy.view1D : dummy.view2D);
-    imgInfo[ni] = {VK_NULL_HANDLE, v ? v->v.Current() : unbound,
+    imgInfo[ni] = {VK_NULL_HANDLE, image ? v->v.Current() : unbound,
                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
     writes[nw] = WriteOf(set, s.binding, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE);
     writes[nw++].pImageInfo = &imgInfo[ni++];
   }
-  for (const auto& s : program_->samplers) {
-    const SamplerImpl* smp = state_.stages[s.stage].samplers[s.slot].Get();
+  for (const auto& s : p.samplers) {
+    const SamplerImpl* smp = Stage(s.stage).samplers[s.slot].Get();
     imgInfo[ni] = {smp ? smp->sampler : dummy.sampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED};
     writes[nw] = WriteOf(set, s.binding, VK_DESCRIPTOR_TYPE_SAMPLER);
     writes[nw++].pImageInfo = &imgInfo[ni++];
   }
+  // Compute and unordered access: buffer SRVs (dummy when unbound) and UAVs
+  // (bound with the right kind: UavsBound checked it).
+  for (const auto& s : p.bufferSrvs) {
+    const SRVImpl* v = Stage(s.stage).shaderResources[s.slot].Get();
+    const bool buffer = v && v->v.buf;
+    bufInfo[nb] = buffer ? VkDescriptorBufferInfo{v->v.buf->vkBuffer(), v->v.bufOffset, v->v.bufRange}
+                         : VkDescriptorBufferInfo{dummy.uniform, 0, VK_WHOLE_SIZE};
+    writes[nw] = WriteOf(set, s.binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    writes[nw++].pBufferInfo = &bufInfo[nb++];
+  }
+  for (const auto& s : p.uavBuffers) {
+    const UAVImpl* v = UavAt(s.stage, s.slot);
+    bufInfo[nb] = {v->v.buf->vkBuffer(), v->v.bufOffset, v->v.bufRange};
+    writes[nw] = WriteOf(set, s.binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    writes[nw++].pBufferInfo = &bufInfo[nb++];
+  }
+  for (const auto& s : p.uavImages) {
+    imgInfo[ni] = {VK_NULL_HANDLE, UavAt(s.stage, s.slot)->v.Current(), VK_IMAGE_LAYOUT_GENERAL};
+    writes[nw] = WriteOf(set, s.binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
+    writes[nw++].pImageInfo = &imgInfo[ni++];
+  }
   vkUpdateDescriptorSets(dev_->vk(), nw, writes, 0, nullptr);
-  desc_.set = set;
+  d.set = set;
   return true;
 }
 

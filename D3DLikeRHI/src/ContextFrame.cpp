@@ -140,10 +140,12 @@ VkDescriptorSet ContextImpl::AllocateSet(VkDescriptorSetLayout layout) {
           {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kSetsPerPool * 8},
           {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, kSetsPerPool * 16},
           {VK_DESCRIPTOR_TYPE_SAMPLER, kSetsPerPool * 8},
+          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kSetsPerPool * 4},  // compute and unordered access
+          {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kSetsPerPool * 2},
       };
       VkDescriptorPoolCreateInfo ci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
       ci.maxSets = kSetsPerPool;
-      ci.poolSizeCount = 3;
+      ci.poolSizeCount = static_cast<uint32_t>(std::size(sizes));
       ci.pPoolSizes = sizes;
       VkDescriptorPool pool;
       if (vkCreateDescriptorPool(dev_->vk(), &ci, nullptr, &pool) != VK_SUCCESS) return VK_NULL_HANDLE;

@@ -26,6 +26,9 @@ void ContextImpl::MarkDirtyAll() {
   pipeline_ = VK_NULL_HANDLE;
   desc_.set = VK_NULL_HANDLE;
   std::fill(std::begin(desc_.cbBuffers), std::end(desc_.cbBuffers), VK_NULL_HANDLE);
+  computeDirty_ = kAll;
+  computePipeline_ = VK_NULL_HANDLE;
+  computeDesc_ = BoundDescriptors{};
 }
 
 void ContextImpl::IASetInputLayout(InputLayout* layout) {
@@ -68,10 +71,10 @@ void ContextImpl::IASetPrimitiveTopology(PRIMITIVE_TOPOLOGY t) {
 }
 
 void ContextImpl::SetShader(ShaderStage stage, ShaderBase* shader) {
-  ComPtr<ShaderBase>& slot = state_.stages[stage].shader;
+  ComPtr<ShaderBase>& slot = Stage(stage).shader;
   if (shader == slot.Get()) return;
   Assign(slot, shader);
-  dirty_ |= kProgram | kPipeline;
+  MarkDirty(stage, kProgram | kPipeline);
 }
 void ContextImpl::VSSetShader(VertexShader* s) { SetShader(ShaderStage::Vertex, static_cast<VertexShaderImpl*>(s)); }
 void ContextImpl::PSSetShader(PixelShader* s) { SetShader(ShaderStage::Pixel, static_cast<PixelShaderImpl*>(s)); }
@@ -79,38 +82,38 @@ void ContextImpl::PSSetShader(PixelShader* s) { SetShader(ShaderStage::Pixel, st
 void ContextImpl::SetCBs(ShaderStage stage, UINT start, UINT num, Buffer* const* buffers) {
   if (!ValidateSlots(*dev_, StagePrefix(stage), "SetConstantBuffers", start, num, kMaxConstantBufferSlots))
     return;
-  auto& slots = state_.stages[stage].constantBuffers;
+  auto& slots = Stage(stage).constantBuffers;
   for (UINT i = 0; i < num; ++i)
     Assign(slots[start + i], CheckedConstantBuffer(*dev_, stage, buffers ? buffers[i] : nullptr, start + i));
-  dirty_ |= kConstants | kCbSlots;
+  MarkDirty(stage, kConstants | kCbSlots);
 }
 void ContextImpl::VSSetConstantBuffers(UINT s, UINT n, Buffer* const* b) { SetCBs(ShaderStage::Vertex, s, n, b); }
 void ContextImpl::PSSetConstantBuffers(UINT s, UINT n, Buffer* const* b) { SetCBs(ShaderStage::Pixel, s, n, b); }
 
 void ContextImpl::SetSRVs(ShaderStage stage, UINT start, UINT num, ShaderResourceView* const* views) {
   if (!ValidateSlots(*dev_, StagePrefix(stage), "SetShaderResources", start, num, kMaxTextureSlots)) return;
-  auto& slots = state_.stages[stage].shaderResources;
+  auto& slots = Stage(stage).shaderResources;
   for (UINT i = 0; i < num; ++i) {
     auto* v = views ? static_cast<SRVImpl*>(views[i]) : nullptr;
-    if (v && BoundAsTarget(v->v.tex)) {
+    if (v && BoundForOutput(v->v)) {
       // D3D11 hazard rule: a resource bound for output cannot be bound as input.
-      dev_->Log(LogLevel::Warning, "%sSetShaderResources: slot %u: the texture is bound as a render target; bound as null",
-                StagePrefix(stage), start + i);
+      dev_->Log(LogLevel::Warning, "%sSetShaderResources: slot %u: the %s is bound as a render target or UAV; bound as null",
+                StagePrefix(stage), start + i, v->v.tex ? "texture" : "buffer");
       v = nullptr;
     }
     Assign(slots[start + i], v);
   }
-  dirty_ |= kDescriptors;
+  MarkDirty(stage, kDescriptors);
 }
 void ContextImpl::VSSetShaderResources(UINT s, UINT n, ShaderResourceView* const* v) { SetSRVs(ShaderStage::Vertex, s, n, v); }
 void ContextImpl::PSSetShaderResources(UINT s, UINT n, ShaderResourceView* const* v) { SetSRVs(ShaderStage::Pixel, s, n, v); }
 
 void ContextImpl::SetSamplers(ShaderStage stage, UINT start, UINT num, SamplerState* const* samplers) {
   if (!ValidateSlots(*dev_, StagePrefix(stage), "SetSamplers", start, num, kMaxSamplerSlots)) return;
-  auto& slots = state_.stages[stage].samplers;
+  auto& slots = Stage(stage).samplers;
   for (UINT i = 0; i < num; ++i)
     Assign(slots[start + i], samplers ? static_cast<SamplerImpl*>(samplers[i]) : nullptr);
-  dirty_ |= kDescriptors;
+  MarkDirty(stage, kDescriptors);
 }
 void ContextImpl::VSSetSamplers(UINT s, UINT n, SamplerState* const* v) { SetSamplers(ShaderStage::Vertex, s, n, v); }
 void ContextImpl::PSSetSamplers(UINT s, UINT n, SamplerState* const* v) { SetSamplers(ShaderStage::Pixel, s, n, v); }
@@ -190,19 +193,31 @@ void ContextImpl::OMSetRenderTargets(UINT num, RenderTargetView* const* rtvs, De
 void ContextImpl::UnbindAliasedSRVs() {
   for (auto& stage : state_.stages)
     for (auto& srv : stage.shaderResources)
-      if (srv && BoundAsTarget(srv->v.tex)) {
+      if (srv && BoundForOutput(srv->v)) {
         srv = nullptr;
         dirty_ |= kDescriptors;
       }
+  for (auto& srv : state_.cs.stage.shaderResources)  // compute and unordered access
+    if (srv && BoundForOutput(srv->v)) {
+      srv = nullptr;
+      computeDirty_ |= kDescriptors;
+    }
 }
 
-// Whether this context's output merger writes `t` (hazards are per context:
-// another thread's deferred context may render to it meanwhile).
-bool ContextImpl::BoundAsTarget(const TextureCore* t) const {
+// Whether this context writes the viewed resource: a render target, the depth
+// buffer or a UAV (compute or pixel stage). Hazards are per context: another
+// thread's deferred context may write the resource meanwhile.
+bool ContextImpl::BoundForOutput(const ViewCore& v) const {
   const OutputMergerState& om = state_.om;
-  for (uint32_t i = 0; i < om.numRenderTargets; ++i)
-    if (om.renderTargets[i] && om.renderTargets[i]->v.tex == t) return true;
-  return om.depthStencilView && om.depthStencilView->v.tex == t;
+  if (v.tex) {
+    for (uint32_t i = 0; i < om.numRenderTargets; ++i)
+      if (om.renderTargets[i] && om.renderTargets[i]->v.tex == v.tex) return true;
+    if (om.depthStencilView && om.depthStencilView->v.tex == v.tex) return true;
+  }
+  for (const ComPtr<UAVImpl>* slots : {state_.cs.uavs, state_.psUavs.uavs})
+    for (uint32_t i = 0; i < kMaxUnorderedAccessSlots; ++i)
+      if (slots[i] && (v.tex ? slots[i]->v.tex == v.tex : slots[i]->v.buf == v.buf)) return true;
+  return false;
 }
 
 void ContextImpl::OMGetRenderTargets(UINT num, RenderTargetView** rtvs, DepthStencilView** dsv) {
@@ -220,8 +235,12 @@ void ContextImpl::OMGetRenderTargets(UINT num, RenderTargetView** rtvs, DepthSte
 void ContextImpl::ClearState() {
   EndRendering();
   OMSetRenderTargets(0, nullptr, nullptr);  // ends the rendering scope
+  CSSetUnorderedAccessViews(0, kMaxUnorderedAccessSlots, nullptr, nullptr);  // and the UAV counts
+  OMSetRenderTargetsAndUnorderedAccessViews(KEEP_RENDER_TARGETS_AND_DEPTH_STENCIL, nullptr, nullptr, 0,
+                                            kMaxUnorderedAccessSlots, nullptr, nullptr);
   state_ = ContextState{};
   dirty_ = kAll;
+  computeDirty_ = kAll;
 }
 
 }  // namespace d3dl::impl

@@ -48,11 +48,24 @@ struct OutputMergerState {
   UINT sampleMask = 0xffffffffu;  // OMSetBlendState's: which samples of MSAA targets are written
 };
 
+// Compute and unordered access: the compute stage is not a graphics stage
+// (not in kStages) and keeps its own block with its UAV slots; the pixel
+// shader's UAVs (OMSetRenderTargetsAndUnorderedAccessViews) sit beside the OM.
+struct ComputeState {
+  ShaderStageState stage;
+  ComPtr<UAVImpl> uavs[kMaxUnorderedAccessSlots];
+};
+struct PixelUavState {
+  ComPtr<UAVImpl> uavs[kMaxUnorderedAccessSlots];
+};
+
 struct ContextState {
   InputAssemblerState ia;
   PerStage<ShaderStageState> stages;
   RasterizerStageState rs;
   OutputMergerState om;
+  ComputeState cs;        // compute and unordered access
+  PixelUavState psUavs;   // compute and unordered access
 };
 
 // What changed since the last commit: Commit re-records only that.
@@ -70,6 +83,7 @@ enum Dirty : uint32_t {
   kProgram = 1u << 10,
   kTopology = 1u << 11,
   kCbSlots = 1u << 12,     // a CB slot was (re)bound: the hot CB list is out of date
+  kUavs = 1u << 20,        // pixel-shader UAVs: barriers before the next draw (compute and unordered access)
   kAll = 0xffffffffu,
 };
 
@@ -91,6 +105,10 @@ enum class OnceError : uint32_t {
   PatchListWithoutHull,
   HullWithoutPatchList,
   GeometryInputMismatch,
+  // Compute and unordered access
+  NoComputeShader,
+  UnboundUav,
+  NoFragmentStores,
 };
 const char* OnceErrorMessage(OnceError e);
 

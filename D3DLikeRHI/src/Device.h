@@ -18,11 +18,12 @@ struct DeviceFeatures {
   // Tessellation and geometry stages, pipeline statistics queries.
   bool tessellation = false, geometry = false, pipelineStatistics = false;
   bool cubeArray = false, independentBlend = false;  // formats, views, MSAA
+  bool fragmentStores = false;  // pixel-shader UAVs (fragmentStoresAndAtomics)
 };
 
 // Bound where the shader expects a resource but none is bound.
 struct DummyResources {
-  VkBuffer uniform = VK_NULL_HANDLE;  // zeroed; also the vertex buffer of unbound slots
+  VkBuffer uniform = VK_NULL_HANDLE;  // zeroed; also the vertex buffer and buffer SRV of unbound slots
   VkDeviceSize uniformSize = 0;
   VkImageView view2D = VK_NULL_HANDLE, view1D = VK_NULL_HANDLE;
   VkSampler sampler = VK_NULL_HANDLE;
@@ -75,6 +76,9 @@ class DeviceImpl final : public Device {
   HRESULT CreateInputLayout(const INPUT_ELEMENT_DESC*, UINT, const void*, size_t,
                             InputLayout**) override;
   HRESULT CreateQuery(const QUERY_DESC*, Query**) override;
+  HRESULT CreateUnorderedAccessView(Resource*, const UNORDERED_ACCESS_VIEW_DESC*,
+                                    UnorderedAccessView**) override;
+  HRESULT CreateComputeShader(const void*, size_t, ComputeShader**) override;
   HRESULT CreateSwapChainForWindow(GLFWwindow*, const SWAP_CHAIN_DESC*, SwapChain**) override;
   HRESULT CreateHeadlessSwapChain(const SWAP_CHAIN_DESC*, SwapChain**) override;
   void GetImmediateContext(DeviceContext** context) override;

@@ -187,6 +187,8 @@ bool DeviceImpl::EnableFeatures(VkPhysicalDeviceFeatures2* e2, VkPhysicalDeviceV
   e.depthClamp = f.depthClamp;
   e.independentBlend = f.independentBlend;
   e.depthBiasClamp = f.depthBiasClamp;
+  e.fragmentStoresAndAtomics = f.fragmentStoresAndAtomics;
+  features_.fragmentStores = f.fragmentStoresAndAtomics;
   features_.mirrorOnce = f12.samplerMirrorClampToEdge;
   features_.minmax = f12.samplerFilterMinmax;
   features_.anisotropy = f.samplerAnisotropy;
@@ -305,7 +307,8 @@ bool DeviceImpl::CreateDummies() {
   dummies_.uniformSize = std::min<VkDeviceSize>(65536, props_.limits.maxUniformBufferRange);
   VkDeviceMemory mem;
   if (!CreateBufferRaw(dummies_.uniformSize,
-                       VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                       VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                        false, &dummies_.uniform, &mem, nullptr))
     return false;
   dummyGarbage_.push_back({VK_OBJECT_TYPE_BUFFER, reinterpret_cast<uint64_t>(dummies_.uniform)});

@@ -47,6 +47,15 @@ void AddStageBindings(const ShaderReflection& r, ShaderStage stage, ProgramLayou
     } else if (b.type == VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE) {
       s.slot = static_cast<uint8_t>(b.binding - base - kTextureBase);
       prog->srvs.push_back(s);
+    } else if (b.type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE) {
+      s.slot = static_cast<uint8_t>(b.binding - base - kUnorderedAccessBase);
+      prog->uavImages.push_back(s);
+    } else if (b.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER && b.binding >= base + kUnorderedAccessBase) {
+      s.slot = static_cast<uint8_t>(b.binding - base - kUnorderedAccessBase);
+      prog->uavBuffers.push_back(s);
+    } else if (b.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER) {
+      s.slot = static_cast<uint8_t>(b.binding - base - kTextureBase);
+      prog->bufferSrvs.push_back(s);
     } else {
       s.slot = static_cast<uint8_t>(b.binding - base - kSamplerBase);
       prog->samplers.push_back(s);
@@ -65,20 +74,59 @@ ProgramLayout* PipelineCache::GetProgram(const PerStage<ShaderBase*>& shaders) {
   std::vector<VkDescriptorSetLayoutBinding> bindings;
   for (ShaderStage s : kStages)
     if (shaders[s]) AddStageBindings(shaders[s]->refl, s, prog.get(), &bindings);
+  if (!CreateLayout(bindings, prog.get())) return nullptr;
+  ProgramLayout* p = prog.get();
+  programs_[key] = std::move(prog);
+  return p;
+}
+
+bool PipelineCache::CreateLayout(const std::vector<VkDescriptorSetLayoutBinding>& bindings, ProgramLayout* prog) {
   VkDescriptorSetLayoutCreateInfo sci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   sci.bindingCount = static_cast<uint32_t>(bindings.size());
   sci.pBindings = bindings.data();
-  if (vkCreateDescriptorSetLayout(dev_->vk(), &sci, nullptr, &prog->setLayout) != VK_SUCCESS) return nullptr;
+  if (vkCreateDescriptorSetLayout(dev_->vk(), &sci, nullptr, &prog->setLayout) != VK_SUCCESS) return false;
   VkPipelineLayoutCreateInfo lci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   lci.setLayoutCount = 1;
   lci.pSetLayouts = &prog->setLayout;
   if (vkCreatePipelineLayout(dev_->vk(), &lci, nullptr, &prog->layout) != VK_SUCCESS) {
     vkDestroyDescriptorSetLayout(dev_->vk(), prog->setLayout, nullptr);
-    return nullptr;
+    return false;
   }
+  return true;
+}
+
+// ---------------------------------------------------------------------------
+// Compute and unordered access: layouts and pipelines keyed by the shader.
+ProgramLayout* PipelineCache::GetComputeProgram(ShaderBase* cs) {
+  auto it = computePrograms_.find(cs->cacheId);
+  if (it != computePrograms_.end()) return it->second.get();
+  auto prog = std::make_unique<ProgramLayout>();
+  std::vector<VkDescriptorSetLayoutBinding> bindings;
+  AddStageBindings(cs->refl, ShaderStage::Compute, prog.get(), &bindings);
+  if (!CreateLayout(bindings, prog.get())) return nullptr;
   ProgramLayout* p = prog.get();
-  programs_[key] = std::move(prog);
+  computePrograms_[cs->cacheId] = std::move(prog);
   return p;
+}
+
+VkPipeline PipelineCache::GetComputePipeline(ShaderBase* cs, ProgramLayout* prog) {
+  auto it = computePipelines_.find(cs->cacheId);
+  if (it != computePipelines_.end()) return it->second;
+  VkComputePipelineCreateInfo ci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  ci.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  ci.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  ci.stage.module = cs->module;
+  ci.stage.pName = cs->refl.entry.c_str();
+  ci.layout = prog->layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  const VkResult r = vkCreateComputePipelines(dev_->vk(), VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline);
+  if (r != VK_SUCCESS) {
+    dev_->Log(LogLevel::Error, "vkCreateComputePipelines failed (VkResult %d)", r);
+    return VK_NULL_HANDLE;
+  }
+  ++dev_->stats.PipelinesCreated;
+  computePipelines_[cs->cacheId] = pipeline;
+  return pipeline;
 }
 
 namespace {
@@ -200,6 +248,15 @@ VkPipeline PipelineCache::GetPipeline(const PipelineKey& key, const PipelineInpu
 
 void PipelineCache::ForgetShader(uint64_t cacheId) {
   std::lock_guard<std::mutex> lock(mutex_);
+  if (auto it = computePipelines_.find(cacheId); it != computePipelines_.end()) {
+    dev_->Defer(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<uint64_t>(it->second));
+    computePipelines_.erase(it);
+  }
+  if (auto it = computePrograms_.find(cacheId); it != computePrograms_.end()) {
+    dev_->Defer(VK_OBJECT_TYPE_PIPELINE_LAYOUT, reinterpret_cast<uint64_t>(it->second->layout));
+    dev_->Defer(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, reinterpret_cast<uint64_t>(it->second->setLayout));
+    computePrograms_.erase(it);
+  }
   for (auto it = pipelines_.begin(); it != pipelines_.end();) {
     if (it->first.shaders.Uses(cacheId)) {
       dev_->Defer(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<uint64_t>(it->second));
@@ -227,6 +284,13 @@ void PipelineCache::Destroy() {
     vkDestroyDescriptorSetLayout(dev_->vk(), p->setLayout, nullptr);
   }
   programs_.clear();
+  for (auto& [k, p] : computePipelines_) vkDestroyPipeline(dev_->vk(), p, nullptr);
+  computePipelines_.clear();
+  for (auto& [k, p] : computePrograms_) {
+    vkDestroyPipelineLayout(dev_->vk(), p->layout, nullptr);
+    vkDestroyDescriptorSetLayout(dev_->vk(), p->setLayout, nullptr);
+  }
+  computePrograms_.clear();
 }
 
 }  // namespace d3dl::impl

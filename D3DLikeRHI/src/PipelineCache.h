@@ -23,6 +23,13 @@ struct ProgramLayout {
     uint8_t dummy;  // DummyViewIndex of the declared image (unbound SRVs)
   };
   std::vector<Slot> cbs, srvs, samplers;  // sorted by binding
+  // Compute and unordered access: StructuredBuffer/ByteAddressBuffer (t#),
+  // RWTexture2D (u#) and RW structured/raw buffers (u#).
+  std::vector<Slot> bufferSrvs, uavImages, uavBuffers;
+  bool HasUavs() const { return !uavImages.empty() || !uavBuffers.empty(); }
+  bool Empty() const {
+    return cbs.empty() && srvs.empty() && samplers.empty() && bufferSrvs.empty() && !HasUavs();
+  }
 };
 
 // Cache ids of the bound shader of each stage (0: none).
@@ -68,9 +75,15 @@ class PipelineCache {
   ProgramLayout* GetProgram(const PerStage<ShaderBase*>& shaders);
   VkPipeline GetPipeline(const PipelineKey& key, const PipelineInputs& in, ProgramLayout* prog);
   void ForgetShader(uint64_t cacheId);
+  // Compute: one layout and one pipeline per compute shader (its cache id).
+  ProgramLayout* GetComputeProgram(ShaderBase* cs);
+  VkPipeline GetComputePipeline(ShaderBase* cs, ProgramLayout* prog);
 
  private:
+  bool CreateLayout(const std::vector<VkDescriptorSetLayoutBinding>& bindings, ProgramLayout* prog);
   DeviceImpl* dev_ = nullptr;
+  std::unordered_map<uint64_t, std::unique_ptr<ProgramLayout>> computePrograms_;
+  std::unordered_map<uint64_t, VkPipeline> computePipelines_;
   std::unordered_map<ShaderIds, std::unique_ptr<ProgramLayout>, WordHash> programs_;
   std::unordered_map<PipelineKey, VkPipeline, WordHash> pipelines_;
   // Deferred contexts: contexts on several threads share the cache.

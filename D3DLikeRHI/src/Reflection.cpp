@@ -230,6 +230,7 @@ bool StageOfModel(uint32_t model, ShaderStage* stage) {
     case spirv::ModelTessellationEvaluation: *stage = ShaderStage::Domain; return true;
     case spirv::ModelGeometry: *stage = ShaderStage::Geometry; return true;
     case spirv::ModelFragment: *stage = ShaderStage::Pixel; return true;
+    case spirv::ModelGLCompute: *stage = ShaderStage::Compute; return true;
     default: return false;
   }
 }
@@ -270,7 +271,7 @@ bool ReflectSpirv(const uint32_t* words, size_t n, ShaderReflection* out, std::s
   out->entry = m.entry;
   if (!StageOfModel(m.model, &out->stage)) {
     *error = "unsupported execution model " + std::to_string(m.model) +
-             " (only vertex, hull, domain, geometry and pixel shaders)";
+             " (only vertex, hull, domain, geometry, pixel and compute shaders)";
     return false;
   }
   ReflectPrimitives(m.modes, out);

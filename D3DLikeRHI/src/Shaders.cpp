@@ -38,15 +38,23 @@ std::vector<uint32_t> StripGoogleDecorations(const std::vector<uint32_t>& in) {
   return out;
 }
 
-RegisterClass ClassOf(VkDescriptorType type, bool* known) {
+// Storage buffers are StructuredBuffer/ByteAddressBuffer (t#) or their RW
+// forms (u#): the binding's range tells which.
+RegisterClass ClassOf(const ReflectedBinding& b, uint32_t stageBase, bool* known) {
   *known = true;
-  switch (type) {
+  switch (b.type) {
     case VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC: return RegisterClass::ConstantBuffer;
     case VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE: return RegisterClass::Texture;
     case VK_DESCRIPTOR_TYPE_SAMPLER: return RegisterClass::Sampler;
+    case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: *known = !b.image1D; return RegisterClass::UnorderedAccess;  // RWTexture2D
+    case VK_DESCRIPTOR_TYPE_STORAGE_BUFFER:
+      return b.binding >= stageBase + kUnorderedAccessBase ? RegisterClass::UnorderedAccess : RegisterClass::Texture;
     default: *known = false; return RegisterClass::ConstantBuffer;
   }
 }
+
+// D3D11.0 has UAVs in the compute and pixel stages only.
+bool StageHasUavs(ShaderStage s) { return s == ShaderStage::Compute || s == ShaderStage::Pixel; }
 
 // Checks that every binding follows the formula of Bindings.h for the stage.
 bool CheckBindings(const ShaderReflection& r, ShaderStage stage, std::string* error) {
@@ -54,12 +62,14 @@ bool CheckBindings(const ShaderReflection& r, ShaderStage stage, std::string* er
   char buf[256];
   for (const auto& b : r.bindings) {
     bool known;
-    const RegisterClass cls = ClassOf(b.type, &known);
+    const RegisterClass cls = ClassOf(b, base, &known);
     const uint32_t lo = base + RegisterClassBase(cls), hi = lo + RegisterSlotCount(cls);
     if (b.set != 0)
       std::snprintf(buf, sizeof(buf), "'%s' uses descriptor set %u (only set 0 is used)", b.name.c_str(), b.set);
     else if (!known)
-      std::snprintf(buf, sizeof(buf), "'%s' (binding %u) is a resource kind D3DLikeRHI does not bind (only cbuffer, Texture1D/2D, SamplerState)", b.name.c_str(), b.binding);
+      std::snprintf(buf, sizeof(buf), "'%s' (binding %u) is a resource kind D3DLikeRHI does not bind (only cbuffer, Texture1D/2D, SamplerState, (RW)StructuredBuffer, (RW)ByteAddressBuffer, RWTexture2D)", b.name.c_str(), b.binding);
+    else if (cls == RegisterClass::UnorderedAccess && !StageHasUavs(stage))
+      std::snprintf(buf, sizeof(buf), "'%s' (binding %u) is an unordered access view; only compute and pixel shaders have them", b.name.c_str(), b.binding);
     else if (b.binding < lo || b.binding >= hi)
       std::snprintf(buf, sizeof(buf), "'%s' has binding %u, outside [%u, %u) required by the binding formula for this stage; compile with the shifts of cmake/HLSL.cmake", b.name.c_str(), b.binding, lo, hi);
     else
@@ -101,6 +111,7 @@ template class ShaderImpl<PixelShader>;
 template class ShaderImpl<HullShader>;
 template class ShaderImpl<DomainShader>;
 template class ShaderImpl<GeometryShader>;
+template class ShaderImpl<ComputeShader>;
 
 template <class Impl, class Iface>
 static HRESULT CreateShader(DeviceImpl* dev, const char* fn, ShaderStage stage, const void* code, size_t len,
@@ -136,6 +147,9 @@ HRESULT DeviceImpl::CreateVertexShader(const void* code, size_t len, VertexShade
 }
 HRESULT DeviceImpl::CreatePixelShader(const void* code, size_t len, PixelShader** out) {
   return CreateShader<PixelShaderImpl>(this, "CreatePixelShader", ShaderStage::Pixel, code, len, out);
+}
+HRESULT DeviceImpl::CreateComputeShader(const void* code, size_t len, ComputeShader** out) {
+  return CreateShader<ComputeShaderImpl>(this, "CreateComputeShader", ShaderStage::Compute, code, len, out);
 }
 
 // Tessellation and geometry stages: only on adapters that have them.

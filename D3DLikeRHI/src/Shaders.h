@@ -79,6 +79,7 @@ using PixelShaderImpl = ShaderImpl<PixelShader>;
 using HullShaderImpl = ShaderImpl<HullShader>;
 using DomainShaderImpl = ShaderImpl<DomainShader>;
 using GeometryShaderImpl = ShaderImpl<GeometryShader>;
+using ComputeShaderImpl = ShaderImpl<ComputeShader>;
 
 class InputLayoutImpl final : public Child<InputLayout> {
  public:

@@ -24,7 +24,7 @@ enum : uint32_t {
 // stages that the reflection reads.
 enum : uint32_t {
   ModelVertex = 0, ModelTessellationControl = 1, ModelTessellationEvaluation = 2, ModelGeometry = 3,
-  ModelFragment = 4,
+  ModelFragment = 4, ModelGLCompute = 5,
 };
 enum : uint32_t {
   ModePointMode = 10, ModeInputPoints = 19, ModeInputLines = 20, ModeInputLinesAdjacency = 21,

@@ -30,7 +30,7 @@ constexpr const char* StagePrefix(ShaderStage s) {
     case ShaderStage::Hull: return "HS";
     case ShaderStage::Domain: return "DS";
     case ShaderStage::Geometry: return "GS";
-    case ShaderStage::Compute: return "CS";
+    case ShaderStage::Compute: return "CS";  // not in kStages: compute state is apart
   }
   return "?";
 }

@@ -62,6 +62,25 @@ inline constexpr Usage BufferCopySrc{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_T
                                      VK_IMAGE_LAYOUT_UNDEFINED, false};
 inline constexpr Usage BufferCopyDst{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                                      VK_IMAGE_LAYOUT_UNDEFINED, true};
+
+// Compute and unordered access: shader reads and writes of a given stage set.
+inline constexpr VkPipelineStageFlags2 kComputeStage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
+constexpr Usage SampledRead(VkPipelineStageFlags2 stages) {
+  return {stages, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, false};
+}
+constexpr Usage StorageBufferRead(VkPipelineStageFlags2 stages) {
+  return {stages, VK_ACCESS_2_SHADER_STORAGE_READ_BIT, VK_IMAGE_LAYOUT_UNDEFINED, false};
+}
+// A UAV: read and written, images in GENERAL; every use counts as a write,
+// so consecutive dispatches on one resource are serialised as in D3D11.
+constexpr Usage StorageWrite(VkPipelineStageFlags2 stages, bool image) {
+  return {stages, VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
+          image ? VK_IMAGE_LAYOUT_GENERAL : VK_IMAGE_LAYOUT_UNDEFINED, true};
+}
+inline constexpr Usage IndirectRead{VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT, VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT,
+                                    VK_IMAGE_LAYOUT_UNDEFINED, false};
+inline constexpr Usage BufferFillDst{VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_CLEAR_BIT,
+                                     VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED, true};
 }  // namespace usage
 
 // The barrier a use needs: source/destination stages, accesses and layouts.

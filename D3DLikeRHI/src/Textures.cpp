@@ -63,6 +63,7 @@ VkImageUsageFlags ImageUsage(const TEXTURE2D_DESC& d) {
   if (d.BindFlags & BIND_SHADER_RESOURCE) u |= VK_IMAGE_USAGE_SAMPLED_BIT;
   if (d.BindFlags & BIND_RENDER_TARGET) u |= VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
   if (d.BindFlags & BIND_DEPTH_STENCIL) u |= VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+  if (d.BindFlags & BIND_UNORDERED_ACCESS) u |= VK_IMAGE_USAGE_STORAGE_BIT;
   return u;
 }
 // Colour views may use another member of the format's family (typeless

@@ -59,6 +59,22 @@ HRESULT ValidateSrvShape(DeviceImpl& dev, const TextureCore& t, const SHADER_RES
 HRESULT ValidateTargetShape(DeviceImpl& dev, const ViewKindInfo& kind, const TextureCore& t, ViewDim dim,
                             UINT mip, const TEX_ARRAY_RANGE& range, ViewShape* shape);
 
+// Compute and unordered access (ValidateDevice.cpp).
+inline constexpr ViewKindInfo kUavKind{"CreateUnorderedAccessView", "ppUAView", BIND_UNORDERED_ACCESS,
+                                       "BIND_UNORDERED_ACCESS"};
+// What a buffer view names: its resource's elements [first, first + num).
+struct BufferViewRequest {
+  DXGI_FORMAT format;
+  UINT first, num, flags;
+  bool raw;  // BUFFEREX_SRV_FLAG_RAW / BUFFER_UAV_FLAG_RAW
+};
+// A structured or raw view of `r` (a buffer); *offset/*range in bytes.
+HRESULT ValidateBufferView(DeviceImpl& dev, const ViewKindInfo& kind, Resource* r, const void* out,
+                           const BufferViewRequest* req, VkDeviceSize* offset, VkDeviceSize* range);
+// A texture UAV: its format and mip (desc may be null).
+HRESULT ValidateTextureUav(DeviceImpl& dev, Resource* r, const UNORDERED_ACCESS_VIEW_DESC* desc, const void* out,
+                           ViewFormat* format, uint32_t* mip);
+
 HRESULT ValidateSamplerDesc(DeviceImpl& dev, const SAMPLER_DESC* desc, SamplerState** out);
 HRESULT ValidateBlendDesc(DeviceImpl& dev, const BLEND_DESC* desc, BlendState** out);
 HRESULT ValidateDepthStencilDesc(DeviceImpl& dev, const DEPTH_STENCIL_DESC* desc, DepthStencilState** out);
@@ -112,6 +128,19 @@ bool BlitIsLinear(const RECT& dstRect, const RECT& srcRect, FILTER filter);
 
 // "IASetPrimitiveTopology: topology N is not supported" outside 0..5, 33..64.
 bool ValidateTopology(DeviceImpl& dev, PRIMITIVE_TOPOLOGY t);
+
+// Compute and unordered access (ValidateContext.cpp).
+// A UAV to bind at `slot`, or nullptr (logged) when it cannot be bound.
+UAVImpl* CheckedUav(DeviceImpl& dev, const char* fn, UnorderedAccessView* uav, UINT slot);
+bool ValidateDispatch(DeviceImpl& dev, UINT x, UINT y, UINT z);
+bool ValidateDispatchIndirect(DeviceImpl& dev, Buffer* args, UINT offset);
+// The UAV to clear, or nullptr (logged); `isFloat`: ClearUnorderedAccessViewFloat.
+UAVImpl* ValidateClearUav(DeviceImpl& dev, UnorderedAccessView* uav, const void* values, bool isFloat);
+bool ValidateOMUavs(DeviceImpl& dev, UINT numRTVs, UINT uavStart, UINT numUAVs);
+// Whether ClearUnorderedAccessViewUint can write the bits of this view format
+// exactly (ContextCompute.cpp).
+bool UavClearBitsSupported(VkFormat f);
+
 bool ValidateBegin(DeviceImpl& dev, const QUERY_DESC& desc);
 bool ValidateGetData(DeviceImpl& dev, const QueryImpl* q, const void* data, UINT size);
 

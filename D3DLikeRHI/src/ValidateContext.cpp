@@ -356,7 +356,7 @@ bool ValidateGenerateMips(DeviceImpl& dev, ShaderResourceView* srv) {
     return false;
   }
   const TextureCore* t = static_cast<SRVImpl*>(srv)->v.tex;
-  if (!(t->desc.MiscFlags & RESOURCE_MISC_GENERATE_MIPS)) {
+  if (!t || !(t->desc.MiscFlags & RESOURCE_MISC_GENERATE_MIPS)) {
     dev.Log(LogLevel::Error, "GenerateMips: the texture was not created with RESOURCE_MISC_GENERATE_MIPS");
     return false;
   }
@@ -556,6 +556,74 @@ bool ValidateDeferredUpdate(DeviceImpl& dev, Resource* dst) {
   if (b && b->IsConstantBuffer()) return true;
   dev.Log(LogLevel::Error, "UpdateSubresource: on deferred contexts this port updates constant buffers only");
   return false;
+}
+
+// Compute and unordered access
+UAVImpl* CheckedUav(DeviceImpl& dev, const char* fn, UnorderedAccessView* uav, UINT slot) {
+  auto* v = static_cast<UAVImpl*>(uav);
+  if (!v || v->v.tex || v->v.buf) return v;
+  dev.Log(LogLevel::Error, "%s: slot %u: not an unordered access view; unbound", fn, slot);
+  return nullptr;
+}
+
+bool ValidateDispatch(DeviceImpl& dev, UINT x, UINT y, UINT z) {
+  const uint32_t* lim = dev.props().limits.maxComputeWorkGroupCount;
+  const UINT d3dMax = 65535;  // D3D11_CS_DISPATCH_MAX_THREAD_GROUPS_PER_DIMENSION
+  if (x <= std::min(d3dMax, lim[0]) && y <= std::min(d3dMax, lim[1]) && z <= std::min(d3dMax, lim[2])) return true;
+  dev.Log(LogLevel::Error, "Dispatch: %u x %u x %u thread groups; at most 65535 per dimension (adapter: %u x %u x %u)",
+          x, y, z, lim[0], lim[1], lim[2]);
+  return false;
+}
+
+bool ValidateDispatchIndirect(DeviceImpl& dev, Buffer* args, UINT offset) {
+  const BufferImpl* b = static_cast<BufferImpl*>(args);
+  if (!b) {
+    dev.Log(LogLevel::Error, "DispatchIndirect: pBufferForArgs is null");
+  } else if (!(b->desc().MiscFlags & RESOURCE_MISC_DRAWINDIRECT_ARGS)) {
+    dev.Log(LogLevel::Error, "DispatchIndirect: the buffer was not created with RESOURCE_MISC_DRAWINDIRECT_ARGS");
+  } else if (offset % 4 || uint64_t(offset) + 12 > b->size()) {
+    dev.Log(LogLevel::Error, "DispatchIndirect: AlignedByteOffsetForArgs %u must be a multiple of 4 with 12 bytes after it in the %u-byte buffer",
+            offset, b->size());
+  } else {
+    return true;
+  }
+  return false;
+}
+
+UAVImpl* ValidateClearUav(DeviceImpl& dev, UnorderedAccessView* uav, const void* values, bool isFloat) {
+  const char* fn = isFloat ? "ClearUnorderedAccessViewFloat" : "ClearUnorderedAccessViewUint";
+  auto* v = static_cast<UAVImpl*>(uav);
+  if (!v || !values) {
+    dev.Log(LogLevel::Error, "%s: %s is null", fn, v ? "Values" : "pUnorderedAccessView");
+    return nullptr;
+  }
+  const FormatInfo* f = v->v.tex ? GetFormatInfo(v->v.dxgiFormat) : nullptr;
+  if (isFloat && (!f || f->integer)) {
+    dev.Log(LogLevel::Error, "%s: only views of FLOAT/UNORM textures take float clears (use ClearUnorderedAccessViewUint for %s)", fn,
+            f ? f->name : "raw and structured buffers");
+    return nullptr;
+  }
+  if (f && !isFloat && !UavClearBitsSupported(v->v.format)) {
+    dev.Log(LogLevel::Error, "%s: bit-exact clears of %s are not supported", fn, f->name);
+    return nullptr;
+  }
+  return v;
+}
+
+bool ValidateOMUavs(DeviceImpl& dev, UINT numRTVs, UINT uavStart, UINT numUAVs) {
+  const char* fn = "OMSetRenderTargetsAndUnorderedAccessViews";
+  if (numUAVs == KEEP_UNORDERED_ACCESS_VIEWS) return true;
+  if (uavStart > kMaxUnorderedAccessSlots || numUAVs > kMaxUnorderedAccessSlots - uavStart) {
+    dev.Log(LogLevel::Error, "%s: UAV slots %u..%u out of range (0..%u)", fn, uavStart, uavStart + numUAVs,
+            kMaxUnorderedAccessSlots - 1);
+    return false;
+  }
+  if (numUAVs && numRTVs != KEEP_RENDER_TARGETS_AND_DEPTH_STENCIL && uavStart < numRTVs) {
+    dev.Log(LogLevel::Error, "%s: UAVStartSlot %u overlaps the %u render targets (render targets and UAVs share the slots)",
+            fn, uavStart, numRTVs);
+    return false;
+  }
+  return true;
 }
 
 }  // namespace d3dl::impl

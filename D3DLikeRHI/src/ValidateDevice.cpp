@@ -36,11 +36,42 @@ bool ValidatePointers(DeviceImpl& dev, const char* fn, const void* desc, const c
 // ---------------------------------------------------------------------------
 // Buffers
 namespace {
+// Compute and unordered access: SRV/UAV buffers are structured or raw (typed
+// buffer views are not supported), DEFAULT or IMMUTABLE (no UAV).
+HRESULT ValidateBufferViewFlags(DeviceImpl& dev, const BUFFER_DESC& d) {
+  const bool structured = d.MiscFlags & RESOURCE_MISC_BUFFER_STRUCTURED;
+  const bool raw = d.MiscFlags & RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS;
+  const bool views = d.BindFlags & (BIND_SHADER_RESOURCE | BIND_UNORDERED_ACCESS);
+  const char* fn = "CreateBuffer";
+  if (structured && raw) {
+    dev.Log(LogLevel::Error, "%s: RESOURCE_MISC_BUFFER_STRUCTURED and RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS together", fn);
+  } else if (structured && (d.StructureByteStride == 0 || d.StructureByteStride % 4 || d.StructureByteStride > 2048 ||
+                            d.ByteWidth % d.StructureByteStride)) {
+    dev.Log(LogLevel::Error, "%s: StructureByteStride %u must be a multiple of 4 in 4..2048 dividing ByteWidth %u", fn,
+            d.StructureByteStride, d.ByteWidth);
+  } else if (raw && d.ByteWidth % 4) {
+    dev.Log(LogLevel::Error, "%s: a raw buffer's ByteWidth %u must be a multiple of 4", fn, d.ByteWidth);
+  } else if (views && !structured && !raw) {
+    dev.Log(LogLevel::Error, "%s: BindFlags 0x%x: buffer views need RESOURCE_MISC_BUFFER_STRUCTURED or _ALLOW_RAW_VIEWS (typed buffer views are not supported)", fn, d.BindFlags);
+  } else if (views && d.Usage != USAGE_DEFAULT && d.Usage != USAGE_IMMUTABLE) {
+    dev.Log(LogLevel::Error, "%s: buffers with views need USAGE_DEFAULT or USAGE_IMMUTABLE (Usage %u)", fn, d.Usage);
+  } else if ((d.BindFlags & BIND_UNORDERED_ACCESS) && d.Usage != USAGE_DEFAULT) {
+    dev.Log(LogLevel::Error, "%s: BIND_UNORDERED_ACCESS needs USAGE_DEFAULT (Usage %u)", fn, d.Usage);
+  } else if ((d.MiscFlags & RESOURCE_MISC_DRAWINDIRECT_ARGS) && (d.Usage == USAGE_DYNAMIC || d.Usage == USAGE_STAGING)) {
+    dev.Log(LogLevel::Error, "%s: RESOURCE_MISC_DRAWINDIRECT_ARGS needs USAGE_DEFAULT or USAGE_IMMUTABLE", fn);
+  } else {
+    return S_OK;
+  }
+  return E_INVALIDARG;
+}
+
 HRESULT ValidateBufferBinding(DeviceImpl& dev, const BUFFER_DESC& d) {
-  if (d.BindFlags & (BIND_SHADER_RESOURCE | BIND_RENDER_TARGET | BIND_DEPTH_STENCIL)) {
-    dev.Log(LogLevel::Error, "CreateBuffer: BindFlags 0x%x: buffer views are not supported", d.BindFlags);
+  if (d.BindFlags & (BIND_RENDER_TARGET | BIND_DEPTH_STENCIL)) {
+    dev.Log(LogLevel::Error, "CreateBuffer: BindFlags 0x%x: buffer render-target/depth views are not supported", d.BindFlags);
     return E_INVALIDARG;
   }
+  const HRESULT views = ValidateBufferViewFlags(dev, d);
+  if (FAILED(views)) return views;
   const bool isCB = d.BindFlags & BIND_CONSTANT_BUFFER;
   if (isCB && (d.BindFlags & ~static_cast<UINT>(BIND_CONSTANT_BUFFER))) {
     dev.Log(LogLevel::Error, "CreateBuffer: BIND_CONSTANT_BUFFER cannot be combined with other bind flags (0x%x)", d.BindFlags);
@@ -89,8 +120,9 @@ HRESULT ValidateCreateBuffer(DeviceImpl& dev, const BUFFER_DESC* desc, const SUB
   if (SUCCEEDED(hr)) hr = ValidateBufferUsage(dev, d, init);
   if (FAILED(hr)) return hr;
   const bool isCB = d.BindFlags & BIND_CONSTANT_BUFFER;
-  if (!isCB && d.Usage != USAGE_STAGING && !(d.BindFlags & (BIND_VERTEX_BUFFER | BIND_INDEX_BUFFER))) {
-    dev.Log(LogLevel::Error, "CreateBuffer: BindFlags 0x%x: need a vertex, index or constant buffer binding", d.BindFlags);
+  const UINT otherUses = BIND_VERTEX_BUFFER | BIND_INDEX_BUFFER | BIND_SHADER_RESOURCE | BIND_UNORDERED_ACCESS;
+  if (!isCB && d.Usage != USAGE_STAGING && !(d.BindFlags & otherUses) && !(d.MiscFlags & RESOURCE_MISC_DRAWINDIRECT_ARGS)) {
+    dev.Log(LogLevel::Error, "CreateBuffer: BindFlags 0x%x: need a vertex, index, constant, shader-resource or unordered-access binding", d.BindFlags);
     return E_INVALIDARG;
   }
   if (init && !init->pSysMem) {
@@ -166,6 +198,10 @@ HRESULT ValidateTextureBinding(DeviceImpl& dev, const char* fn, const TEXTURE2D_
   const FormatInfo* f = GetFormatInfo(d.Format);
   if (d.BindFlags & (BIND_VERTEX_BUFFER | BIND_INDEX_BUFFER | BIND_CONSTANT_BUFFER)) {
     dev.Log(LogLevel::Error, "%s: BindFlags 0x%x include buffer bindings", fn, d.BindFlags);
+    return E_INVALIDARG;
+  }
+  if ((d.BindFlags & BIND_UNORDERED_ACCESS) && (f->depth || (d.BindFlags & BIND_DEPTH_STENCIL) || d.Usage != USAGE_DEFAULT)) {
+    dev.Log(LogLevel::Error, "%s: BIND_UNORDERED_ACCESS needs a USAGE_DEFAULT colour texture", fn);
     return E_INVALIDARG;
   }
   if ((d.BindFlags & BIND_DEPTH_STENCIL) && (d.BindFlags & BIND_RENDER_TARGET)) {
@@ -274,6 +310,82 @@ HRESULT ValidateCreateTexture(DeviceImpl& dev, const char* fn, bool is1D, const 
   if (SUCCEEDED(hr)) hr = ValidateMultisampleDesc(dev, fn, is1D, *desc, init);
   if (SUCCEEDED(hr)) hr = ValidateInitialData(dev, fn, *desc, init);
   return hr;
+}
+
+// ---------------------------------------------------------------------------
+// ---------------------------------------------------------------------------
+// Compute and unordered access: buffer and texture UAVs, buffer SRVs
+HRESULT ValidateBufferView(DeviceImpl& dev, const ViewKindInfo& kind, Resource* r, const void* out,
+                           const BufferViewRequest* req, VkDeviceSize* offset, VkDeviceSize* range) {
+  const char* fn = kind.fn;
+  BufferImpl* b = AsBuffer(r);
+  if (!out || !b) {
+    dev.Log(LogLevel::Error, "%s: %s is null", fn, out ? "pResource" : kind.outName);
+    return E_INVALIDARG;
+  }
+  const BUFFER_DESC& d = b->desc();
+  const bool structured = d.MiscFlags & RESOURCE_MISC_BUFFER_STRUCTURED;
+  if (!(d.BindFlags & kind.bind)) {
+    dev.Log(LogLevel::Error, "%s: the buffer was not created with %s (BindFlags 0x%x)", fn, kind.bindName, d.BindFlags);
+    return E_INVALIDARG;
+  }
+  if (!req && !structured) {
+    dev.Log(LogLevel::Error, "%s: a view of a raw buffer needs a description (R32_TYPELESS, RAW flag)", fn);
+    return E_INVALIDARG;
+  }
+  const BufferViewRequest whole{DXGI_FORMAT_UNKNOWN, 0, d.ByteWidth / std::max(1u, d.StructureByteStride), 0, false};
+  const BufferViewRequest& q = req ? *req : whole;
+  const UINT extraFlags = q.flags & ~1u;  // anything but RAW: append/consume counters
+  if (extraFlags) {
+    dev.Log(LogLevel::Error, "%s: Flags 0x%x: append/consume counters are not supported", fn, q.flags);
+    return E_NOTIMPL;
+  }
+  if (q.raw != (q.format == DXGI_FORMAT_R32_TYPELESS) || (q.raw && !(d.MiscFlags & RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS)) ||
+      (!q.raw && (!structured || q.format != DXGI_FORMAT_UNKNOWN))) {
+    dev.Log(LogLevel::Error, "%s: Format %s with Flags 0x%x does not fit the buffer (raw views: R32_TYPELESS + RAW flag + RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS; structured: UNKNOWN + RESOURCE_MISC_BUFFER_STRUCTURED; typed buffer views are not supported)",
+            fn, FormatName(q.format), q.flags);
+    return E_INVALIDARG;
+  }
+  const uint64_t element = q.raw ? 4 : d.StructureByteStride;
+  const uint64_t end = (uint64_t(q.first) + q.num) * element;
+  const uint64_t align = dev.props().limits.minStorageBufferOffsetAlignment;
+  if (q.num == 0 || end > d.ByteWidth) {
+    dev.Log(LogLevel::Error, "%s: elements [%u, %u + %u) out of range (%llu elements)", fn, q.first, q.first, q.num,
+            static_cast<unsigned long long>(d.ByteWidth / element));
+    return E_INVALIDARG;
+  }
+  if ((q.first * element) % align) {
+    dev.Log(LogLevel::Error, "%s: FirstElement %u starts at byte %llu, not a multiple of the adapter's storage alignment %llu",
+            fn, q.first, static_cast<unsigned long long>(q.first * element), static_cast<unsigned long long>(align));
+    return E_INVALIDARG;
+  }
+  *offset = q.first * element;
+  *range = q.num * element;
+  return S_OK;
+}
+
+HRESULT ValidateTextureUav(DeviceImpl& dev, Resource* r, const UNORDERED_ACCESS_VIEW_DESC* desc, const void* out,
+                           ViewFormat* format, uint32_t* mip) {
+  const char* fn = kUavKind.fn;
+  HRESULT hr = ValidateViewResource(dev, kUavKind, r, out, desc ? desc->Format : DXGI_FORMAT_UNKNOWN, format);
+  if (FAILED(hr)) return hr;
+  const TextureCore& t = *AsTexture(r);
+  *mip = desc ? desc->Texture2D.MipSlice : 0;
+  if (t.dim != RESOURCE_DIMENSION_TEXTURE2D || t.desc.ArraySize != 1 ||
+      (desc && desc->ViewDimension != UAV_DIMENSION_TEXTURE2D && desc->ViewDimension != UAV_DIMENSION_UNKNOWN)) {
+    dev.Log(LogLevel::Error, "%s: only UAVs of single 2-D textures are supported (ViewDimension %u)", fn,
+            desc ? desc->ViewDimension : 0u);
+    return E_INVALIDARG;
+  }
+  if (!dev.CheckFormatSupport(format->dxgi, BIND_UNORDERED_ACCESS)) {
+    dev.Log(LogLevel::Error, "%s: Format %s cannot be written as a UAV on this adapter", fn, FormatName(format->dxgi));
+    return E_INVALIDARG;
+  }
+  if (*mip >= t.desc.MipLevels) {
+    dev.Log(LogLevel::Error, "%s: MipSlice %u out of range (%u mips)", fn, *mip, t.desc.MipLevels);
+    return E_INVALIDARG;
+  }
+  return S_OK;
 }
 
 // ---------------------------------------------------------------------------

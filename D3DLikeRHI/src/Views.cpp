@@ -42,6 +42,7 @@ void ViewImpl<Iface, Kind>::OnDebugName() {
 template class ViewImpl<ShaderResourceView, ViewKind::SRV>;
 template class ViewImpl<RenderTargetView, ViewKind::RTV>;
 template class ViewImpl<DepthStencilView, ViewKind::DSV>;
+template class ViewImpl<UnorderedAccessView, ViewKind::UAV>;
 
 namespace {
 
@@ -101,6 +102,7 @@ HRESULT CreateTargetView(DeviceImpl* dev, const ViewKindInfo& kind, Resource* r,
 HRESULT DeviceImpl::CreateShaderResourceView(Resource* r, const SHADER_RESOURCE_VIEW_DESC* desc,
                                              ShaderResourceView** out) {
   if (out) *out = nullptr;
+  if (AsBuffer(r)) return CreateBufferSRV(this, r, desc, out);
   ViewFormat format;
   ViewShape shape;
   HRESULT hr = ValidateViewResource(*this, kSrvKind, r, out, RequestedFormat(desc), &format);

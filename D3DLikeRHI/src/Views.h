@@ -9,7 +9,10 @@ namespace d3dl::impl {
 
 struct ViewCore {
   Resource* resource = nullptr;  // holds a reference
-  TextureCore* tex = nullptr;
+  TextureCore* tex = nullptr;    // null for a buffer view
+  // Buffer views (structured or raw SRVs/UAVs): the bytes they see.
+  BufferImpl* buf = nullptr;
+  VkDeviceSize bufOffset = 0, bufRange = 0;
   VkFormat format = VK_FORMAT_UNDEFINED;
   DXGI_FORMAT dxgiFormat = DXGI_FORMAT_UNKNOWN;
   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
@@ -23,7 +26,7 @@ struct ViewCore {
   uint32_t Samples() const { return tex->desc.SampleDesc.Count; }
 };
 
-enum class ViewKind { SRV, RTV, DSV };
+enum class ViewKind { SRV, RTV, DSV, UAV };
 // (Re)creates the VkImageViews of a view, one per image of its texture.
 bool RebuildViews(DeviceImpl* dev, ViewCore& v);
 
@@ -43,5 +46,11 @@ class ViewImpl final : public Child<Iface> {
 using SRVImpl = ViewImpl<ShaderResourceView, ViewKind::SRV>;
 using RTVImpl = ViewImpl<RenderTargetView, ViewKind::RTV>;
 using DSVImpl = ViewImpl<DepthStencilView, ViewKind::DSV>;
+using UAVImpl = ViewImpl<UnorderedAccessView, ViewKind::UAV>;
+
+// Compute and unordered access (ComputeViews.cpp): an SRV of a structured or
+// raw buffer (CreateShaderResourceView hands buffers to it).
+HRESULT CreateBufferSRV(DeviceImpl* dev, Resource* r, const SHADER_RESOURCE_VIEW_DESC* desc,
+                        ShaderResourceView** out);
 
 }  // namespace d3dl::impl

@@ -242,6 +242,7 @@ bool DeviceImpl::CheckFormatSupport(DXGI_FORMAT format, UINT bindFlags) const {
   vkGetPhysicalDeviceFormatProperties(phys_, vf, &fp);
   VkFormatFeatureFlags need = 0;
   if (bindFlags & BIND_SHADER_RESOURCE) need |= VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
+  if (bindFlags & BIND_UNORDERED_ACCESS) need |= VK_FORMAT_FEATURE_STORAGE_IMAGE_BIT;
   if (bindFlags & BIND_RENDER_TARGET)
     need |= VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT;
   if (bindFlags & BIND_DEPTH_STENCIL) need |= VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT;

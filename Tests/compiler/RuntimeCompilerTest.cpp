@@ -87,13 +87,14 @@ TEST(RuntimeCompiler, RejectsMissingFileAndBadArguments) {
 }
 
 TEST(RuntimeCompiler, AppliesTheBindingFormula) {
-  // A pixel shader's t2 / s3 / b1 must land on 64 + 16 + 2, 64 + 48 + 3, 64 + 0 + 1.
+  // A pixel shader's b1 / t2 / s3 / u1 must land on 72 + 0 + 1, 72 + 16 + 2, 72 + 48 + 3, 72 + 64 + 1.
   d3dl::ShaderCompileDesc desc;
   desc.SourcePath = "formula.hlsl";
   desc.Source =
       "cbuffer C : register(b1) { float4 k; };\n"
       "Texture2D t : register(t2);\nSamplerState s : register(s3);\n"
-      "float4 PSMain(float4 p : SV_Position) : SV_Target { return t.Sample(s, p.xy) * k; }\n";
+      "RWTexture2D<float4> u : register(u1);\n"
+      "float4 PSMain(float4 p : SV_Position) : SV_Target { u[uint2(p.xy)] = k; return t.Sample(s, p.xy) * k; }\n";
   desc.EntryPoint = "PSMain";
   desc.Stage = d3dl::ShaderStage::Pixel;
   std::vector<uint32_t> spirv;
@@ -111,9 +112,10 @@ TEST(RuntimeCompiler, AppliesTheBindingFormula) {
   const std::vector<uint32_t> expected = {
       d3dl::VulkanBinding(d3dl::ShaderStage::Pixel, d3dl::RegisterClass::ConstantBuffer, 1),
       d3dl::VulkanBinding(d3dl::ShaderStage::Pixel, d3dl::RegisterClass::Texture, 2),
-      d3dl::VulkanBinding(d3dl::ShaderStage::Pixel, d3dl::RegisterClass::Sampler, 3)};
+      d3dl::VulkanBinding(d3dl::ShaderStage::Pixel, d3dl::RegisterClass::Sampler, 3),
+      d3dl::VulkanBinding(d3dl::ShaderStage::Pixel, d3dl::RegisterClass::UnorderedAccess, 1)};
   EXPECT_EQ(bindings, expected);
-  EXPECT_EQ(expected, (std::vector<uint32_t>{65, 82, 115}));
+  EXPECT_EQ(expected, (std::vector<uint32_t>{73, 90, 123, 137}));
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <fstream>
 
+#include "RawVulkanDispatch.h"
 #include "Recorder.h"
 
 namespace drrbench {
@@ -128,7 +129,7 @@ class RawVulkanRecorder final : public Recorder {
     VK_TRY(vkCreateDevice(gpu_, &dci, nullptr, &device_));
     vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
 
-    if (!CreateTarget(error) || !CreatePipeline(error)) return false;
+    if (!CreateTarget(error) || !CreatePipeline(error) || !dispatch_.Init(gpu_, device_, error)) return false;
 
     VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pci.queueFamilyIndex = queueFamily_;
@@ -221,6 +222,13 @@ class RawVulkanRecorder final : public Recorder {
   }
 
   uint64_t ValidationMessages() const override { return g_rawValidationMessages; }
+
+  // Compute and unordered access: the dispatch frame (RawVulkanDispatch).
+  void RecordDispatches(uint32_t n) override {
+    dispatch_.Record(cmd_, n);
+    vkEndCommandBuffer(cmd_);
+  }
+  std::vector<uint32_t> ReadBackWords() override { return dispatch_.Words(); }
 
  private:
   void BeginCommandBuffer() {
@@ -420,6 +428,7 @@ class RawVulkanRecorder final : public Recorder {
   void Destroy() {
     if (device_) {
       vkDeviceWaitIdle(device_);
+      dispatch_.Destroy();
       DestroyRing();
       vkDestroyFence(device_, fence_, nullptr);
       vkDestroyCommandPool(device_, pool_, nullptr);
@@ -472,6 +481,7 @@ class RawVulkanRecorder final : public Recorder {
   VkCommandPool pool_ = VK_NULL_HANDLE;
   VkCommandBuffer cmd_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
+  RawVulkanDispatch dispatch_;  // compute and unordered access
 };
 
 }  // namespace

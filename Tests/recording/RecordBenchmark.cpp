@@ -1,11 +1,15 @@
 // drr_rhi_bench: CPU cost of recording N draws with changing constants,
 // D3DLikeRHI against hand-written Vulkan, in one process, side by side.
 // Only recording is timed; submission and the wait are excluded for both.
+// The dispatch case (compute and unordered access) runs K rounds of
+// raw / RHI alternately, so a machine shared with other work slows both alike.
 //
-//   drr_rhi_bench [--draws N] [google benchmark flags]   timings + ratio
+//   drr_rhi_bench [--draws N] [--dispatches N] [--rounds K] [google benchmark flags]
+//   drr_rhi_bench --benchmark_filter=Dispatch              the dispatch case only
 //   drr_rhi_bench --smoke                                  correctness only
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -36,6 +40,10 @@ DrawConstants ConstantsForDraw(uint32_t i, uint32_t n) {
   c.color[2] = float(i % 3) / 2.0f;
   c.color[3] = 1.0f;
   return c;
+}
+
+DispatchConstants ConstantsForDispatch(uint32_t i) {
+  return DispatchConstants{i, (i * 2654435761u) ^ 0x9e3779b9u, {0, 0}};
 }
 
 namespace {
@@ -77,6 +85,22 @@ void RecordDraws(benchmark::State& state, bool rhi) {
 void BM_RawVulkan(benchmark::State& s) { RecordDraws(s, false); }
 void BM_D3DLikeRHI(benchmark::State& s) { RecordDraws(s, true); }
 
+// Compute and unordered access: n dispatches per frame.
+void RecordDispatchFrame(benchmark::State& state, bool rhi) {
+  auto& rec = g_recorders[rhi ? 1 : 0];
+  if (!rec) rec = Make(rhi);
+  const auto n = static_cast<uint32_t>(state.range(0));
+  for (auto _ : state) {
+    rec->RecordDispatches(n);
+    state.PauseTiming();
+    rec->SubmitAndWait();
+    state.ResumeTiming();
+  }
+  state.SetItemsProcessed(int64_t(state.iterations()) * n);
+}
+void BM_RawVulkanDispatch(benchmark::State& s) { RecordDispatchFrame(s, false); }
+void BM_D3DLikeRHIDispatch(benchmark::State& s) { RecordDispatchFrame(s, true); }
+
 // Keeps the mean real time of each benchmark to print the ratio at the end.
 class RatioReporter : public benchmark::ConsoleReporter {
  public:
@@ -87,10 +111,62 @@ class RatioReporter : public benchmark::ConsoleReporter {
       const std::string kind = run.run_type == Run::RT_Aggregate ? run.aggregate_name : "";
       if (kind == "" || kind == "mean" || kind == "median")
         times[kind][run.run_name.function_name] = run.GetAdjustedRealTime();
+      if (kind == "") {
+        rounds[run.run_name.function_name].push_back(run.GetAdjustedRealTime());
+        cpuRounds[run.run_name.function_name].push_back(run.GetAdjustedCPUTime());
+      }
     }
   }
   std::map<std::string, std::map<std::string, double>> times;
+  // Every single run, in order: wall time, and CPU time of the recording thread
+  // (less disturbed by other work on a shared machine).
+  std::map<std::string, std::vector<double>> rounds, cpuRounds;
 };
+
+double Median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+// The dispatch case: per-round ratios of the interleaved runs and their
+// medians, in wall time and in the recording thread's CPU time.
+void PrintDispatchRatios(const RatioReporter& r, int64_t dispatches) {
+  const char* kRaw = "BM_RawVulkanDispatch";
+  const char* kRhi = "BM_D3DLikeRHIDispatch";
+  if (!r.rounds.count(kRaw) || !r.rounds.count(kRhi)) return;
+  const auto& raw = r.rounds.at(kRaw);
+  const auto& rhi = r.rounds.at(kRhi);
+  const auto& rawCpu = r.cpuRounds.at(kRaw);
+  const auto& rhiCpu = r.cpuRounds.at(kRhi);
+  std::vector<double> wall, cpu;
+  for (size_t k = 0; k < raw.size() && k < rhi.size(); ++k) {
+    wall.push_back(rhi[k] / raw[k]);
+    cpu.push_back(rhiCpu[k] / rawCpu[k]);
+    std::printf("dispatch round %zu: wall raw %.3f ms, rhi %.3f ms, ratio %.3f; cpu raw %.3f ms, rhi %.3f ms, ratio %.3f\n",
+                k, raw[k], rhi[k], wall.back(), rawCpu[k], rhiCpu[k], cpu.back());
+  }
+  if (wall.empty()) return;
+  const double perRaw = 1e6 * Median(rawCpu) / double(dispatches), perRhi = 1e6 * Median(rhiCpu) / double(dispatches);
+  std::printf("ratio D3DLikeRHI / raw Vulkan dispatch recording (%lld dispatches, median of %zu interleaved rounds): "
+              "wall %.3f, cpu %.3f (cpu per dispatch: %.1f ns vs %.1f ns)\n",
+              static_cast<long long>(dispatches), wall.size(), Median(wall), Median(cpu), perRhi, perRaw);
+}
+
+// Compute and unordered access: both recorders give the UAV words of a CPU
+// model of the dispatch shader (w = w * 3 + value + thread).
+bool SmokeDispatches(Recorder& raw, Recorder& rhi) {
+  constexpr uint32_t kDispatches = 300;
+  std::vector<uint32_t> want(kDispatchWords, 0);
+  for (uint32_t i = 0; i < kDispatches; ++i)
+    for (uint32_t j = 0; j < kDispatchWords; ++j) want[j] = want[j] * 3u + ConstantsForDispatch(i).value + j;
+  raw.RecordDispatches(kDispatches);
+  raw.SubmitAndWait();
+  rhi.RecordDispatches(kDispatches);
+  rhi.SubmitAndWait();
+  const bool ok = raw.ReadBackWords() == want && rhi.ReadBackWords() == want;
+  std::printf("smoke: %u dispatches, UAV words %s the CPU model\n", kDispatches, ok ? "match" : "DIFFER from");
+  return ok;
+}
 
 int Smoke() {
   constexpr uint32_t kDraws = 200;
@@ -107,10 +183,11 @@ int Smoke() {
     if (std::memcmp(&a[i], &b[i], 4) != 0) ++differing;
     if (a[i + 3] != 0) ++lit;
   }
+  const bool dispatchesOk = SmokeDispatches(*raw, *rhi);
   const uint64_t messages = raw->ValidationMessages() + rhi->ValidationMessages();
   std::printf("smoke: %u draws, %zu lit pixels, %zu differing pixels, %llu validation messages\n",
               kDraws, lit, differing, static_cast<unsigned long long>(messages));
-  const bool ok = a.size() == b.size() && !a.empty() && differing == 0 && lit > 0 && messages == 0;
+  const bool ok = a.size() == b.size() && !a.empty() && differing == 0 && lit > 0 && messages == 0 && dispatchesOk;
   std::printf("%d passed, %d failed\n", ok ? 1 : 0, ok ? 0 : 1);
   return ok ? 0 : 1;
 }
@@ -118,8 +195,17 @@ int Smoke() {
 }  // namespace
 }  // namespace drrbench
 
+// "--flag N" with N in [1, max]; false (and a message) for a bad value.
+bool ParseCount(const char* flag, const char* text, int64_t max, int64_t* out) {
+  char* end = nullptr;
+  *out = std::strtoll(text, &end, 10);
+  if (end && !*end && *out >= 1 && *out <= max) return true;
+  std::fprintf(stderr, "%s: expected an integer in [1, %lld], got '%s'\n", flag, static_cast<long long>(max), text);
+  return false;
+}
+
 int main(int argc, char** argv) {
-  int64_t draws = 10000;
+  int64_t draws = 10000, dispatches = 10000, rounds = 5;
   std::vector<char*> args;
   for (int i = 0; i < argc; ++i) {
     if (std::strcmp(argv[i], "--deferred") == 0) return drrbench::DeferredMain(argc, argv);
@@ -133,10 +219,22 @@ int main(int argc, char** argv) {
       }
       continue;
     }
+    if (std::strcmp(argv[i], "--dispatches") == 0 && i + 1 < argc) {
+      if (!ParseCount("--dispatches", argv[++i], 1000000, &dispatches)) return 2;
+      continue;
+    }
+    if (std::strcmp(argv[i], "--rounds") == 0 && i + 1 < argc) {
+      if (!ParseCount("--rounds", argv[++i], 100, &rounds)) return 2;
+      continue;
+    }
     args.push_back(argv[i]);
   }
   benchmark::RegisterBenchmark("BM_RawVulkan", drrbench::BM_RawVulkan)->Arg(draws)->Unit(benchmark::kMillisecond);
   benchmark::RegisterBenchmark("BM_D3DLikeRHI", drrbench::BM_D3DLikeRHI)->Arg(draws)->Unit(benchmark::kMillisecond);
+  for (int64_t k = 0; k < rounds; ++k) {  // interleaved: raw, rhi, raw, rhi, ...
+    benchmark::RegisterBenchmark("BM_RawVulkanDispatch", drrbench::BM_RawVulkanDispatch)->Arg(dispatches)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_D3DLikeRHIDispatch", drrbench::BM_D3DLikeRHIDispatch)->Arg(dispatches)->Unit(benchmark::kMillisecond);
+  }
   int n = static_cast<int>(args.size());
   benchmark::Initialize(&n, args.data());
   drrbench::RatioReporter reporter;
@@ -149,6 +247,7 @@ int main(int argc, char** argv) {
                 static_cast<long long>(draws), kind.empty() ? "" : ", ", kind.c_str(),
                 rhi->second / raw->second);
   }
+  drrbench::PrintDispatchRatios(reporter, dispatches);
   benchmark::Shutdown();
   return 0;
 }

@@ -1,5 +1,6 @@
 // Two ways of recording the same frame: N draws of one triangle whose
-// constants (offset, colour) change every draw. Used by RecordBenchmark.cpp.
+// constants (offset, colour) change every draw; or N dispatches (compute and
+// unordered access) with changing constants on one UAV. Used by RecordBenchmark.cpp.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +15,13 @@ struct DrawConstants {
   float offset[4];
   float color[4];
 };
+
+// Compute and unordered access: constants of dispatch i, and the UAV's size.
+struct DispatchConstants {
+  uint32_t index, value, pad[2];
+};
+inline constexpr uint32_t kDispatchWords = 64;  // one thread group
+DispatchConstants ConstantsForDispatch(uint32_t i);
 
 // Folder of the compiled benchmark shaders: $DRR_BENCH_SHADER_DIR, else the build's.
 std::string BenchShaderDir();
@@ -32,6 +40,11 @@ class Recorder {
   // RGBA8 pixels of the target after SubmitAndWait.
   virtual std::vector<uint8_t> ReadBack() = 0;
   virtual uint64_t ValidationMessages() const = 0;
+  // Compute and unordered access (timed part): the UAV is cleared to 0, then
+  // n dispatches of one group, each with new constants; SubmitAndWait as above.
+  virtual void RecordDispatches(uint32_t n) = 0;
+  // The UAV's words after SubmitAndWait.
+  virtual std::vector<uint32_t> ReadBackWords() = 0;
 };
 
 Recorder* CreateRawVulkanRecorder();

@@ -219,7 +219,14 @@ TEST_F(RhiValidation, BindingFormulaMatchesHeaderCMakeAndSpirv) {
   EXPECT_EQ(ps["Extra"], VulkanBinding(ShaderStage::Pixel, RegisterClass::ConstantBuffer, 3));
   EXPECT_EQ(ps["texA"], VulkanBinding(ShaderStage::Pixel, RegisterClass::Texture, 5));
   EXPECT_EQ(ps["smpB"], VulkanBinding(ShaderStage::Pixel, RegisterClass::Sampler, 2));
-  EXPECT_EQ(ps["texA"], 64u + 16u + 5u);
+  EXPECT_EQ(ps["texA"], 72u + 16u + 5u);
+  // u# and buffer SRVs of the compute stage (5): cs_raw_cs.hlsl declares t1 and u2.
+  EXPECT_EQ(value("D3DL_UAV_BASE"), kUnorderedAccessBase);
+  EXPECT_NE(text.find("--shift-UAV-binding"), std::string::npos);
+  auto cs = ReflectBindings(LoadSpirv("rhi_cs_raw_cs.spv"));
+  EXPECT_EQ(cs["g_RawIn"], VulkanBinding(ShaderStage::Compute, RegisterClass::Texture, 1));
+  EXPECT_EQ(cs["g_RawOut"], VulkanBinding(ShaderStage::Compute, RegisterClass::UnorderedAccess, 2));
+  EXPECT_EQ(cs["g_RawOut"], 5u * 72u + 64u + 2u);
   auto vs = ReflectBindings(LoadSpirv("rhi_bindings_vs.spv"));
   EXPECT_EQ(vs["VSParams"], VulkanBinding(ShaderStage::Vertex, RegisterClass::ConstantBuffer, 1));
   EXPECT_EQ(vs["vsTex"], VulkanBinding(ShaderStage::Vertex, RegisterClass::Texture, 2));
@@ -256,6 +263,83 @@ TEST_F(RhiValidation, BindingFormulaMatchesHeaderCMakeAndSpirv) {
   EXPECT_EQ(px[0], 255);
   EXPECT_EQ(px[1], 0);
   EXPECT_TRUE(Near(px[3], 128)) << int(px[3]);
+}
+
+// Compute and unordered access: bad descriptions are refused at creation,
+// bad context calls are logged and skipped.
+TEST_F(RhiValidation, ComputeAndUavArgumentsAreRejectedWithAMessage) {
+  ComPtr<Buffer> raw;
+  BUFFER_DESC bd;
+  bd.ByteWidth = 64;
+  bd.BindFlags = BIND_UNORDERED_ACCESS;
+  ExpectRejected(device()->CreateBuffer(&bd, nullptr, raw.ReleaseAndGetAddressOf()), "typed buffer views");
+  bd.MiscFlags = RESOURCE_MISC_BUFFER_STRUCTURED;
+  ExpectRejected(device()->CreateBuffer(&bd, nullptr, raw.ReleaseAndGetAddressOf()), "StructureByteStride 0");
+  bd.StructureByteStride = 24;  // does not divide 64
+  ExpectRejected(device()->CreateBuffer(&bd, nullptr, raw.ReleaseAndGetAddressOf()), "StructureByteStride 24");
+  bd.StructureByteStride = 16;
+  bd.MiscFlags = RESOURCE_MISC_BUFFER_STRUCTURED | RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS;
+  ExpectRejected(device()->CreateBuffer(&bd, nullptr, raw.ReleaseAndGetAddressOf()), "together");
+  bd.MiscFlags = RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS;
+  bd.Usage = USAGE_DYNAMIC;
+  bd.CPUAccessFlags = CPU_ACCESS_WRITE;
+  ExpectRejected(device()->CreateBuffer(&bd, nullptr, raw.ReleaseAndGetAddressOf()), "USAGE_DEFAULT");
+  bd.Usage = USAGE_DEFAULT;
+  bd.CPUAccessFlags = 0;
+  ASSERT_EQ(device()->CreateBuffer(&bd, nullptr, raw.ReleaseAndGetAddressOf()), S_OK);
+
+  ComPtr<UnorderedAccessView> uav;
+  ExpectRejected(device()->CreateUnorderedAccessView(raw.Get(), nullptr, uav.ReleaseAndGetAddressOf()), "needs a description");
+  UNORDERED_ACCESS_VIEW_DESC ud;
+  ud.Format = DXGI_FORMAT_R32_TYPELESS;
+  ud.ViewDimension = UAV_DIMENSION_BUFFER;
+  ud.Buffer = {0, 16, BUFFER_UAV_FLAG_RAW | BUFFER_UAV_FLAG_APPEND};
+  ExpectRejected(device()->CreateUnorderedAccessView(raw.Get(), &ud, uav.ReleaseAndGetAddressOf()), "counters", E_NOTIMPL);
+  ud.Buffer = {0, 17, BUFFER_UAV_FLAG_RAW};
+  ExpectRejected(device()->CreateUnorderedAccessView(raw.Get(), &ud, uav.ReleaseAndGetAddressOf()), "out of range");
+  ud.Buffer = {0, 16, 0};
+  ExpectRejected(device()->CreateUnorderedAccessView(raw.Get(), &ud, uav.ReleaseAndGetAddressOf()), "R32_TYPELESS");
+  ud.Buffer = {0, 16, BUFFER_UAV_FLAG_RAW};
+  ASSERT_EQ(device()->CreateUnorderedAccessView(raw.Get(), &ud, uav.ReleaseAndGetAddressOf()), S_OK);
+  ComPtr<ShaderResourceView> srv;
+  ExpectRejected(device()->CreateShaderResourceView(raw.Get(), nullptr, srv.ReleaseAndGetAddressOf()), "BIND_SHADER_RESOURCE");
+  auto tex = MakeTexture(4, 4, DXGI_FORMAT_R8G8B8A8_UNORM, nullptr);
+  ExpectRejected(device()->CreateUnorderedAccessView(tex.Get(), nullptr, uav.ReleaseAndGetAddressOf()), "BIND_UNORDERED_ACCESS");
+  ComPtr<ComputeShader> cs;
+  const auto psCode = LoadSpirv("rhi_color_ps.spv");
+  ExpectRejected(device()->CreateComputeShader(psCode.data(), psCode.size() * 4, cs.ReleaseAndGetAddressOf()), "pixel shader");
+
+  // Context calls: logged, nothing recorded.
+  ASSERT_EQ(device()->CreateUnorderedAccessView(raw.Get(), &ud, uav.ReleaseAndGetAddressOf()), S_OK);
+  auto expectLogged = [&](const char* what) {
+    EXPECT_GE(CountMessages(LogLevel::Error, what), 1u) << what;
+    ClearMessages();
+  };
+  UnorderedAccessView* u = uav.Get();
+  context()->CSSetUnorderedAccessViews(7, 2, &u, nullptr);
+  expectLogged("slots 7..9");
+  context()->Dispatch(1, 1, 1);
+  expectLogged("no compute shader");
+  context()->Dispatch(70000, 1, 1);
+  expectLogged("65535");
+  context()->DispatchIndirect(raw.Get(), 0);
+  expectLogged("RESOURCE_MISC_DRAWINDIRECT_ARGS");
+  bd.MiscFlags = RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS | RESOURCE_MISC_DRAWINDIRECT_ARGS;
+  ComPtr<Buffer> args;
+  ASSERT_EQ(device()->CreateBuffer(&bd, nullptr, args.ReleaseAndGetAddressOf()), S_OK);
+  context()->DispatchIndirect(args.Get(), 56);  // 56 + 12 > 64
+  expectLogged("AlignedByteOffsetForArgs 56");
+  const float values[4] = {};
+  context()->ClearUnorderedAccessViewFloat(u, values);
+  expectLogged("float clears");
+  auto rt = MakeRenderTarget(4, 4);
+  context()->OMSetRenderTargetsAndUnorderedAccessViews(1, rt.rtv.GetAddressOf(), nullptr, 0, 1, &u, nullptr);
+  expectLogged("overlaps");
+  auto accumulate = LoadSpirv("rhi_cs_accumulate_cs.spv");
+  ASSERT_EQ(device()->CreateComputeShader(accumulate.data(), accumulate.size() * 4, cs.ReleaseAndGetAddressOf()), S_OK);
+  context()->CSSetShader(cs.Get());
+  context()->Dispatch(1, 1, 1);  // u0 unbound
+  expectLogged("UAV slot");
 }
 
 }  // namespace

@@ -83,6 +83,10 @@ class HullShader : public DeviceChild {};
 class DomainShader : public DeviceChild {};
 class GeometryShader : public DeviceChild {};
 
+// Compute and unordered access
+class UnorderedAccessView : public View {};
+class ComputeShader : public DeviceChild {};
+
 class Query : public DeviceChild {
  public:
   virtual void GetDesc(QUERY_DESC* desc) const = 0;
@@ -182,6 +186,29 @@ class DeviceContext : public Unknown {
   virtual void BeginEvent(const char* name) = 0;
   virtual void EndEvent() = 0;
 
+  // Compute and unordered access (ContextCompute.cpp). Dispatches and draws
+  // see each other's writes in call order, as in D3D11: the barriers are
+  // inserted automatically. A resource bound as a UAV is unbound from every
+  // SRV slot; an SRV of a resource bound as a UAV is bound as null.
+  virtual void CSSetShader(ComputeShader* shader) = 0;
+  virtual void CSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) = 0;
+  virtual void CSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) = 0;
+  virtual void CSSetSamplers(UINT startSlot, UINT num, SamplerState* const* samplers) = 0;
+  // initialCounts (append/consume counters) are not supported and ignored.
+  virtual void CSSetUnorderedAccessViews(UINT startSlot, UINT num, UnorderedAccessView* const* views,
+                                         const UINT* initialCounts) = 0;
+  virtual void Dispatch(UINT groupsX, UINT groupsY, UINT groupsZ) = 0;
+  // Three UINTs at `offset` of a RESOURCE_MISC_DRAWINDIRECT_ARGS buffer.
+  virtual void DispatchIndirect(Buffer* args, UINT offset) = 0;
+  virtual void ClearUnorderedAccessViewUint(UnorderedAccessView* uav, const UINT values[4]) = 0;
+  virtual void ClearUnorderedAccessViewFloat(UnorderedAccessView* uav, const float values[4]) = 0;
+  // Pixel-shader UAVs share the slots with the render targets: uavStartSlot >=
+  // numRTVs. KEEP_* leaves that half as it is.
+  virtual void OMSetRenderTargetsAndUnorderedAccessViews(UINT numRTVs, RenderTargetView* const* rtvs,
+                                                         DepthStencilView* dsv, UINT uavStartSlot,
+                                                         UINT numUAVs, UnorderedAccessView* const* uavs,
+                                                         const UINT* initialCounts) = 0;
+
   // Unbinds everything and restores default states.
   virtual void ClearState() = 0;
   // Submits the recorded work (a frame boundary for the constant ring and
@@ -275,6 +302,13 @@ class Device : public Unknown {
                                     InputLayout** layout) = 0;
 
   virtual HRESULT CreateQuery(const QUERY_DESC* desc, Query** query) = 0;
+
+  // Compute and unordered access. desc may be nullptr for a texture (mip 0
+  // in its own format) and for a structured buffer (all of it).
+  virtual HRESULT CreateUnorderedAccessView(Resource* resource, const UNORDERED_ACCESS_VIEW_DESC* desc,
+                                            UnorderedAccessView** view) = 0;
+  virtual HRESULT CreateComputeShader(const void* bytecode, size_t bytecodeLength,
+                                      ComputeShader** shader) = 0;
 
   // Swap chains. A headless swap chain renders into an offscreen image that
   // can be read back with CopyResource into a STAGING texture and Map(READ).

@@ -91,6 +91,7 @@ enum BIND_FLAG : uint32_t {
   BIND_SHADER_RESOURCE = 0x8,
   BIND_RENDER_TARGET = 0x20,
   BIND_DEPTH_STENCIL = 0x40,
+  BIND_UNORDERED_ACCESS = 0x80,  // compute and unordered access
 };
 
 enum CPU_ACCESS_FLAG : uint32_t {
@@ -101,6 +102,10 @@ enum CPU_ACCESS_FLAG : uint32_t {
 enum RESOURCE_MISC_FLAG : uint32_t {
   RESOURCE_MISC_GENERATE_MIPS = 0x1,
   RESOURCE_MISC_TEXTURECUBE = 0x4,  // Texture2D with ArraySize 6*n, Width == Height
+  // Compute and unordered access
+  RESOURCE_MISC_DRAWINDIRECT_ARGS = 0x10,       // DispatchIndirect arguments
+  RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS = 0x20,  // ByteAddressBuffer views (R32_TYPELESS)
+  RESOURCE_MISC_BUFFER_STRUCTURED = 0x40,       // StructuredBuffer views (StructureByteStride)
 };
 
 enum RESOURCE_DIMENSION : uint32_t {
@@ -226,12 +231,21 @@ struct TEXCUBE_ARRAY_SRV {
   UINT NumCubes = ~0u;
 };
 
+// Compute and unordered access: elements of a structured or raw buffer an SRV
+// sees (ViewDimension SRV_DIMENSION_BUFFEREX; Flags BUFFEREX_SRV_FLAG_RAW).
+struct BUFFEREX_SRV {
+  UINT FirstElement = 0;
+  UINT NumElements = 0;
+  UINT Flags = 0;
+};
+
 struct SHADER_RESOURCE_VIEW_DESC {
   DXGI_FORMAT Format = DXGI_FORMAT_UNKNOWN;  // UNKNOWN = the texture's format
   SRV_DIMENSION ViewDimension = SRV_DIMENSION_UNKNOWN;
   TEX_SRV Texture{};  // mips (not for TEXTURE2DMS*)
   TEX_ARRAY_RANGE Array{};
   TEXCUBE_ARRAY_SRV CubeArray{};
+  BUFFEREX_SRV BufferEx{};  // buffers (compute and unordered access)
 };
 
 struct RENDER_TARGET_VIEW_DESC {
@@ -564,6 +578,51 @@ struct QUERY_DATA_PIPELINE_STATISTICS {
 enum ASYNC_GETDATA_FLAG : uint32_t {
   ASYNC_GETDATA_DONOTFLUSH = 0x1,
 };
+
+// ---------------------------------------------------------------------------
+// Compute and unordered access (D3D11 numbering)
+// (BIND_UNORDERED_ACCESS and the RESOURCE_MISC_* buffer flags sit in their
+// enums above, so that they combine with the others.)
+inline constexpr SRV_DIMENSION SRV_DIMENSION_BUFFER = static_cast<SRV_DIMENSION>(1);
+inline constexpr SRV_DIMENSION SRV_DIMENSION_BUFFEREX = static_cast<SRV_DIMENSION>(11);
+
+enum BUFFEREX_SRV_FLAG : uint32_t {
+  BUFFEREX_SRV_FLAG_RAW = 0x1,
+};
+
+enum UAV_DIMENSION : uint32_t {
+  UAV_DIMENSION_UNKNOWN = 0,
+  UAV_DIMENSION_BUFFER = 1,
+  UAV_DIMENSION_TEXTURE2D = 4,
+};
+
+enum BUFFER_UAV_FLAG : uint32_t {
+  BUFFER_UAV_FLAG_RAW = 0x1,
+  BUFFER_UAV_FLAG_APPEND = 0x2,   // not supported (E_NOTIMPL)
+  BUFFER_UAV_FLAG_COUNTER = 0x4,  // not supported (E_NOTIMPL)
+};
+
+struct BUFFER_UAV {
+  UINT FirstElement = 0;
+  UINT NumElements = 0;
+  UINT Flags = 0;
+};
+
+struct TEX2D_UAV {
+  UINT MipSlice = 0;
+};
+
+// D3D11 keeps Buffer and Texture2D in a union; here they are plain members.
+struct UNORDERED_ACCESS_VIEW_DESC {
+  DXGI_FORMAT Format = DXGI_FORMAT_UNKNOWN;  // buffers: UNKNOWN (structured) or R32_TYPELESS (raw)
+  UAV_DIMENSION ViewDimension = UAV_DIMENSION_UNKNOWN;
+  BUFFER_UAV Buffer{};
+  TEX2D_UAV Texture2D{};
+};
+
+// OMSetRenderTargetsAndUnorderedAccessViews: leave that half of the bindings as it is.
+inline constexpr UINT KEEP_RENDER_TARGETS_AND_DEPTH_STENCIL = 0xffffffffu;
+inline constexpr UINT KEEP_UNORDERED_ACCESS_VIEWS = 0xffffffffu;
 
 // ---------------------------------------------------------------------------
 // Swap chain
