@@ -22,22 +22,13 @@
 #include <vector>
 
 #include "Recorder.h"
-#include "d3dl/D3DLike.h"
-#include "d3dl/ShaderCompiler.h"
+#include "RhiDrawSetup.h"
 
 namespace drrbench {
 namespace {
 
 using d3dl::ComPtr;
 constexpr uint32_t kMaxThreads = 2;
-
-uint64_t g_messages = 0;
-void OnLog(d3dl::LogLevel level, const char* message, void*) {
-  if (level == d3dl::LogLevel::Validation || level == d3dl::LogLevel::Error) {
-    ++g_messages;
-    std::fprintf(stderr, "rhi: %s\n", message);
-  }
-}
 
 double Seconds(clockid_t clock) {
   timespec ts;
@@ -47,48 +38,11 @@ double Seconds(clockid_t clock) {
 
 class DeferredRecorder {
  public:
-  ~DeferredRecorder() {
-    if (device_) device_->WaitIdle();
-  }
-
   bool Init(std::string* error) {
-    d3dl::DEVICE_CREATE_DESC dd;
-    dd.Log = OnLog;
-    dd.EnableWindowSurfaces = false;
-    dd.ApplicationName = "rhi-deferred-benchmark";
-    if (d3dl::FAILED(d3dl::CreateDevice(&dd, device_.GetAddressOf(), context_.GetAddressOf()))) {
-      *error = "CreateDevice failed";
-      return false;
-    }
-    d3dl::TEXTURE2D_DESC td;
-    td.Width = td.Height = kTargetSize;
-    td.Format = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM;
-    td.BindFlags = d3dl::BIND_RENDER_TARGET;
-    d3dl::TEXTURE2D_DESC sd = td;
-    sd.BindFlags = 0;
-    sd.Usage = d3dl::USAGE_STAGING;
-    sd.CPUAccessFlags = d3dl::CPU_ACCESS_READ;
-    d3dl::BUFFER_DESC bd;
-    bd.ByteWidth = sizeof(DrawConstants);
-    bd.Usage = d3dl::USAGE_DYNAMIC;
-    bd.BindFlags = d3dl::BIND_CONSTANT_BUFFER;
-    bd.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
-    const std::string dir = BenchShaderDir();
-    std::vector<uint32_t> vs, ps;
-    if (d3dl::FAILED(d3dl::ReadSpirvFile(dir + "/BenchDraw.vs.spv", &vs, error)) ||
-        d3dl::FAILED(d3dl::ReadSpirvFile(dir + "/BenchDraw.ps.spv", &ps, error)))
-      return false;
-    d3dl::RASTERIZER_DESC rd;
-    rd.CullMode = d3dl::CULL_NONE;
-    bool ok = d3dl::SUCCEEDED(device_->CreateTexture2D(&td, nullptr, target_.GetAddressOf())) &&
-              d3dl::SUCCEEDED(device_->CreateRenderTargetView(target_.Get(), nullptr, rtv_.GetAddressOf())) &&
-              d3dl::SUCCEEDED(device_->CreateTexture2D(&sd, nullptr, staging_.GetAddressOf())) &&
-              d3dl::SUCCEEDED(device_->CreateBuffer(&bd, nullptr, constants_.GetAddressOf())) &&
-              d3dl::SUCCEEDED(device_->CreateVertexShader(vs.data(), vs.size() * 4, vs_.GetAddressOf())) &&
-              d3dl::SUCCEEDED(device_->CreatePixelShader(ps.data(), ps.size() * 4, ps_.GetAddressOf())) &&
-              d3dl::SUCCEEDED(device_->CreateRasterizerState(&rd, rs_.GetAddressOf()));
-    for (auto& c : deferred_) ok = ok && d3dl::SUCCEEDED(device_->CreateDeferredContext(0, c.GetAddressOf()));
-    if (!ok) *error = "creating the benchmark resources failed (shaders in " + dir + ")";
+    if (!r_.Init("rhi-deferred-benchmark", error)) return false;
+    bool ok = true;
+    for (auto& c : deferred_) ok = ok && d3dl::SUCCEEDED(r_.device->CreateDeferredContext(0, c.GetAddressOf()));
+    if (!ok) *error = "CreateDeferredContext failed";
     return ok;
   }
 
@@ -117,65 +71,29 @@ class DeferredRecorder {
   // Not timed: the lists in draw order after a clear, then the copy for ReadBack.
   void ExecuteAndWait() {
     const float black[4] = {0, 0, 0, 0};
-    context_->ClearRenderTargetView(rtv_.Get(), black);
-    for (uint32_t t = 0; t < listCount_; ++t) context_->ExecuteCommandList(lists_[t].Get(), 0);
-    context_->CopyResource(staging_.Get(), target_.Get());
-    context_->Flush();
-    device_->WaitIdle();
+    r_.context->ClearRenderTargetView(r_.rtv.Get(), black);
+    for (uint32_t t = 0; t < listCount_; ++t) r_.context->ExecuteCommandList(lists_[t].Get(), 0);
+    r_.context->CopyResource(r_.staging.Get(), r_.target.Get());
+    r_.context->Flush();
+    r_.device->WaitIdle();
     for (auto& l : lists_) l = {};
   }
 
-  std::vector<uint8_t> ReadBack() {
-    d3dl::MAPPED_SUBRESOURCE m;
-    std::vector<uint8_t> pixels(kTargetSize * kTargetSize * 4);
-    if (d3dl::FAILED(context_->Map(staging_.Get(), 0, d3dl::MAP_READ, 0, &m))) return {};
-    for (uint32_t y = 0; y < kTargetSize; ++y)
-      std::memcpy(&pixels[y * kTargetSize * 4], static_cast<const uint8_t*>(m.pData) + y * m.RowPitch,
-                  kTargetSize * 4);
-    context_->Unmap(staging_.Get(), 0);
-    return pixels;
-  }
-
-  uint64_t Messages() const {
-    d3dl::DEVICE_STATS stats;
-    device_->GetStats(&stats);
-    return stats.ValidationMessages + g_messages;
-  }
+  std::vector<uint8_t> ReadBack() { return r_.ReadStaging(); }
+  uint64_t Messages() const { return r_.Messages(); }
 
  private:
   void RecordRange(uint32_t t, uint32_t first, uint32_t last, uint32_t n) {
     d3dl::DeviceContext* ctx = deferred_[t].Get();
-    ctx->OMSetRenderTargets(1, rtv_.GetAddressOf(), nullptr);
-    d3dl::VIEWPORT vp{0, 0, float(kTargetSize), float(kTargetSize), 0, 1};
-    ctx->RSSetViewports(1, &vp);
-    ctx->RSSetState(rs_.Get());
-    ctx->IASetInputLayout(nullptr);
-    ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLELIST);
-    ctx->VSSetShader(vs_.Get());
-    ctx->PSSetShader(ps_.Get());
-    ctx->VSSetConstantBuffers(0, 1, constants_.GetAddressOf());
-    for (uint32_t i = first; i < last; ++i) {
-      d3dl::MAPPED_SUBRESOURCE m;
-      ctx->Map(constants_.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &m);
-      const DrawConstants c = ConstantsForDraw(i, n);
-      std::memcpy(m.pData, &c, sizeof(c));
-      ctx->Unmap(constants_.Get(), 0);
-      ctx->Draw(3, 0);
-    }
+    r_.BindDrawState(ctx);
+    r_.RecordDraws(ctx, first, last, n);
     ctx->FinishCommandList(0, lists_[t].ReleaseAndGetAddressOf());
   }
 
-  ComPtr<d3dl::Device> device_;
-  ComPtr<d3dl::DeviceContext> context_;
+  RhiDrawSetup r_;
   ComPtr<d3dl::DeviceContext> deferred_[kMaxThreads];
   ComPtr<d3dl::CommandList> lists_[kMaxThreads];
   uint32_t listCount_ = 0;
-  ComPtr<d3dl::Texture2D> target_, staging_;
-  ComPtr<d3dl::RenderTargetView> rtv_;
-  ComPtr<d3dl::Buffer> constants_;
-  ComPtr<d3dl::VertexShader> vs_;
-  ComPtr<d3dl::PixelShader> ps_;
-  ComPtr<d3dl::RasterizerState> rs_;
 };
 
 std::unique_ptr<DeferredRecorder> g_recorder;  // reset before returning (see RecordBenchmark.cpp)

@@ -22,7 +22,9 @@ const float kBlack[4] = {0, 0, 0, 1};
 struct QuadFactors {
   float edges[4];   // SV_TessFactor, edges u = 0, v = 0, u = 1, v = 1
   float inside[2];  // SV_InsideTessFactor, along u and v
+  float pad[2];     // a constant buffer is a whole number of 16-byte registers
 };
+static_assert(sizeof(QuadFactors) == 32);
 struct QuadTessellation {
   uint64_t triangles, vertices;
 };
@@ -156,7 +158,7 @@ TEST_F(RhiTessellation, DomainShaderPlacesAndColoursThePatch) {
   LoadQuadPatchShaders();
   const float placement[4] = {1, 0.5f, 0.25f, -0.25f};  // x in [-0.25, 0.75], y in [-0.5, 0]
   const QuadFactors f{{4, 4, 4, 4}, {4, 4}};
-  auto factorsCB = MakeCB(32, USAGE_DEFAULT, &f);
+  auto factorsCB = MakeCB(sizeof(QuadFactors), USAGE_DEFAULT, &f);
   auto placementCB = MakeCB(16, USAGE_DEFAULT, placement);
   auto colour = Texels({0xff2080e0u});
   auto smp = MakeSampler(FILTER_MIN_MAG_MIP_POINT);
@@ -188,7 +190,7 @@ TEST_F(RhiTessellation, OutputTopologyWindingDecidesCulling) {
   LoadQuadPatchShaders();
   const float placement[4] = {1, 1, 0, 0};
   const QuadFactors f{{3, 3, 3, 3}, {3, 3}};
-  auto factorsCB = MakeCB(32, USAGE_DEFAULT, &f);
+  auto factorsCB = MakeCB(sizeof(QuadFactors), USAGE_DEFAULT, &f);
   auto placementCB = MakeCB(16, USAGE_DEFAULT, placement);
   auto colour = Texels({0xffffffffu});
   auto smp = MakeSampler(FILTER_MIN_MAG_MIP_POINT);
@@ -333,7 +335,7 @@ TEST_F(RhiTessellation, MismatchedStagesSkipTheDrawWithAnError) {
   auto gs = Load("rhi_tess_quads_gs.spv", &Device::CreateGeometryShader);
   const QuadFactors f{{2, 2, 2, 2}, {2, 2}};
   const float placement[4] = {1, 1, 0, 0};
-  auto factorsCB = MakeCB(32, USAGE_DEFAULT, &f);
+  auto factorsCB = MakeCB(sizeof(QuadFactors), USAGE_DEFAULT, &f);
   auto placementCB = MakeCB(16, USAGE_DEFAULT, placement);
   auto colour = Texels({0xffffffffu});
   auto smp = MakeSampler(FILTER_MIN_MAG_MIP_POINT);
@@ -432,7 +434,7 @@ TEST_F(RhiTessellation, StatisticsQueryMisuseIsReported) {
   LoadQuadPatchShaders();
   const QuadFactors f{{3, 3, 3, 3}, {3, 3}};
   const float placement[4] = {1, 1, 0, 0};
-  auto factorsCB = MakeCB(32, USAGE_DEFAULT, &f);
+  auto factorsCB = MakeCB(sizeof(QuadFactors), USAGE_DEFAULT, &f);
   auto placementCB = MakeCB(16, USAGE_DEFAULT, placement);
   auto colour = Texels({0xffffffffu});
   auto smp = MakeSampler(FILTER_MIN_MAG_MIP_POINT);
