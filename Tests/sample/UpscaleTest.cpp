@@ -9,6 +9,7 @@
 
 #include "SampleTestKit.h"
 #include "analysis/ImageMetrics.h"
+#include "imageio/Srgb.h"
 
 namespace drr {
 namespace {
@@ -32,11 +33,6 @@ Options Base(Filter f, float scale) {
   o.scaleX = o.scaleY = scale;
   o.control = ControlMode::Manual;
   return o;
-}
-
-double SrgbEncode(double v) {
-  v = std::clamp(v, 0.0, 1.0);
-  return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
 }
 
 // The dynamic viewport of the captured scene colour (UNORM: linear values).
@@ -162,9 +158,9 @@ TEST_P(UpscaleSpatial, MatchesItsCpuKernelAtHalfScale) {
       for (int c = 0; c < 3; ++c) {
         const double ref = tc.kernel(src, px, py, c);
         const int gpu = out.RGBA8(x, y)[c];
-        const int lo = int(std::floor(SrgbEncode(ref - tol) * 255.0 + 0.5)) - 1;
-        const int hi = int(std::floor(SrgbEncode(ref + tol) * 255.0 + 0.5)) + 1;
-        const double err = std::abs(gpu / 255.0 - SrgbEncode(ref));
+        const int lo = int(std::floor(drr::LinearToSrgb(ref - tol) * 255.0 + 0.5)) - 1;
+        const int hi = int(std::floor(drr::LinearToSrgb(ref + tol) * 255.0 + 0.5)) + 1;
+        const double err = std::abs(gpu / 255.0 - drr::LinearToSrgb(ref));
         worst = std::max(worst, err);
         bad += gpu < lo || gpu > hi;
         ++checked;
