@@ -244,6 +244,15 @@ double UEStyleController::Update(double currentScale, const FrameTiming& timing,
 
 // ---------------------------------------------------------------- robust law
 
+RobustController::Params RobustController::PreviousParams() {
+  Params p;
+  p.maxStepUp = 1.5;
+  p.minSamplesUp = 2;
+  p.upQuantile = 0.5;
+  p.riskQuantile = 0.0;
+  return p;
+}
+
 RobustController::RobustController() : RobustController(Params{}) {}
 
 RobustController::RobustController(const Params& params) : m_Params(params) {
@@ -264,6 +273,10 @@ RobustController::RobustController(const Params& params) : m_Params(params) {
   p.latencyFrames = std::max(0, p.latencyFrames);
   if (!(p.noiseZ >= 0.0)) p.noiseZ = 3.5;
   if (!(p.initialNoise >= 0.0 && p.initialNoise < 1.0)) p.initialNoise = 0.01;
+  if (!(p.riskQuantile >= 0.5 && p.riskQuantile < 1.0)) p.riskQuantile = 0.0;  // off
+  p.riskFrames = std::max(10, p.riskFrames);
+  if (!(p.upQuantile >= 0.5 && p.upQuantile <= 1.0)) p.upQuantile = 0.5;
+  p.minSamplesUp = std::clamp(p.minSamplesUp, p.minSamples, p.medianWindow);
   m_Noise = p.initialNoise;
 }
 
@@ -279,6 +292,7 @@ void RobustController::Reset() {
   m_LastSample = 0.0;
   m_Diffs.clear();
   m_Spread = 0.0;
+  m_Recent.clear();
 }
 
 double RobustController::Band(int samples) const {
@@ -288,7 +302,14 @@ double RobustController::Band(int samples) const {
 }
 
 double RobustController::SetPoint(const ControlTarget& tgt) const {
-  return AimOf(tgt) * std::exp(-(Band(m_Params.medianWindow) - m_Params.deadband));
+  const double noiseAware = AimOf(tgt) * std::exp(-(Band(m_Params.medianWindow) - m_Params.deadband));
+  if (m_Params.riskQuantile <= 0.0 || m_Recent.size() < 10) return noiseAware;
+  std::vector<double> loads;  // the recent samples at scale 1, with the cost exponent now believed
+  for (const Timed& x : m_Recent) loads.push_back(x.seconds / std::pow(x.scale, m_Gamma));
+  std::sort(loads.begin(), loads.end());
+  const double upper = loads[static_cast<std::size_t>(m_Params.riskQuantile * (loads.size() - 1) + 0.5)];
+  const double ratio = upper / Median(loads);
+  return ratio > 1.0 ? std::min(noiseAware, tgt.budgetSeconds / ratio) : noiseAware;
 }
 
 double RobustController::Correct(double s, double measured, const ControlTarget& tgt, bool panic) {
@@ -362,10 +383,13 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
     if (static_cast<int>(m_Outliers.size()) < m_Params.outlierPersistFrames) return finish(s);
     // Persistent: this is the new load, not a spike.
     m_Samples = m_Outliers;
+    if (m_Params.riskQuantile > 0.0)
+      for (double x : m_Outliers) m_Recent.push_back({x, s});
     m_Outliers.clear();
   } else {
     m_Outliers.clear();
     m_Samples.push_back(t);
+    if (m_Params.riskQuantile > 0.0) m_Recent.push_back({t, s});
     // Noise: successive log differences of accepted samples (a step or drift
     // moves one difference, not their median). sigma = 1.4826 MAD / sqrt(2).
     if (m_LastSample > 0.0) {
@@ -376,6 +400,7 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
     m_LastSample = t;
   }
   if (static_cast<int>(m_Samples.size()) > m_Params.medianWindow) m_Samples.erase(m_Samples.begin());
+  while (static_cast<int>(m_Recent.size()) > m_Params.riskFrames) m_Recent.erase(m_Recent.begin());
 
   // Panic on sustained (or a large, plausible) overload.
   m_OverBudget = t > tgt.budgetSeconds ? m_OverBudget + 1 : 0;
@@ -400,6 +425,16 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
   const double bandNow = Band(static_cast<int>(m_Samples.size()));
   const double setPoint = SetPoint(tgt);
   if (std::abs(std::log(median / setPoint)) <= bandNow) return finish(s);  // no swimming
+  if (median < setPoint) {  // an increase: enough samples, and decided on the upper quantile
+    if (static_cast<int>(m_Samples.size()) < m_Params.minSamplesUp) return finish(s);
+    if (m_Params.upQuantile > 0.5) {
+      std::vector<double> sorted = m_Samples;
+      std::sort(sorted.begin(), sorted.end());
+      const double upper = sorted[static_cast<std::size_t>(m_Params.upQuantile * (sorted.size() - 1) + 0.5)];
+      if (upper >= setPoint) return finish(s);
+      return finish(Correct(s, std::max(median, upper), tgt, false));
+    }
+  }
   return finish(Correct(s, median, tgt, false));
 }
 

@@ -253,7 +253,26 @@ public:
     int latencyFrames = 0;      // frames between a scale change and the first GPU time measured at it
                                 // (when FrameTiming::gpuScale is 0; else that scale says it)
     bool spreadNoise = true;    // the noise is also the spread of the window around its median
+    // Risk-aware set point: the median is steered to at most T / r, r = the
+    // riskQuantile-th quantile over the median of the last riskFrames usable
+    // samples, each normalised to scale 1 (t / s^gamma), so that the recent
+    // load's riskQuantile-th quantile lands on the budget T rather than the
+    // median on the aim. The memory is not flushed by corrections, so a machine
+    // that had bursts keeps the law low until riskFrames pass. 0: off.
+    double riskQuantile = 0.0;
+    int riskFrames = 60;
+    // Increases are decided on this quantile of the window (at the current
+    // scale) instead of its median: 1 = the largest sample, so the law gives
+    // resolution back only when every recent sample says it fits. 0.5: the median.
+    double upQuantile = 0.5;
+    // Samples at the current scale needed before an increase (a decrease
+    // needs minSamples): a dip of a wandering load must last before the law
+    // gives resolution back into it. Below minSamples: minSamples.
+    int minSamplesUp = 2;
   };
+  // The parameters before the tuning-set scan (Docs/Controller.md): increases
+  // of up to 1.5x after 2 samples on the median, no risk-aware set point.
+  static Params PreviousParams();
   RobustController();
   explicit RobustController(const Params& params);
   std::string_view Name() const override { return ControlLawOption(ControlLaw::Robust); }
@@ -279,6 +298,10 @@ private:
   double m_LastSample = 0.0;         // previous usable sample (for the noise estimate)
   std::vector<double> m_Diffs;       // recent |log(t_i / t_i-1)|
   double m_Spread = 0.0;             // robust spread of the window's samples (log domain)
+  struct Timed {
+    double seconds, scale;
+  };
+  std::vector<Timed> m_Recent;       // last riskFrames usable samples with their scales (risk-aware set point)
 };
 
 // What a law is fed. Original: the article law as the original feeds it, every

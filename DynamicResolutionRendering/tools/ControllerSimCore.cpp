@@ -20,6 +20,16 @@ constexpr int kCpuBoundFrames = 300;
 constexpr int kSpikePeriod = 37;
 constexpr int kCorruptPeriod = 5;
 constexpr int kTailFrames = 100;
+// Shared-machine loads (Bursts, Drift).
+constexpr double kBurstStartChance = 1.0 / 40.0;  // per frame outside a burst
+constexpr double kBurstEndChance = 1.0 / 15.0;    // per frame inside one
+constexpr double kBurstMin = 1.5, kBurstMax = 4.0;  // burst factor, log-uniform
+// Drift: modelled on the first lavapipe tuning trace (arena-cinematic-fixed08:
+// sd of log load 0.49, lag-1 / 5 / 20 autocorrelations 0.93 / 0.84 / 0.60):
+// a slow log-load AR(1) plus white frame-to-frame noise of the GPU time.
+constexpr double kDriftCorrelation = 0.98;        // slow log-load AR(1) coefficient
+constexpr double kDriftSd = 0.4;                  // its stationary standard deviation
+constexpr double kDriftFrameSd = 0.1;             // white log noise of each frame's time
 
 // Deterministic N(0,1) from mt19937 (Box-Muller).
 class Gauss {
@@ -76,6 +86,11 @@ const std::vector<Scenario>& AllScenarios() {
   return all;
 }
 
+const std::vector<Scenario>& SharedMachineScenarios() {
+  static const std::vector<Scenario> shared = {Scenario::Bursts, Scenario::Drift};
+  return shared;
+}
+
 std::string_view ToString(Scenario s) {
   switch (s) {
     case Scenario::Step2x: return "step2x";
@@ -87,6 +102,8 @@ std::string_view ToString(Scenario s) {
     case Scenario::NaN: return "nan";
     case Scenario::VSync60: return "vsync60";
     case Scenario::Still: return "still";
+    case Scenario::Bursts: return "bursts";
+    case Scenario::Drift: return "drift";
   }
   return "?";
 }
@@ -102,17 +119,19 @@ std::string_view Describe(Scenario s) {
     case Scenario::NaN: return "every 5th GPU sample is NaN, +Inf, -Inf, 0, 1e-9 or negative, load still";
     case Scenario::VSync60: return "load x2, frame time rounded up to multiples of 1/60 s";
     case Scenario::Still: return "constant load, noise 0.2 %";
+    case Scenario::Bursts: return "load x1.5..4 in bursts of 15 frames on average, one every 55 (tuning set)";
+    case Scenario::Drift: return "load wanders: log-load AR(1) 0.98, sd 0.4, frame noise 0.1 (tuning set)";
   }
   return "";
 }
 
 bool ParseScenario(std::string_view name, Scenario* out) {
-  for (Scenario s : AllScenarios()) {
-    if (ToString(s) == name) {
-      if (out) *out = s;
-      return true;
-    }
-  }
+  for (const auto* list : {&AllScenarios(), &SharedMachineScenarios()})
+    for (Scenario s : *list)
+      if (ToString(s) == name) {
+        if (out) *out = s;
+        return true;
+      }
   return false;
 }
 
@@ -185,21 +204,57 @@ void ScoreResponse(const LoopSpec& c, const std::vector<double>& err, SimResult*
 
 // The synthetic plant: the model of ControllerSimCore.h with the scenario's
 // disturbances, white or AR(1)-correlated noise.
+// The load of a shared machine from the disturbance frame on (Bursts,
+// Drift; 1 for the other scenarios), from its own generator so that the
+// other scenarios keep their noise sequence. Called once per frame, in order.
+class SharedLoad {
+public:
+  SharedLoad(Scenario s, std::uint32_t seed) : m_Scenario(s), m_Gauss(seed ^ 0x5bd1e995u) {}
+  // Multiplier of this frame's measured time beyond the load (Drift's frame noise).
+  double FrameNoise() const { return m_FrameNoise; }
+  double Next(int n, int d) {
+    if (n < d) return 1.0;
+    if (m_Scenario == Scenario::Bursts) {
+      const double u = m_Gauss.Uniform();
+      if (m_Burst == 1.0 && u < kBurstStartChance)
+        m_Burst = kBurstMin * std::pow(kBurstMax / kBurstMin, m_Gauss.Uniform());
+      else if (m_Burst != 1.0 && u < kBurstEndChance)
+        m_Burst = 1.0;
+      return m_Burst;
+    }
+    if (m_Scenario == Scenario::Drift) {
+      const double r = kDriftCorrelation;
+      m_LogLoad = r * m_LogLoad + kDriftSd * std::sqrt(1.0 - r * r) * m_Gauss.Next();
+      m_FrameNoise = std::exp(kDriftFrameSd * m_Gauss.Next());
+      return std::exp(m_LogLoad);
+    }
+    return 1.0;
+  }
+
+private:
+  Scenario m_Scenario;
+  Gauss m_Gauss;
+  double m_Burst = 1.0;
+  double m_LogLoad = 0.0;
+  double m_FrameNoise = 1.0;
+};
+
 class SyntheticPlant final : public Plant {
 public:
   SyntheticPlant(const SimConfig& c, int d)
       : m_C(c), m_D(d), m_Gauss(c.seed ^ (static_cast<std::uint32_t>(c.scenario) * 0x9E3779B9u)),
-        m_PreviousLoad(LoadAt(c.scenario, 0, d)) {}
+        m_Shared(c.scenario, c.seed), m_PreviousLoad(LoadAt(c.scenario, 0, d)) {}
   PlantFrame Frame(int n, double pixelFraction) override {
     const double u = m_Gauss.Uniform();  // drawn every frame so all scenarios share the noise sequence
-    const Conditions cond = ConditionsAt(m_C, n, m_D, u);
+    Conditions cond = ConditionsAt(m_C, n, m_D, u);
+    cond.load *= m_Shared.Next(n, m_D);
     if (cond.load != m_PreviousLoad) m_LastLoadChange = n;
     m_PreviousLoad = cond.load;
     const double rho = std::clamp(m_C.plant.noiseCorrelation, 0.0, 0.999);
     m_Noise = rho * m_Noise + std::sqrt(1.0 - rho * rho) * m_Gauss.Next();
     PlantFrame f;
     f.model = m_C.plant.GpuSeconds(pixelFraction, cond.load);
-    f.actual = std::max(0.0, f.model * (1.0 + m_C.plant.noise * m_Noise)) * cond.spike;
+    f.actual = std::max(0.0, f.model * (1.0 + m_C.plant.noise * m_Noise)) * cond.spike * m_Shared.FrameNoise();
     f.frameSeconds = std::max(cond.cpuSeconds, f.actual);
     if (m_C.scenario == Scenario::VSync60) f.frameSeconds = std::ceil(f.frameSeconds * 60.0 - 1e-9) / 60.0;
     f.load = cond.load;
@@ -216,6 +271,7 @@ private:
   const SimConfig& m_C;
   int m_D;
   Gauss m_Gauss;
+  SharedLoad m_Shared;
   double m_PreviousLoad;
   int m_LastLoadChange = 0;
   double m_Noise = 0.0;  // AR(1) state, unit variance
@@ -274,6 +330,7 @@ SimResult RunLoop(ResolutionController& controller, Plant& plant, const LoopSpec
   r.controller = std::string(controller.Name());
   r.scenario = c.scenario;
   r.aimSeconds = aim;
+  r.budgetSeconds = budget;
   r.settleApplies = c.settleApplies;
 
   std::vector<double> err(frames, 0.0), scales, budgetScales;
@@ -303,14 +360,17 @@ SimResult RunLoop(ResolutionController& controller, Plant& plant, const LoopSpec
     const bool changed = dr.GetViewportWidth() != w0 || dr.GetViewportHeight() != h0;
 
     err[n] = f.model / aim - 1.0;
+    const bool over = n >= c.metricsFrom && f.actual > budget && f.countsOverBudget;
     if (n >= c.metricsFrom) {
-      if (f.actual > budget && f.countsOverBudget) ++r.overBudget;
+      if (over) ++r.overBudget;
       if (changed) ++r.changes;
       if (f.still && changed) ++r.stillChanges;
       scales.push_back(sx);
       budgetScales.push_back(f.budgetScale);
     }
-    if (keepTrace) r.trace.push_back({n, f.load, sx, f.model, timing.gpuInnerSeconds, timing.frameSeconds, changed});
+    if (keepTrace)
+      r.trace.push_back({n, f.load, sx, f.model, timing.gpuInnerSeconds, timing.frameSeconds, changed, f.actual,
+                         f.budgetScale, over});
   }
   ScoreResponse(c, err, &r);
   r.finalScale = dr.GetScaleX();
@@ -325,7 +385,8 @@ SimResult RunScenario(ResolutionController& controller, const SimConfig& config,
   spec.frames = std::max(c.frames, kMinFrames);
   spec.metricsFrom = std::clamp(c.disturbanceFrame, 1, spec.frames - kTailFrames);
   spec.settleFrom = SettleFrom(c.scenario, spec.metricsFrom);
-  spec.settleApplies = c.scenario != Scenario::Periodic;
+  spec.settleApplies = c.scenario != Scenario::Periodic && c.scenario != Scenario::Bursts &&
+                       c.scenario != Scenario::Drift;  // loads that never keep still
   spec.target = c.target;
   spec.commonAim = c.commonAim;
   spec.feed = c.feed;
@@ -468,6 +529,18 @@ void WriteCsv(std::ostream& out, const std::vector<SimResult>& results) {
                   r.steadyErrorPct, r.stillChanges, r.overBudget, r.changes, r.finalScale);
     out << line;
   }
+}
+
+void WritePerFrameCsv(std::ostream& out, const std::vector<SimResult>& results) {
+  out << "controller,scenario,frame,load,scale,budget_scale,model_ms,actual_ms,fed_ms,budget_ms,over_budget,changed\n";
+  char line[400];
+  for (const SimResult& r : results)
+    for (const FrameRecord& f : r.trace) {
+      std::snprintf(line, sizeof line, "%s,%s,%d,%.5f,%.5f,%.5f,%.4f,%.4f,%.4f,%.4f,%d,%d\n", r.controller.c_str(),
+                    r.scenario.c_str(), f.frame, f.load, f.scale, f.budgetScale, f.modelGpu * 1e3, f.actualGpu * 1e3,
+                    f.measuredGpu * 1e3, r.budgetSeconds * 1e3, f.overBudget ? 1 : 0, f.changed ? 1 : 0);
+      out << line;
+    }
 }
 
 }  // namespace drr::sim

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <iostream>
 #include <string>
 #include <string_view>
@@ -24,7 +25,8 @@ void Usage(std::ostream& out) {
   out << "usage: drr_controller_sim [options]\n"
          "  --controller NAME   article | ue-style | robust | all (default all); repeatable or comma list\n"
          "  --scenario NAME     step2x | step-half | ramp | periodic | cpu-bound | spikes | nan | vsync60 |\n"
-         "                      still | all (default all); repeatable or comma list\n"
+         "                      still | all (default all: these nine) | bursts | drift (the shared-machine\n"
+         "                      loads of the tuning set); repeatable or comma list\n"
          "  --frames N          frames per run, " << drr::sim::kMinFrames << "..1000000 (default 900)\n"
          "  --seed N            noise seed, 0..4294967295 (default 20110228)\n"
          "  --noise X           relative GPU-time noise, 0..0.5 (default 0.01; still uses min(X, 0.002))\n"
@@ -33,10 +35,18 @@ void Usage(std::ostream& out) {
          "                      handed the budget T (1 - H), over budget still counts against T)\n"
          "  --synthetic-set     totals of every law on the synthetic set (the scenarios under latency\n"
          "                      0..3, white 1 % and AR(0.9) 3 % noise): the only cases tuning may use\n"
-         "  --scan-robust       the robust law's tuning scan on the synthetic set (never the traces)\n"
+         "  --scan-robust       the robust law's tuning scan on the tuning set: the synthetic set, the\n"
+         "                      shared-machine scenarios (bursts, drift) and --tuning-traces; never --traces\n"
+         "  --tuning-traces DIR recorded tuning traces for --scan-robust (Tests/controller/tuning-traces);\n"
+         "                      a held-out trace in DIR is refused\n"
          "  --traces DIR        replay the held-out traces of DIR (Tests/controller/traces) instead\n"
          "                      of the scenarios, budget = the sweep's time at scale 0.7, latency as\n"
          "                      --latency (default: the sample's, 1)\n"
+         "  --robust-before     also run the robust law as it was before the tuning-set scan, named\n"
+         "                      robust-before (RobustController::PreviousParams)\n"
+         "  --headroom-sweep    instead of the tables: each law's totals at headrooms 0.05, 0.1, 0.2, 0.3\n"
+         "                      (over budget against resolution given up), with --traces, --synthetic-set\n"
+         "                      or the scenarios\n"
          "  --latency N         frames before a GPU time reaches the controller, 0..16 (default 1, the\n"
          "                      sample's on lavapipe); the robust and UE-style laws are told N\n"
          "  --gain K            gain of the article law, 0.001..10 (default 0.01)\n"
@@ -47,6 +57,8 @@ void Usage(std::ostream& out) {
          "                      original = 10-result average and 1 / once-a-second FPS, the others\n"
          "                      per-result = the newest GPU time and that frame's period)\n"
          "  --csv PATH          also write the table (or the sweep) as CSV\n"
+         "  --per-frame PATH    also write every frame of every run as CSV (scale, budget scale, times,\n"
+         "                      over budget, changed), for diagnosing a law\n"
          "  --sweep-k           sweep the article law's gain k over 0.001..10 instead of the matrix\n"
          "  --help              this text\n"
          "Plant: gpu = (2 ms + 30 ms * sx * sy * load) * (1 + noise N(0,1)), budget 1/60 s, headroom 10 %,\n"
@@ -124,8 +136,12 @@ struct SimArgs {
   bool sweep = false;
   std::vector<drr::sim::ArticleVariant> variants;  // non-empty: article variants instead of the laws
   std::string tracesDir;
+  std::string tuningTracesDir;  // --tuning-traces: recorded traces the scan may use (none held out)
+  std::string perFramePath;  // --per-frame: every frame of every run, for diagnosis
   bool syntheticSet = false;
   bool scanRobust = false;
+  bool robustBefore = false;   // also the robust law before the tuning-set scan ("robust-before")
+  bool headroomSweep = false;  // totals per law at each headroom of the scan instead of the tables
 };
 
 // Reads the option at argv[*i] and its value (moving *i past it); exits with
@@ -193,6 +209,16 @@ void ParseOption(int argc, char** argv, int* i, SimArgs* args) {
   } else if (arg == "--csv") {
     args->csvPath = std::string(value(arg));
     if (args->csvPath.empty()) Fail("--csv needs a path");
+  } else if (arg == "--robust-before") {
+    args->robustBefore = true;
+  } else if (arg == "--headroom-sweep") {
+    args->headroomSweep = true;
+  } else if (arg == "--tuning-traces") {
+    args->tuningTracesDir = std::string(value(arg));
+    if (args->tuningTracesDir.empty()) Fail("--tuning-traces needs a directory");
+  } else if (arg == "--per-frame") {
+    args->perFramePath = std::string(value(arg));
+    if (args->perFramePath.empty()) Fail("--per-frame needs a path");
   } else if (arg == "--sweep-k") {
     args->sweep = true;
   } else {
@@ -200,19 +226,129 @@ void ParseOption(int argc, char** argv, int* i, SimArgs* args) {
   }
 }
 
-// Every law on every scenario; the article law with --gain when given.
+// A fresh controller of the law told the latency; the article law with
+// --gain when given; before: the robust law with its parameters before the
+// tuning-set scan. The name its results carry.
+std::unique_ptr<drr::ResolutionController> MakeLaw(const SimArgs& args, ControlLaw law, bool before, int latency) {
+  if (law == ControlLaw::Article && args.gainSet) return std::make_unique<drr::ArticleController>(args.gain);
+  if (!before) return drr::MakeController(law, latency);
+  drr::RobustController::Params p = drr::RobustController::PreviousParams();
+  p.latencyFrames = latency;
+  return std::make_unique<drr::RobustController>(p);
+}
+struct LawRun {
+  ControlLaw law;
+  bool before;
+  std::string Name() const { return before ? "robust-before" : drr::ControlLawOption(law); }
+};
+std::vector<LawRun> LawRuns(const SimArgs& args) {
+  std::vector<LawRun> runs;
+  for (ControlLaw law : args.laws) {
+    if (law == ControlLaw::Robust && args.robustBefore) runs.push_back({law, true});
+    runs.push_back({law, false});
+  }
+  return runs;
+}
+
+// Every law on every scenario.
 std::vector<drr::sim::SimResult> RunLawsOnScenarios(const SimArgs& args) {
   const drr::sim::SimConfig& config = args.config;
   std::vector<drr::sim::SimResult> results;
-  for (ControlLaw law : args.laws) {
+  for (const LawRun& run : LawRuns(args)) {
     for (Scenario s : args.scenarios) {
-      std::unique_ptr<drr::ResolutionController> controller =
-          (law == ControlLaw::Article && args.gainSet) ? std::make_unique<drr::ArticleController>(args.gain)
-                                                       : drr::MakeController(law, config.plant.latencyFrames);
-      results.push_back(drr::sim::RunScenario(*controller, drr::sim::ConfigFor(s, config)));
+      auto controller = MakeLaw(args, run.law, run.before, config.plant.latencyFrames);
+      results.push_back(drr::sim::RunScenario(*controller, drr::sim::ConfigFor(s, config), !args.perFramePath.empty()));
+      results.back().controller = run.Name();
     }
   }
   return results;
+}
+
+// Every law on every trace of --traces (exits on an unreadable directory).
+std::vector<drr::sim::SimResult> RunLawsOnTraces(const SimArgs& args, bool print) {
+  std::vector<drr::sim::TraceCase> cases;
+  std::string error;
+  if (!drr::sim::LoadTraceDir(args.tracesDir, &cases, &error)) {
+    std::cerr << "drr_controller_sim: " << error << "\n";
+    std::exit(1);
+  }
+  drr::sim::ReplaySpec spec;
+  spec.headroom = args.config.target.headroom;
+  spec.latencyFrames = args.config.plant.latencyFrames;
+  std::vector<drr::sim::SimResult> results;
+  for (const drr::sim::TraceCase& c : cases) {
+    for (const LawRun& run : LawRuns(args)) {
+      auto controller = MakeLaw(args, run.law, run.before, spec.latencyFrames);
+      results.push_back(drr::sim::ReplayTraceWith(*controller, c.trace, c.cost, spec, !args.perFramePath.empty()));
+      results.back().controller = run.Name();
+    }
+    if (print)
+      std::cout << c.trace.name << (c.trace.HeldOut() ? " (held out)" : "") << ": " << c.trace.rows.size()
+                << " frames, budget " << drr::sim::ReplayBudget(c.trace, c.cost, spec) * 1000.0 << " ms\n";
+  }
+  if (print)
+    std::cout << "Replay: latency " << spec.latencyFrames << ", headroom " << spec.headroom << ", warm-up "
+              << spec.warmupFrames << " frames from scale 1\n\n";
+  std::stable_sort(results.begin(), results.end(), [](const auto& a, const auto& b) { return a.controller < b.controller; });
+  return results;
+}
+
+// Every law on every scenario of every case of the synthetic set.
+std::vector<drr::sim::SimResult> RunLawsOnSyntheticSet(const SimArgs& args, bool print) {
+  std::vector<drr::sim::SimResult> results;
+  for (const drr::sim::SyntheticCase& c : drr::sim::SyntheticSet(args.config)) {
+    SimArgs one = args;
+    one.config = c.base;
+    const auto rows = RunLawsOnScenarios(one);
+    if (print) {
+      std::cout << "### " << c.label << "\n\n";
+      drr::sim::PrintTable(std::cout, rows);
+      std::cout << "\n";
+    }
+    results.insert(results.end(), rows.begin(), rows.end());
+  }
+  return results;
+}
+
+void PrintTotals(const std::vector<drr::sim::SimResult>& results, const char* firstColumn, const std::string& first,
+                 bool header = true) {
+  char line[240];
+  if (header)
+    std::cout << "| " << firstColumn << " | law | over budget | given up % | changes | still changes | never settled |\n"
+            << "| --- | --- | ---: | ---: | ---: | ---: | ---: |\n";
+  for (const auto& t : drr::sim::Summarise(results)) {
+    std::snprintf(line, sizeof line, "| %s | %-13s | %11d | %10.1f | %7d | %13d | %13d |\n", first.c_str(),
+                  t.controller.c_str(), t.overBudget, t.givenUpPct, t.changes, t.stillChanges, t.neverSettled);
+    std::cout << line;
+  }
+}
+
+// --headroom-sweep: the totals of each law at each headroom of the scan.
+void SweepHeadroom(const SimArgs& args) {
+  bool header = true;
+  for (double h : drr::sim::kScanHeadrooms) {
+    SimArgs one = args;
+    one.config.target.headroom = h;
+    const auto results = !args.tracesDir.empty() ? RunLawsOnTraces(one, false)
+                         : args.syntheticSet      ? RunLawsOnSyntheticSet(one, false)
+                                                  : RunLawsOnScenarios(one);
+    std::ostringstream label;
+    label << h;
+    PrintTotals(results, "headroom", label.str(), header);
+    header = false;
+  }
+}
+
+// The --csv table and the --per-frame rows, when asked for.
+void WriteOutputs(const SimArgs& args, std::ofstream& csv, const std::vector<drr::sim::SimResult>& results) {
+  if (csv.is_open()) drr::sim::WriteCsv(csv, results);
+  if (args.perFramePath.empty()) return;
+  std::ofstream perFrame(args.perFramePath);
+  if (!perFrame) {
+    std::cerr << "drr_controller_sim: cannot write '" << args.perFramePath << "'\n";
+    std::exit(1);
+  }
+  drr::sim::WritePerFrameCsv(perFrame, results);
 }
 
 }  // namespace
@@ -250,53 +386,33 @@ int main(int argc, char** argv) {
   std::vector<drr::sim::SimResult> results;
   if (args.scanRobust) {
     if (!args.tracesDir.empty()) Fail("--scan-robust tunes on the synthetic set only; --traces is held out");
-    drr::sim::PrintRobustScan(std::cout, drr::sim::ScanRobustOnSyntheticSet(config));
-    return 0;
-  }
-  if (!args.tracesDir.empty()) {
-    std::vector<drr::sim::TraceCase> cases;
+    std::vector<drr::sim::TraceCase> tuning;
     std::string error;
-    if (!drr::sim::LoadTraceDir(args.tracesDir, &cases, &error)) {
+    if (!args.tuningTracesDir.empty() && !drr::sim::LoadTraceDir(args.tuningTracesDir, &tuning, &error)) {
       std::cerr << "drr_controller_sim: " << error << "\n";
       return 1;
     }
-    drr::sim::ReplaySpec spec;
-    spec.headroom = config.target.headroom;
-    spec.latencyFrames = config.plant.latencyFrames;
-    for (const drr::sim::TraceCase& c : cases) {
-      const auto rows = drr::sim::ReplayTrace(args.laws, c.trace, c.cost, spec);
-      results.insert(results.end(), rows.begin(), rows.end());
-      std::cout << c.trace.name << (c.trace.HeldOut() ? " (held out)" : "") << ": " << c.trace.rows.size()
-                << " frames, budget " << drr::sim::ReplayBudget(c.trace, c.cost, spec) * 1000.0 << " ms\n";
-    }
-    std::cout << "Replay: latency " << spec.latencyFrames << ", headroom " << spec.headroom << ", warm-up "
-              << spec.warmupFrames << " frames from scale 1\n\n";
-    std::stable_sort(results.begin(), results.end(), [](const auto& a, const auto& b) { return a.controller < b.controller; });
+    for (const drr::sim::TraceCase& c : tuning)
+      if (c.trace.HeldOut()) Fail("'" + c.trace.name + "' is a held-out trace: it must not be used for tuning");
+    drr::sim::PrintRobustScan(std::cout, drr::sim::ScanRobust(config, tuning), config.target.headroom);
+    return 0;
+  }
+  if (args.headroomSweep) {
+    SweepHeadroom(args);
+    return 0;
+  }
+  if (!args.tracesDir.empty()) {
+    results = RunLawsOnTraces(args, true);
     drr::sim::PrintTable(std::cout, results);
-    if (csv.is_open()) drr::sim::WriteCsv(csv, results);
+    WriteOutputs(args, csv, results);
     return 0;
   }
   if (args.syntheticSet) {
     std::cout << "Synthetic set (latency " << "0..3, white 1 % and AR(0.9) 3 %), seed " << config.seed << "\n\n";
-    for (const drr::sim::SyntheticCase& c : drr::sim::SyntheticSet(config)) {
-      std::cout << "### " << c.label << "\n\n";
-      SimArgs one = args;
-      one.config = c.base;
-      const auto rows = RunLawsOnScenarios(one);
-      drr::sim::PrintTable(std::cout, rows);
-      std::cout << "\n";
-      results.insert(results.end(), rows.begin(), rows.end());
-    }
+    results = RunLawsOnSyntheticSet(args, true);
     std::cout << "### whole synthetic set\n\n";
-    char line[200];
-    std::cout << "| law | over budget | given up % | changes | still changes | never settled |\n"
-                 "| --- | ---: | ---: | ---: | ---: | ---: |\n";
-    for (const auto& t : drr::sim::Summarise(results)) {
-      std::snprintf(line, sizeof line, "| %-9s | %11d | %10.1f | %7d | %13d | %13d |\n", t.controller.c_str(),
-                    t.overBudget, t.givenUpPct, t.changes, t.stillChanges, t.neverSettled);
-      std::cout << line;
-    }
-    if (csv.is_open()) drr::sim::WriteCsv(csv, results);
+    PrintTotals(results, "set", "all");
+    WriteOutputs(args, csv, results);
     return 0;
   }
   if (args.variants.empty()) {
@@ -314,6 +430,6 @@ int main(int argc, char** argv) {
             << config.plant.latencyFrames << ", seed " << config.seed << ", " << config.frames
             << " frames, disturbance at 300\n\n";
   drr::sim::PrintTable(std::cout, results);
-  if (csv.is_open()) drr::sim::WriteCsv(csv, results);
+  WriteOutputs(args, csv, results);
   return 0;
 }

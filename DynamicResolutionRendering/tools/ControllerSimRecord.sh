@@ -1,7 +1,12 @@
 #!/usr/bin/env bash
-# Records the held-out GPU-time traces of drr_controller_sim --trace from real
-# runs of the sample (headless; on this project's machines lavapipe).
-# usage: ControllerSimRecord.sh BUILD_DIR OUT_DIR
+# Records GPU-time traces for drr_controller_sim from real runs of the sample
+# (headless; on this project's machines lavapipe).
+# usage: ControllerSimRecord.sh BUILD_DIR OUT_DIR [held-out|tuning]
+#   held-out (default): the held-out set (Tests/controller/traces), never used for tuning;
+#   tuning: traces that the robust law's tuning scan may use
+#           (Tests/controller/tuning-traces, drr_controller_sim --scan-robust --tuning-traces).
+# Every new file records the machine's load (uptime) before and after its run:
+# on a shared machine the load, not the scene, sets most of the GPU time.
 # Per scene: a scale sweep with the animation paused (the cost curve t(s) the
 # replay scales recorded times by), then runs with the cinematic or a static
 # camera, at a fixed scale or with a law on, animation at a fixed 1/60 s per
@@ -14,12 +19,19 @@ build=$(realpath "$1"); out=$(realpath -m "$2"); mkdir -p "$out"
 app="$build/DynamicResolutionRendering/DynamicResolutionRendering"
 conv="$(dirname "$(realpath "$0")")/ControllerSimTrace.py"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
-held="held-out trace: never used for tuning any law (Docs/Controller.md)"
+mode=${3:-held-out}
+case $mode in
+  held-out) held="held-out trace: never used for tuning any law (Docs/Controller.md)" ;;
+  tuning) held="tuning trace: recorded for tuning the robust law, not held out (Docs/Controller.md)" ;;
+  *) echo "ControllerSimRecord.sh: mode must be held-out or tuning, not '$mode'" >&2; exit 2 ;;
+esac
 
 run() {  # name role args...
   local name=$1 role=$2; shift 2
+  local before; before=$(uptime)
   "$app" --headless --quiet --report "$tmp/$name.json" "$@" > /dev/null
   python3 "$conv" "$tmp/$name.json" "$tmp/$name.csv" "$role" "DynamicResolutionRendering ${*//$build/BUILD}"
+  sed -i "1a # machine load before (uptime):$before\\n# machine load after (uptime):$(uptime); cores: $(nproc)" "$tmp/$name.csv"
 }
 
 sweep() {  # name args...: scales 1.0 .. 0.3, 30 frames each, the first 10 dropped, renumbered
@@ -52,6 +64,14 @@ trace() {  # name args...
 
 arena=(--width 1280 --height 720)
 large=(--scene "$build/Media/ArenaLarge/scene_description.txt" --width 960 --height 540)
+if [ "$mode" = tuning ]; then  # other cameras and scales than the held-out runs, fixed scales only
+  sweep arena "${arena[@]}" --camera 2
+  trace arena-cinematic-fixed08 "${arena[@]}" --camera 1 --scale 0.8
+  trace arena-static2-fixed07 "${arena[@]}" --camera 2 --scale 0.7
+  trace arena-static3-fixed05 "${arena[@]}" --camera 3 --scale 0.5
+  trace arena-cinematic-fixed09 "${arena[@]}" --camera 1 --scale 0.9
+  echo "traces in $out"; exit 0
+fi
 sweep arena "${arena[@]}" --camera 1
 r=$(refresh_for "$out/arena-sweep.csv" 0.7 1)
 trace arena-cinematic-fixed "${arena[@]}" --camera 1 --scale 1.0

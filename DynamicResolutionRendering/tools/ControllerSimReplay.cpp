@@ -160,8 +160,8 @@ double CostCurve::ScaleFor(double seconds, double lo, double hi) const {
   return 0.5 * (lo + hi);
 }
 
-std::vector<SimResult> ReplayTrace(const std::vector<ControlLaw>& laws, const Trace& trace, const CostCurve& cost,
-                                   const ReplaySpec& spec) {
+namespace {
+LoopSpec ReplayLoop(const Trace& trace, const ReplaySpec& spec) {
   LoopSpec loop;
   loop.scenario = trace.name;
   loop.frames = static_cast<int>(trace.rows.size());
@@ -170,13 +170,25 @@ std::vector<SimResult> ReplayTrace(const std::vector<ControlLaw>& laws, const Tr
   loop.settleIsFirstReach = true;  // a recorded load never keeps still
   loop.target.headroom = spec.headroom;
   loop.latencyFrames = spec.latencyFrames;
+  return loop;
+}
+}  // namespace
+
+SimResult ReplayTraceWith(ResolutionController& law, const Trace& trace, const CostCurve& cost, const ReplaySpec& spec,
+                          bool keepTrace) {
+  LoopSpec loop = ReplayLoop(trace, spec);
+  TracePlant plant(trace, cost);
+  loop.target.budgetSeconds = plant.Budget(spec.budgetScale);
+  plant.SetTarget(loop.target);
+  return RunLoop(law, plant, loop, keepTrace);
+}
+
+std::vector<SimResult> ReplayTrace(const std::vector<ControlLaw>& laws, const Trace& trace, const CostCurve& cost,
+                                   const ReplaySpec& spec, bool keepTrace) {
   std::vector<SimResult> out;
   for (ControlLaw law : laws) {
     auto controller = MakeController(law, spec.latencyFrames);
-    TracePlant plant(trace, cost);
-    loop.target.budgetSeconds = plant.Budget(spec.budgetScale);
-    plant.SetTarget(loop.target);
-    out.push_back(RunLoop(*controller, plant, loop));
+    out.push_back(ReplayTraceWith(*controller, trace, cost, spec, keepTrace));
   }
   return out;
 }

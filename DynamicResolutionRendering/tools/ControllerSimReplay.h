@@ -70,7 +70,11 @@ double ReplayBudget(const Trace& trace, const CostCurve& cost, const ReplaySpec&
 
 // Each law on the trace (a fresh controller per run, told the latency).
 std::vector<SimResult> ReplayTrace(const std::vector<ControlLaw>& laws, const Trace& trace, const CostCurve& cost,
-                                   const ReplaySpec& spec);
+                                   const ReplaySpec& spec, bool keepTrace = false);
+
+// One law (already made, told the latency) on the trace.
+SimResult ReplayTraceWith(ResolutionController& law, const Trace& trace, const CostCurve& cost, const ReplaySpec& spec,
+                          bool keepTrace = false);
 
 // Every "*.csv" of dir except "*-sweep.csv", in name order, each with the
 // sweep "<prefix>-sweep.csv" of its scene (prefix: the name up to its first

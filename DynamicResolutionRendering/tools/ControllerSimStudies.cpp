@@ -2,6 +2,7 @@
 // synthetic set (never the held-out traces) and the article law's gain sweep.
 // Declared in ControllerSimCore.h.
 #include "ControllerSimCore.h"
+#include "ControllerSimReplay.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,46 +11,153 @@
 
 namespace drr::sim {
 
-std::vector<RobustScanRow> ScanRobustOnSyntheticSet(const SimConfig& base) {
+void ScanTotals::Add(const SimResult& r) {
+  overBudget += r.overBudget;
+  changes += r.changes;
+  stillChanges += r.stillChanges;
+  neverSettled += r.settleApplies && r.settleFrames < 0;
+  givenUpPct = (givenUpPct * runs + r.givenUpPct) / (runs + 1);
+  ++runs;
+}
+
+namespace {
+
+// The grid of the scan; the first row is the law as it was before the scan.
+std::vector<RobustController::Params> ScanGrid() {
+  std::vector<RobustController::Params> grid;
+  struct Risk {
+    double quantile;
+    int frames;
+  };
+  for (double maxUp : {1.5, 1.2})
+    for (int up : {2, 6})
+    for (double upQ : {0.5, 0.75, 1.0})
+      for (Risk risk : {Risk{0.0, 60}, Risk{0.75, 60}}) {
+        RobustController::Params p = RobustController::PreviousParams();
+        p.maxStepUp = maxUp;
+        p.minSamplesUp = up;
+        p.upQuantile = upQ;
+        p.riskQuantile = risk.quantile;
+        p.riskFrames = risk.frames;
+        grid.push_back(p);
+      }
+  return grid;
+}
+
+}  // namespace
+
+const ScanTotals& RobustScanRow::Base(ScanSet set, double headroom) const {
+  std::size_t best = 0;
+  for (std::size_t h = 0; h < std::size(kScanHeadrooms); ++h)
+    if (std::abs(kScanHeadrooms[h] - headroom) < std::abs(kScanHeadrooms[best] - headroom)) best = h;
+  return at[best][set];
+}
+
+double RobustScanRow::OverBudgetAt(ScanSet set, double givenUp) const {
+  std::vector<std::pair<double, double>> curve;  // (given up, over budget), increasing given up
+  for (const auto& h : at) curve.push_back({h[set].givenUpPct, static_cast<double>(h[set].overBudget)});
+  std::sort(curve.begin(), curve.end());
+  if (givenUp <= curve.front().first) return curve.front().second;
+  for (std::size_t i = 1; i < curve.size(); ++i)
+    if (givenUp <= curve[i].first) {
+      const auto& [g0, o0] = curve[i - 1];
+      const auto& [g1, o1] = curve[i];
+      return g1 > g0 ? o0 + (o1 - o0) * (givenUp - g0) / (g1 - g0) : o1;
+    }
+  return curve.back().second;
+}
+
+std::vector<RobustScanRow> ScanRobust(const SimConfig& base, const std::vector<TraceCase>& tuningTraces) {
   std::vector<RobustScanRow> rows;
-  for (int window : {9, 15})
-    for (double deadband : {0.03, 0.05})
-      for (double z : {3.5, 5.0})
-        for (bool spread : {false, true}) {
-          RobustScanRow row;
-          row.params.medianWindow = window;
-          row.params.deadband = deadband;
-          row.params.noiseZ = z;
-          row.params.spreadNoise = spread;
-          int runs = 0;
-          for (const SyntheticCase& c : SyntheticSet(base)) {
-            for (Scenario s : AllScenarios()) {
-              RobustController::Params p = row.params;
-              p.latencyFrames = c.base.plant.latencyFrames;
-              RobustController law(p);
-              const SimResult r = RunScenario(law, ConfigFor(s, c.base));
-              row.overBudget += r.overBudget;
-              row.changes += r.changes;
-              row.stillChanges += r.stillChanges;
-              row.neverSettled += r.settleApplies && r.settleFrames < 0;
-              row.givenUpPct += r.givenUpPct;
-              ++runs;
-            }
+  for (const RobustController::Params& params : ScanGrid()) {
+    RobustScanRow row;
+    row.params = params;
+    for (std::size_t h = 0; h < std::size(kScanHeadrooms); ++h) {
+      SimConfig config = base;
+      config.target.headroom = kScanHeadrooms[h];
+      for (const SyntheticCase& c : SyntheticSet(config))
+        for (const auto* list : {&AllScenarios(), &SharedMachineScenarios()})
+          for (Scenario s : *list) {
+            RobustController::Params p = params;
+            p.latencyFrames = c.base.plant.latencyFrames;
+            RobustController law(p);
+            row.at[h][list == &AllScenarios() ? kSynthetic : kShared].Add(RunScenario(law, ConfigFor(s, c.base)));
           }
-          row.givenUpPct /= std::max(1, runs);
-          rows.push_back(row);
-        }
+      for (const TraceCase& t : tuningTraces) {
+        RobustController::Params p = params;
+        p.latencyFrames = kSampleTimerLatency;
+        RobustController law(p);
+        ReplaySpec spec;
+        spec.headroom = kScanHeadrooms[h];
+        row.at[h][kTuningTraces].Add(ReplayTraceWith(law, t.trace, t.cost, spec));
+      }
+    }
+    rows.push_back(row);
+  }
   return rows;
 }
 
-void PrintRobustScan(std::ostream& out, const std::vector<RobustScanRow>& rows) {
-  out << "| window | deadband | noiseZ | spread | over budget | given up % | changes | still changes | never settled |\n"
-         "| ---: | ---: | ---: | :---: | ---: | ---: | ---: | ---: | ---: |\n";
-  char line[200];
-  for (const RobustScanRow& r : rows) {
-    std::snprintf(line, sizeof line, "| %d | %.2f | %.1f | %s | %d | %.2f | %d | %d | %d |\n", r.params.medianWindow,
-                  r.params.deadband, r.params.noiseZ, r.params.spreadNoise ? "yes" : "no", r.overBudget,
-                  r.givenUpPct, r.changes, r.stillChanges, r.neverSettled);
+namespace {
+// Sum over the sets of the row's over budget at the baseline's given up,
+// relative to the baseline's over budget (3 = as the baseline).
+double Efficiency(const RobustScanRow& row, const RobustScanRow& baseline, double headroom) {
+  double sum = 0.0;
+  for (ScanSet set : {kSynthetic, kShared, kTuningTraces}) {
+    const ScanTotals& b = baseline.Base(set, headroom);
+    if (b.runs == 0) {
+      sum += 1.0;
+      continue;
+    }
+    sum += row.OverBudgetAt(set, b.givenUpPct) / std::max(1, b.overBudget);
+  }
+  return sum;
+}
+}  // namespace
+
+int PickRobustRow(const std::vector<RobustScanRow>& rows, double headroom) {
+  if (rows.empty()) return -1;
+  const ScanTotals& b = rows.front().Base(kSynthetic, headroom);
+  int best = -1;
+  for (int i = 0; i < static_cast<int>(rows.size()); ++i) {
+    const ScanTotals& s = rows[i].Base(kSynthetic, headroom);
+    if (s.givenUpPct > b.givenUpPct + 0.5 || s.changes > 1.1 * b.changes || s.neverSettled > b.neverSettled ||
+        s.stillChanges > b.stillChanges)
+      continue;
+    if (best < 0 || Efficiency(rows[i], rows[0], headroom) < Efficiency(rows[best], rows[0], headroom)) best = i;
+  }
+  return best;
+}
+
+void PrintRobustScan(std::ostream& out, const std::vector<RobustScanRow>& rows, double headroom) {
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "At headroom %.2f: over budget / given up %% / changes per set (synthetic also still changes and "
+                "never settled); \"at base\": over budget at the baseline's given up, interpolated over headrooms "
+                "0.05, 0.1, 0.2, 0.3; score: their sum relative to the baseline (3.00 = as the baseline)\n\n",
+                headroom);
+  out << line;
+  out << "| max up | up after | up on | risk | synthetic | still / never | at base | shared | at base | tuning "
+         "traces | at base | score |\n"
+         "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+  const int picked = PickRobustRow(rows, headroom);
+  for (int i = 0; i < static_cast<int>(rows.size()); ++i) {
+    const RobustScanRow& r = rows[i];
+    const auto& p = r.params;
+    char risk[32] = "off";
+    if (p.riskQuantile > 0.0) std::snprintf(risk, sizeof risk, "%.2f/%d", p.riskQuantile, p.riskFrames);
+    const ScanTotals& sy = r.Base(kSynthetic, headroom);
+    const ScanTotals& sh = r.Base(kShared, headroom);
+    const ScanTotals& tr = r.Base(kTuningTraces, headroom);
+    const RobustScanRow& b = rows.front();
+    std::snprintf(line, sizeof line,
+                  "| %.1f | %d | %.2f | %s | %d / %.2f / %d | %d / %d | %.0f | %d / %.2f / %d | %.0f | %d / %.2f / %d "
+                  "| %.0f | %.2f |%s\n",
+                  p.maxStepUp, p.minSamplesUp, p.upQuantile, risk, sy.overBudget, sy.givenUpPct, sy.changes,
+                  sy.stillChanges, sy.neverSettled, r.OverBudgetAt(kSynthetic, b.Base(kSynthetic, headroom).givenUpPct),
+                  sh.overBudget, sh.givenUpPct, sh.changes, r.OverBudgetAt(kShared, b.Base(kShared, headroom).givenUpPct),
+                  tr.overBudget, tr.givenUpPct, tr.changes,
+                  r.OverBudgetAt(kTuningTraces, b.Base(kTuningTraces, headroom).givenUpPct),
+                  Efficiency(r, b, headroom), i == 0 ? " baseline" : (i == picked ? " **picked**" : ""));
     out << line;
   }
 }
