@@ -250,6 +250,7 @@ RobustController::Params RobustController::PreviousParams() {
   p.minSamplesUp = 2;
   p.upQuantile = 0.5;
   p.riskQuantile = 0.0;
+  p.riskLocal = false;
   return p;
 }
 
@@ -306,9 +307,18 @@ double RobustController::SetPoint(const ControlTarget& tgt) const {
   if (m_Params.riskQuantile <= 0.0 || m_Recent.size() < 10) return noiseAware;
   std::vector<double> loads;  // the recent samples at scale 1, with the cost exponent now believed
   for (const Timed& x : m_Recent) loads.push_back(x.seconds / std::pow(x.scale, m_Gamma));
-  std::sort(loads.begin(), loads.end());
-  const double upper = loads[static_cast<std::size_t>(m_Params.riskQuantile * (loads.size() - 1) + 0.5)];
-  const double ratio = upper / Median(loads);
+  std::vector<double> spread;  // what the quantile is taken of, relative to its level (ratio 1)
+  if (m_Params.riskLocal) {
+    constexpr std::size_t kLevel = 9;
+    for (std::size_t i = kLevel; i < loads.size(); ++i)
+      spread.push_back(loads[i] / Median(std::vector<double>(loads.begin() + (i - kLevel), loads.begin() + i)));
+    if (spread.size() < 10) return noiseAware;
+  } else {
+    const double level = Median(loads);
+    for (double l : loads) spread.push_back(l / level);
+  }
+  std::sort(spread.begin(), spread.end());
+  const double ratio = spread[static_cast<std::size_t>(m_Params.riskQuantile * (spread.size() - 1) + 0.5)];
   return ratio > 1.0 ? std::min(noiseAware, tgt.budgetSeconds / ratio) : noiseAware;
 }
 

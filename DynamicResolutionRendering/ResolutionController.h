@@ -231,7 +231,11 @@ private:
 //     part of the frame; the step is limited to [maxStepDown, maxStepUp];
 //  6. panic: panicFrames consecutive usable frames over the budget, or one
 //     frame over the budget by more than panicRatio, act at once on the
-//     smallest of those samples without waiting for the median.
+//     smallest of those samples without waiting for the median;
+//  7. risk-aware set point: on a machine whose load jumps (a shared machine),
+//     the set point drops so that the 75th percentile of how far a frame rises
+//     above the recent level lands on the budget, not only the median on the
+//     aim; with a steady load it changes nothing.
 // The scale itself is the integrator state and is clamped to [min, max], so
 // nothing winds up while the scale sits at a limit (anti-windup).
 class RobustController final : public ResolutionController {
@@ -249,7 +253,7 @@ public:
     double gammaMin = 0.5;
     double gammaMax = 3.0;
     double maxStepDown = 0.5;   // smallest factor per correction
-    double maxStepUp = 1.5;     // largest factor per correction
+    double maxStepUp = 1.2;     // largest factor per correction (1.5 before the tuning-set scan)
     int latencyFrames = 0;      // frames between a scale change and the first GPU time measured at it
                                 // (when FrameTiming::gpuScale is 0; else that scale says it)
     bool spreadNoise = true;    // the noise is also the spread of the window around its median
@@ -258,9 +262,15 @@ public:
     // samples, each normalised to scale 1 (t / s^gamma), so that the recent
     // load's riskQuantile-th quantile lands on the budget T rather than the
     // median on the aim. The memory is not flushed by corrections, so a machine
-    // that had bursts keeps the law low until riskFrames pass. 0: off.
-    double riskQuantile = 0.0;
+    // that had bursts keeps the law low until riskFrames pass. 0: off (the
+    // law before the tuning-set scan).
+    double riskQuantile = 0.75;
     int riskFrames = 60;
+    // true: the quantile is taken of each normalised sample over the median of
+    // the 9 before it (how far a frame jumps above the recent level), so a
+    // lasting change of the load (a step) does not count as risk, only
+    // short-lived rises do.
+    bool riskLocal = true;
     // Increases are decided on this quantile of the window (at the current
     // scale) instead of its median: 1 = the largest sample, so the law gives
     // resolution back only when every recent sample says it fits. 0.5: the median.
@@ -272,6 +282,8 @@ public:
   };
   // The parameters before the tuning-set scan (Docs/Controller.md): increases
   // of up to 1.5x after 2 samples on the median, no risk-aware set point.
+  // The defaults are the scan's pick: increases of up to 1.2x, the risk-aware
+  // set point on the local jumps (quantile 0.75 over 60 samples).
   static Params PreviousParams();
   RobustController();
   explicit RobustController(const Params& params);

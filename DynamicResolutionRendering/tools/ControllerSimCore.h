@@ -213,9 +213,9 @@ std::vector<SyntheticCase> SyntheticSet(const SimConfig& base);
 // AllScenarios under its eight cases), the shared-machine scenarios under the
 // same cases, and the tuning traces (ControllerSimRecord.sh ... tuning), each
 // replayed at the sample's latency. Rows: increases of at most 1.5x or 1.2x
-// per correction, after 2 or 6 samples, decided on the window's median, 0.75
-// quantile or largest sample; the risk-aware set point off or at quantile
-// 0.75 over 60 samples. The first row is the law before the scan
+// per correction, after 2 or 6 samples, decided on the window's median or
+// largest sample; the risk-aware set point off or at quantile 0.75 over 60
+// samples, of the samples' level or of their jumps above the recent level. The first row is the law before the scan
 // (RobustController::PreviousParams). Each row runs at the headrooms
 // kScanHeadrooms, so that a law is judged by its frames over budget at a
 // given resolution given up (a law can always trade one for the other by

@@ -28,17 +28,19 @@ std::vector<RobustController::Params> ScanGrid() {
   struct Risk {
     double quantile;
     int frames;
+    bool local;
   };
   for (double maxUp : {1.5, 1.2})
     for (int up : {2, 6})
-    for (double upQ : {0.5, 0.75, 1.0})
-      for (Risk risk : {Risk{0.0, 60}, Risk{0.75, 60}}) {
+    for (double upQ : {0.5, 1.0})
+      for (Risk risk : {Risk{0.0, 60, false}, Risk{0.75, 60, false}, Risk{0.75, 60, true}}) {
         RobustController::Params p = RobustController::PreviousParams();
         p.maxStepUp = maxUp;
         p.minSamplesUp = up;
         p.upQuantile = upQ;
         p.riskQuantile = risk.quantile;
         p.riskFrames = risk.frames;
+        p.riskLocal = risk.local;
         grid.push_back(p);
       }
   return grid;
@@ -144,7 +146,8 @@ void PrintRobustScan(std::ostream& out, const std::vector<RobustScanRow>& rows, 
     const RobustScanRow& r = rows[i];
     const auto& p = r.params;
     char risk[32] = "off";
-    if (p.riskQuantile > 0.0) std::snprintf(risk, sizeof risk, "%.2f/%d", p.riskQuantile, p.riskFrames);
+    if (p.riskQuantile > 0.0)
+      std::snprintf(risk, sizeof risk, "%.2f/%d%s", p.riskQuantile, p.riskFrames, p.riskLocal ? " local" : "");
     const ScanTotals& sy = r.Base(kSynthetic, headroom);
     const ScanTotals& sh = r.Base(kShared, headroom);
     const ScanTotals& tr = r.Base(kTuningTraces, headroom);
