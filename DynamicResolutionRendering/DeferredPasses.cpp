@@ -130,7 +130,8 @@ void DeferredPasses::Shadows(d3dl::DeviceContext* ctx, Scene& scene, const Defer
   m_ShadowDraws = 0;
   m_ShadowScaleUsed = 0.0f;
   m_ShadowedSpots = 0;
-  for (const SceneLight& l : scene.Lights()) m_ShadowedSpots += l.shadow;
+  if (f.localLights)
+    for (const SceneLight& l : scene.Lights()) m_ShadowedSpots += l.shadow;
   if (m_ShadowedSpots == 0) {
     // The lighting pass's comparison sampler needs a depth view even when no
     // spot reads it: the RHI's dummy for an unbound slot is a colour format,
@@ -180,7 +181,7 @@ void DeferredPasses::FillConstants(const FrameSetup& s, RenderTargetSet& rts, Sc
   c.ssao = glm::vec4(kSSAORadiusOfScene * diagonal, kSSAOStrength, kSSAOBias, f.ssao ? 1.0f : 0.0f);
   uint32_t count = 0, slice = 0;
   for (const SceneLight& l : scene.Lights()) {
-    if (count == kMaxDeferredLights) break;
+    if (count == kMaxDeferredLights || !f.localLights) break;
     const bool spot = l.type == LightType::Spot;
     const float outer = std::cos(glm::radians(l.angleDeg));
     const float inner = std::cos(glm::radians(l.angleDeg * kSpotInnerOfOuter));

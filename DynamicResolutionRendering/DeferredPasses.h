@@ -42,6 +42,7 @@ static_assert(sizeof(DeferredConstants) == 2 * 64 + 10 * 16 + 16 + 16 + kMaxDefe
 // What the coordinator decided for the deferred part of this frame.
 struct DeferredFrame {
   bool ssao = true;
+  bool localLights = true;      // the scene's LIGHT entries (and their shadow maps)
   float shadowScale = 1.0f;     // the shadow maps' dynamic scale (ShadowMapScale)
   uint32_t shadowMapSize = 1024;
   glm::vec2 ratio{1.0f};        // viewport / G-buffer size: DynamicResolution's RT scale

@@ -453,6 +453,7 @@ void Sample::OnFrameRender(double elapsed) {
 DeferredFrame Sample::MakeDeferredFrame(const FrameSetup& s) const {
   DeferredFrame f;
   f.ssao = m_Targets.Plan().ssao;
+  f.localLights = m_Options.localLights;
   const float mainScale = m_Options.dynamicResolution ? m_DynamicResolution.GetScaleX() : 1.0f;
   f.shadowScale = ShadowMapScale(m_Options.shadowLaw, float(m_Options.shadowScale), mainScale);
   f.shadowMapSize = m_Options.shadowMapSize;

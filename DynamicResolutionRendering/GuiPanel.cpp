@@ -37,7 +37,7 @@ bool SettingsDiffer(const Options& a, const Options& b) {
          a.secondaryScreenPercentage != b.secondaryScreenPercentage || a.mipBias != b.mipBias ||
          a.autoMipBias != b.autoMipBias ||
          // Deferred shading (port addition)
-         a.renderer != b.renderer || a.ssao != b.ssao || a.shadowScale != b.shadowScale || a.shadowLaw != b.shadowLaw;
+         a.renderer != b.renderer || a.ssao != b.ssao || a.localLights != b.localLights || a.shadowScale != b.shadowScale || a.shadowLaw != b.shadowLaw;
 }
 
 int OptionPercent(float scale) { return int(std::lround(100.0 * double(scale))); }
@@ -149,6 +149,7 @@ void GuiPanel::DeferredSection(Options* o) {
   EnumCombo("Renderer:", "##renderer", &o->renderer, RendererName);
   ImGui::BeginDisabled(o->renderer != Renderer::Deferred);
   ImGui::Checkbox("SSAO", &o->ssao);
+  ImGui::Checkbox("Scene lights", &o->localLights);
   float shadow = float(o->shadowScale);
   ImGui::SetNextItemWidth(kComboWidth);
   if (ImGui::SliderFloat("Shadow scale", &shadow, float(kMinShadowScale), 1.0f, "%.2f")) o->shadowScale = shadow;

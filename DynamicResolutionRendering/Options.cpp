@@ -171,6 +171,8 @@ constexpr Spec kSpecs[] = {
            "{choices} (default forward: the original's path; deferred:\n"
            "G-buffer, SSAO, directional + the scene's point/spot lights)"),
     Flag("--no-ssao", &Options::ssao, false, "deferred: no screen-space ambient occlusion"),
+    Flag("--no-local-lights", &Options::localLights, false,
+         "deferred: ignore the scene's LIGHT entries (directional light only)"),
     Number("--shadow-scale", "S", &Options::shadowScale, 0.125, 1,
            "deferred: spot shadow-map scale, fraction of --shadow-map-size\n({range}, default 1)"),
     Choice("--shadow-law", "LAW", &Options::shadowLaw, ChoicesOf<ShadowLaw, ShadowLawOption>("shadow law"),

@@ -74,6 +74,7 @@ struct Options {
   // Deferred shading (Docs/Deferred.md); the forward path ignores the others.
   Renderer renderer = Renderer::Forward;    // --renderer
   bool ssao = true;                         // screen-space ambient occlusion into the G-buffer's AO target
+  bool localLights = true;                  // the scene's LIGHT entries (off: the directional light alone)
   double shadowScale = 1.0;                 // spot shadow maps: fraction of --shadow-map-size
   ShadowLaw shadowLaw = ShadowLaw::Main;    // how the shadow scale follows the main scale
   uint32_t shadowMapSize = 1024;            // the shadow maps' allocated size (texels, square)

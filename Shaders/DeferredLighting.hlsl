@@ -61,23 +61,24 @@ float4 LightingPS(PostVSOut i) : SV_Target0 {
   const int2 texel = GBufferTexel(i.uv);
   const float depth = g_Depth.Load(int3(texel, 0));
   if (depth >= 1.0) discard;  // nothing drawn: the clear colour stays
-  const float4 albedo = g_Diffuse.Load(int3(texel, 0));
+  const float4 diffuse = g_Diffuse.Load(int3(texel, 0));  // alpha: the forward shader's output alpha
+  const float3 albedo = diffuse.rgb;
   const float3 stored = g_Normal.Load(int3(texel, 0)).xyz;
   const float ao = g_SSAO.w > 0.0 ? g_AO.Load(int3(texel, 0)) : 1.0;
-  if (IsUnlit(stored)) return saturate(g_UnlitAmbient * albedo);
+  if (IsUnlit(stored)) return float4(saturate(g_UnlitAmbient.rgb * albedo), diffuse.a);
   const float3 n = DecodeNormal(stored);
   const float3 world = WorldPosition(texel, depth);
   const float3 specularMap = g_Specular.Load(int3(texel, 0)).rgb;
   // The forward shader's directional light, its ambient occluded.
   const float3 toLight = -g_LightDirection.xyz;
   const float intensity = saturate(dot(n, toLight));
-  float4 color = (saturate(g_LightDiffuse * intensity) + g_LightAmbient * float4(ao, ao, ao, 1.0)) * albedo;
+  float3 color = (saturate(g_LightDiffuse.rgb * intensity) + g_LightAmbient.rgb * ao) * albedo;
   const float3 toEye = normalize(g_Eye.xyz - world);
   if (intensity > 0.0) {
     const float3 reflected = normalize(2.0 * intensity * n - toLight);
     const float phong = pow(saturate(dot(reflected, toEye)), g_LightDirection.w);
-    color = saturate(color + phong * float4(specularMap, 1.0) * g_LightSpecular);
+    color = saturate(color + phong * specularMap * g_LightSpecular.rgb);
   }
-  for (uint k = 0; k < g_Counts.x; ++k) color.rgb += LocalLight(g_Lights[k], world, n, toEye, albedo.rgb, specularMap);
-  return saturate(color);
+  for (uint k = 0; k < g_Counts.x; ++k) color += LocalLight(g_Lights[k], world, n, toEye, albedo, specularMap);
+  return float4(saturate(color), diffuse.a);
 }
