@@ -15,8 +15,8 @@ constexpr const char* kLightingPS = "Deferred_LightingPS";
 // SSAO (Shaders/SSAO.hlsl): the disc radius as a fraction of the scene's
 // bounding-box diagonal, the strength, the tangent-plane bias (fraction of
 // the radius) and the samples per pixel.
-constexpr float kSSAORadiusOfScene = 0.004f;
-constexpr float kSSAOStrength = 1.0f;
+constexpr float kSSAORadiusOfScene = 0.012f;
+constexpr float kSSAOStrength = 2.0f;
 constexpr float kSSAOBias = 0.05f;
 constexpr uint32_t kSSAOSamples = 12;
 // Spot shadows: the near plane as a fraction of the radius, and the depth

@@ -189,6 +189,42 @@ TEST_F(DeferredTest, ShadowMapScaleFollowsItsLaw) {
   EXPECT_FLOAT_EQ(sample.Deferred().ShadowScaleUsed(), std::floor(0.75f * 0.5f * 256.0f) / 256.0f);
 }
 
+// Every target mode of the table with the deferred scene: full resolution
+// (the G-buffer at the dynamic RT's size, read through back buffer / RT),
+// motion blur, TAA (velocity into the G-buffer's fourth target), super
+// sampling (the viewport beyond the back buffer), TAAU (depth shared with its
+// reader). Validation-clean, and the same picture as forward in each.
+TEST_F(DeferredTest, EveryTargetModeMatchesForward) {
+  struct Mode {
+    const char* name;
+    bool dynamic, motionBlur, superSampling;
+    Filter filter;
+    float scale;
+  };
+  const Mode modes[] = {{"full", false, false, false, Filter::Point, 1.0f},
+                        {"full + motion blur", false, true, false, Filter::Point, 1.0f},
+                        {"dynamic + motion blur + TAA", true, true, false, Filter::TAA, 0.71f},
+                        {"TAA, velocity targets", true, false, false, Filter::TAA, 0.6f},
+                        {"super sampling", true, false, true, Filter::Bilinear, 1.5f},
+                        {"TAAU", true, false, false, Filter::TAAU, 0.5f}};
+  for (const Mode& m : modes) {
+    Options o = Base(Renderer::Forward, m.scale);
+    o.dynamicResolution = m.dynamic;
+    o.motionBlur = m.motionBlur;
+    o.superSampling = m.superSampling;
+    o.filter = m.filter;
+    const Image forward = Render(o);
+    o.renderer = Renderer::Deferred;
+    o.ssao = false;
+    o.localLights = false;
+    const Image deferred = Render(o);
+    const ImageError e = CompareImages(ToFloat(forward), ToFloat(deferred));
+    ASSERT_TRUE(e.valid) << m.name;
+    std::printf("%s: deferred vs forward PSNR %.2f dB\n", m.name, e.psnr);
+    EXPECT_GE(e.psnr, 40.0) << m.name;
+  }
+}
+
 TEST(ShadowMapScale, LawsAndLimits) {
   EXPECT_FLOAT_EQ(ShadowMapScale(ShadowLaw::Fixed, 0.5f, 0.3f), 0.5f);
   EXPECT_FLOAT_EQ(ShadowMapScale(ShadowLaw::Main, 0.5f, 0.5f), 0.25f);
