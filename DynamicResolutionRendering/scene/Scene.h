@@ -112,8 +112,9 @@ class Scene {
 
   // Deferred shading (SceneDeferred.cpp). The description's LIGHT entries.
   const std::vector<SceneLight>& Lights() const;
-  // Depth only, for a shadow map: every opaque LIT/DECAL-free draw that is not
-  // culled by viewProj's frustum, with the caller's DSV and viewport. Returns the draws.
+  // Depth only, for a shadow map: the opaque draws of LIT entries (no sky, no
+  // decals, no cameras) inside viewProj's frustum, into the caller's DSV and
+  // viewport. Returns the number of draws.
   uint32_t RenderDepth(d3dl::DeviceContext* ctx, const glm::mat4& viewProj);
 
   // Additions: warnings gathered while loading (missing textures, repaired data).
