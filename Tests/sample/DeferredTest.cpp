@@ -209,6 +209,8 @@ TEST_F(DeferredTest, EveryTargetModeMatchesForward) {
                         {"TAAU", true, false, false, Filter::TAAU, 0.5f}};
   for (const Mode& m : modes) {
     Options o = Base(Renderer::Forward, m.scale);
+    o.width = kW / 2;  // twelve samples: kept small
+    o.height = kH / 2;
     o.dynamicResolution = m.dynamic;
     o.motionBlur = m.motionBlur;
     o.superSampling = m.superSampling;
