@@ -57,6 +57,7 @@ int Sample::Init(const Options& options, std::string* error) {
 
   if (!m_Device.Create(options.validation, m_Window, options.width, options.height, error)) return 1;
   if (!m_Passes.Init(m_Device.Device(), m_Shaders, error)) return 1;
+  if (!m_Deferred.Init(m_Device.Device(), m_Shaders, error)) return 1;
   if (!LoadScene(error)) return 1;
   if (options.camera >= m_Cameras.Count()) {
     *error = "option --camera: value " + std::to_string(options.camera) + " is out of range [0, " +
@@ -150,6 +151,7 @@ bool Sample::ReloadShaders() {
   bool ok = m_Passes.LoadShaders(m_Shaders, true, &err, &postCompiled);
   ok = ok && m_Gui.Renderer().LoadShaders(m_Shaders, true, &err, &guiCompiled);
   ok = ok && m_Passes.GetZoomBox().LoadShaders(m_Shaders, true, &err);
+  ok = ok && m_Deferred.LoadShaders(m_Shaders, true, &err);
   ok = ok && m_Scene->ReloadShaders(m_Shaders, true, &err);
   if (!ok) {
     m_LastMessage = "Shader reload failed, the previous shaders stay: " + err;
@@ -180,6 +182,9 @@ RenderTargetPlan Sample::Plan() const {
   const double secondary = m_Options.dynamicResolution ? m_Options.secondaryScreenPercentage / 100.0 : 1.0;
   p.outputW = std::max(1u, uint32_t(std::lround(m_Device.Width() * secondary)));
   p.outputH = std::max(1u, uint32_t(std::lround(m_Device.Height() * secondary)));
+  // Deferred shading (Docs/Deferred.md): the G-buffer exists only with it.
+  p.deferred = m_Options.renderer == Renderer::Deferred;
+  p.ssao = p.deferred && m_Options.ssao;
   return p;
 }
 
@@ -199,7 +204,9 @@ bool Sample::InitDynamicResolution() {
 
 void Sample::ReleaseDynamicResolution() { m_Targets.Release(); }
 
-uint64_t Sample::RenderTargetBytes() const { return m_Targets.Bytes() + m_Passes.GetZoomBoxBytes(); }
+uint64_t Sample::RenderTargetBytes() const {
+  return m_Targets.Bytes() + m_Passes.GetZoomBoxBytes() + m_Deferred.ShadowMapBytes();
+}
 
 // ---------------------------------------------------------------------------
 // Settings and input
@@ -418,7 +425,9 @@ void Sample::OnFrameRender(double elapsed) {
 
   timers.frame.Start(ctx);
   m_Passes.Clear(ctx, setup, m_Targets, scene);
-  m_Passes.Scene(ctx, setup, scene, *m_Scene, params);
+  if (m_Targets.Plan().deferred) m_Deferred.Render(ctx, setup, scene, m_Targets, *m_Scene, params,
+                                                   MakeDeferredFrame(setup), m_Passes);
+  else m_Passes.Scene(ctx, setup, scene, *m_Scene, params);
   m_ResetVelocityHistory = false;
   if (m_Log.Capturing()) {
     m_Log.Queue(m_Device.Device(), ctx, scene.colour, Capture::SceneColor);
@@ -436,6 +445,42 @@ void Sample::OnFrameRender(double elapsed) {
   timers.frame.Stop(ctx);
   if (m_Log.Capturing()) m_Log.Queue(m_Device.Device(), ctx, bb.texture, Capture::BackBuffer);
   ctx->OMSetRenderTargets(0, nullptr, nullptr);
+}
+
+// The deferred part of the frame: SSAO, the shadow maps' dynamic scale (their
+// law on the main scale) and the G-buffer's read ratio: the resolve's RT
+// scale on the dynamic path, back buffer / G-buffer on the full one.
+DeferredFrame Sample::MakeDeferredFrame(const FrameSetup& s) const {
+  DeferredFrame f;
+  f.ssao = m_Targets.Plan().ssao;
+  f.localLights = m_Options.localLights;
+  const float mainScale = m_Options.dynamicResolution ? m_DynamicResolution.GetScaleX() : 1.0f;
+  f.shadowScale = ShadowMapScale(m_Options.shadowLaw, float(m_Options.shadowScale), mainScale);
+  f.shadowMapSize = m_Options.shadowMapSize;
+  const RenderTarget& g = m_Targets[RT::GBufferDiffuse];
+  f.ratio = s.dynamic ? glm::vec2(s.dc.ratioCurr[0], s.dc.ratioCurr[1])
+                      : glm::vec2(s.sceneViewport.Width / float(g.width), s.sceneViewport.Height / float(g.height));
+  return f;
+}
+
+std::string Sample::DeferredStats() const {
+  const RenderTargetPlan& plan = m_Targets.Plan();
+  uint64_t bytes = 0;
+  int targets = 0;
+  for (RT rt : {RT::GBufferDiffuse, RT::GBufferSpecular, RT::GBufferNormal, RT::GBufferAO}) {
+    bytes += m_Targets[rt].Bytes();
+    targets += m_Targets[rt].Valid();
+  }
+  int points = 0, spots = 0;
+  for (const SceneLight& l : m_Scene->Lights()) (l.type == LightType::Point ? points : spots) += 1;
+  char b[320];
+  std::snprintf(b, sizeof b,
+                "renderer %s: G-buffer targets %d (%.1f MiB), SSAO %s, shadow maps %u of %u^2 (%.1f MiB, scale %.3f, "
+                "%u depth draws), scene lights %d point + %d spot",
+                RendererOption(m_Options.renderer), targets, bytes / 1048576.0, plan.ssao ? "on" : "off",
+                m_Deferred.ShadowSlices(), m_Deferred.ShadowMapSize(), m_Deferred.ShadowMapBytes() / 1048576.0,
+                m_Deferred.ShadowScaleUsed(), m_Deferred.ShadowMapDraws(), points, spots);
+  return b;
 }
 
 void Sample::RenderGui(double elapsed) {
@@ -569,6 +614,7 @@ int Sample::Run() {
                                                              m_DynamicResolution.GetDynamicBufferHeight());
     std::printf("render targets %.1f MiB (the original allocates %.1f MiB for this mode)\n",
                 RenderTargetBytes() / 1048576.0, original / 1048576.0);
+    std::printf("%s\n", DeferredStats().c_str());
   }
   if (m_Options.stats) {
     std::printf("warnings: %zu\n", m_Warnings.size());
@@ -587,6 +633,7 @@ bool Sample::Shutdown() {
   m_Scene.reset();
   m_Gui.Release();
   m_Passes.Release();
+  m_Deferred.Release();
   ReleaseDynamicResolution();
   const bool clean = m_Device.Release();
   m_Window.Destroy();

@@ -19,6 +19,7 @@
 
 #include "AppWindow.h"
 #include "Cameras.h"
+#include "DeferredPasses.h"
 #include "DeviceResources.h"
 #include "DynamicResolution.h"
 #include "FrameLog.h"
@@ -72,6 +73,10 @@ class Sample {
   const DynamicResolution& GetDynamicResolution() const { return m_DynamicResolution; }
   uint64_t RenderTargetBytes() const;
   const std::map<std::string, uint64_t>& PassesRun() const { return m_Passes.PassesRun(); }
+  const RenderTargetSet& Targets() const { return m_Targets; }
+  const DeferredPasses& Deferred() const { return m_Deferred; }
+  // The deferred renderer's line of --stats (G-buffer targets and bytes, shadow maps, lights).
+  std::string DeferredStats() const;
   const std::vector<FrameRecord>& Frames() const { return m_Log.Frames(); }
   const Options& Settings() const { return m_Options; }
   bool IsHeadless() const { return m_Window.Headless(); }
@@ -149,6 +154,8 @@ class Sample {
   bool m_ResetVelocityHistory = true;  // the scene's previous matrices restart (first frame, resize)
 
   FramePasses m_Passes;
+  DeferredPasses m_Deferred;  // --renderer deferred (Docs/Deferred.md)
+  DeferredFrame MakeDeferredFrame(const FrameSetup& s) const;
   GuiPanel m_Gui;
   std::unique_ptr<Scene> m_Scene;
   // Fallback textures, rejected transforms, cut scales, ignored options: on

@@ -35,7 +35,9 @@ bool SettingsDiffer(const Options& a, const Options& b) {
          a.control != b.control || a.law != b.law || a.fixes != b.fixes ||
          // Upscaling (port addition)
          a.secondaryScreenPercentage != b.secondaryScreenPercentage || a.mipBias != b.mipBias ||
-         a.autoMipBias != b.autoMipBias;
+         a.autoMipBias != b.autoMipBias ||
+         // Deferred shading (port addition)
+         a.renderer != b.renderer || a.ssao != b.ssao || a.localLights != b.localLights || a.shadowScale != b.shadowScale || a.shadowLaw != b.shadowLaw;
 }
 
 int OptionPercent(float scale) { return int(std::lround(100.0 * double(scale))); }
@@ -140,6 +142,21 @@ void GuiPanel::UpscaleSection(Options* o) {
   if (ImGui::SliderFloat("Mip bias", &bias, -2.0f, 2.0f, "%.2f")) o->mipBias = bias;
 }
 
+// Deferred shading (Docs/Deferred.md): the renderer, SSAO and the spot
+// shadow maps' scale and law.
+void GuiPanel::DeferredSection(Options* o) {
+  if (!ImGui::CollapsingHeader("Deferred shading (port)")) return;
+  EnumCombo("Renderer:", "##renderer", &o->renderer, RendererName);
+  ImGui::BeginDisabled(o->renderer != Renderer::Deferred);
+  ImGui::Checkbox("SSAO", &o->ssao);
+  ImGui::Checkbox("Scene lights", &o->localLights);
+  float shadow = float(o->shadowScale);
+  ImGui::SetNextItemWidth(kComboWidth);
+  if (ImGui::SliderFloat("Shadow scale", &shadow, float(kMinShadowScale), 1.0f, "%.2f")) o->shadowScale = shadow;
+  EnumCombo("Shadow-map law:", "##shadowlaw", &o->shadowLaw, ShadowLawName);
+  ImGui::EndDisabled();
+}
+
 void GuiPanel::Buttons() {
   // The original's "Change device (F3)" opens DXUT's device dialog, which the port does not have.
   const ImVec2 size(kPanelWidth - 2.0f * ImGui::GetStyle().WindowPadding.x, 0.0f);
@@ -220,6 +237,7 @@ void GuiPanel::PortSection(Options* o) {
   EnumCombo("Control law (port):", "##law", &o->law, ControlLawName);
   ImGui::EndDisabled();
   UpscaleSection(o);
+  DeferredSection(o);
   if (ImGui::CollapsingHeader("Port fixes")) {
     for (const FixToggle& t : FixToggles(o->fixes)) {
       bool on = t.on;

@@ -47,7 +47,7 @@ constexpr Choices ChoicesOf(const char* noun) {
 using Field = std::variant<std::monostate, bool Options::*, uint32_t Options::*, int Options::*,
                            int64_t Options::*, double Options::*, std::string Options::*,
                            Filter Options::*, ControlMode Options::*, ControlLaw Options::*,
-                           FixSet Options::*>;
+                           FixSet Options::*, Renderer Options::*, ShadowLaw Options::*>;
 
 struct Spec {
   const char* name;
@@ -166,6 +166,20 @@ constexpr Spec kSpecs[] = {
          "TAAU: no automatic view mip bias (the original's sampler)"),
     Path("--mip-bias-opt-out", "LIST", &Options::mipBiasOptOut,
          "TAAU: materials (comma-separated) sampled without the view mip bias"),
+    // Deferred shading (Docs/Deferred.md)
+    Choice("--renderer", "NAME", &Options::renderer, ChoicesOf<Renderer, RendererOption>("renderer"),
+           "{choices} (default forward: the original's path; deferred:\n"
+           "G-buffer, SSAO, directional + the scene's point/spot lights)"),
+    Flag("--no-ssao", &Options::ssao, false, "deferred: no screen-space ambient occlusion"),
+    Flag("--no-local-lights", &Options::localLights, false,
+         "deferred: ignore the scene's LIGHT entries (directional light only)"),
+    Number("--shadow-scale", "S", &Options::shadowScale, 0.125, 1,
+           "deferred: spot shadow-map scale, fraction of --shadow-map-size\n({range}, default 1)"),
+    Choice("--shadow-law", "LAW", &Options::shadowLaw, ChoicesOf<ShadowLaw, ShadowLawOption>("shadow law"),
+           "deferred: {choices} (default main: the shadow scale times\n"
+           "the dynamic resolution scale; fixed: the shadow scale alone)"),
+    Int("--shadow-map-size", "N", &Options::shadowMapSize, 64, 4096,
+        "deferred: allocated spot shadow-map size in texels ({range},\ndefault 1024)"),
 };
 
 constexpr double kMinScale = 0.01;
@@ -412,7 +426,10 @@ std::string OptionsToJson(const Options& o) {
     << ", \"validation\": " << (o.validation ? "true" : "false")
     << ", \"fixes\": " << JsonQuote(FixNames(o.fixes))
     << ", \"secondary_screen_percentage\": " << o.secondaryScreenPercentage << ", \"mip_bias\": " << o.mipBias
-    << ", \"auto_mip_bias\": " << (o.autoMipBias ? "true" : "false") << "}";
+    << ", \"auto_mip_bias\": " << (o.autoMipBias ? "true" : "false")
+    << ", \"renderer\": \"" << RendererOption(o.renderer) << "\", \"ssao\": " << (o.ssao ? "true" : "false")
+    << ", \"shadow_scale\": " << o.shadowScale << ", \"shadow_law\": \"" << ShadowLawOption(o.shadowLaw)
+    << "\", \"shadow_map_size\": " << o.shadowMapSize << "}";
   return j.str();
 }
 

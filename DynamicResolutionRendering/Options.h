@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "DeferredSettings.h"
 #include "Fixes.h"
 #include "ResolveFilters.h"
 
@@ -70,6 +71,13 @@ struct Options {
   double mipBias = 0.0;                     // added to TAAU's automatic view mip bias
   bool autoMipBias = true;                  // TAAU: texture sampling biased by log2(screen percentage)
   std::string mipBiasOptOut;                // materials (comma-separated names) sampled without it
+  // Deferred shading (Docs/Deferred.md); the forward path ignores the others.
+  Renderer renderer = Renderer::Forward;    // --renderer
+  bool ssao = true;                         // screen-space ambient occlusion into the G-buffer's AO target
+  bool localLights = true;                  // the scene's LIGHT entries (off: the directional light alone)
+  double shadowScale = 1.0;                 // spot shadow maps: fraction of --shadow-map-size
+  ShadowLaw shadowLaw = ShadowLaw::Main;    // how the shadow scale follows the main scale
+  uint32_t shadowMapSize = 1024;            // the shadow maps' allocated size (texels, square)
 
   int64_t EffectiveFrames() const { return frames >= 0 ? frames : (headless ? 300 : -1); }
   float MaxScale() const { return superSampling ? 2.0f : 1.0f; }

@@ -10,6 +10,7 @@ struct TargetInfo {
   d3dl::DXGI_FORMAT format;
   bool dynamic;  // sized as the dynamic RT, else as the back buffer
   bool output = false;  // port addition: on the dynamic path, at the upscale's output size
+  bool gbuffer = false;  // deferred shading: the dynamic RT's size on both paths
 };
 // The original's colour targets are R8G8B8A8_UNORM: they hold the shader's
 // linear values in 8 bits; only the back buffer is sRGB.
@@ -26,6 +27,10 @@ constexpr TargetInfo kTargets[] = {
     {"upscale history[1]", d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT, false, true},
     {"upscale output", kColor, false, true},
     {"upscale sharpen input", kColor, false, true},
+    {"g_GBufferDiffuse", d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB, true, false, true},
+    {"g_GBufferSpecular", d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB, true, false, true},
+    {"g_GBufferNormal", d3dl::DXGI_FORMAT_R10G10B10A2_UNORM, true, false, true},
+    {"g_GBufferAO", d3dl::DXGI_FORMAT_R8_UNORM, true, false, true},
 };
 // TAAU reads the dynamic depth: typeless, with a depth and a float view.
 constexpr d3dl::DXGI_FORMAT kReadableDepth = d3dl::DXGI_FORMAT_R32_TYPELESS;
@@ -101,6 +106,7 @@ uint64_t RenderTargetSet::OriginalBytes(uint32_t backW, uint32_t backH, uint32_t
 }
 
 bool RenderTargetSet::Needed(RT rt, const RenderTargetPlan& p) {
+  if (kTargets[int(rt)].gbuffer) return p.deferred && (rt != RT::GBufferAO || p.ssao);
   if (kTargets[int(rt)].output) {
     if (!p.dynamic) return false;
     // TAAU writes its history; the secondary upscale reads it, or the primary spatial upscale's output.
@@ -134,7 +140,9 @@ bool RenderTargetSet::Allocate(d3dl::Device* device, const RenderTargetPlan& pla
     const bool dyn = kTargets[i].dynamic, out = kTargets[i].output;
     const uint32_t w = dyn ? dynW : out ? plan.outputW : plan.backBufferW;
     const uint32_t h = dyn ? dynH : out ? plan.outputH : plan.backBufferH;
-    const d3dl::DXGI_FORMAT fmt = (rt == RT::DepthDynamic && plan.taau) ? kReadableDepth : Format(rt, plan.srgbColour);
+    // Depth read by TAAU or by the deferred passes: typeless.
+    const bool readDepth = (rt == RT::DepthDynamic && (plan.taau || plan.deferred)) || (rt == RT::DepthFull && plan.deferred);
+    const d3dl::DXGI_FORMAT fmt = readDepth ? kReadableDepth : Format(rt, plan.srgbColour);
     ok = ok && d3dl::SUCCEEDED(m_Targets[i].Create(device, w, h, fmt, Name(rt)));
   }
   m_Plan = plan;

@@ -45,6 +45,13 @@ enum class RT : int {
   UpscaleHistory1,
   UpscaleOutput,
   UpscaleSharpenInput,  // the edge-adaptive upscale's output, read by its sharpening pass
+  // Deferred shading (Docs/Deferred.md): the G-buffer in the 3DMark 11
+  // formats, at the dynamic RT's size on both paths; the scene's depth target
+  // becomes R32_TYPELESS (a DSV and an R32_FLOAT SRV) with it.
+  GBufferDiffuse,
+  GBufferSpecular,
+  GBufferNormal,
+  GBufferAO,  // written by SSAO; absent with --no-ssao
   Count
 };
 
@@ -57,6 +64,7 @@ struct RenderTargetPlan {
   // upscale (the back buffer's times the secondary screen percentage).
   bool taau = false, sharpenPass = false;
   uint32_t outputW = 0, outputH = 0;
+  bool deferred = false, ssao = false;  // --renderer deferred; its SSAO
   bool Secondary() const { return outputW != 0 && (outputW != backBufferW || outputH != backBufferH); }
   bool operator==(const RenderTargetPlan&) const = default;
 };

@@ -70,7 +70,10 @@ const char* kBenchUsage =
     "  --sweep-motion-blur  the still sweep with motion blur on (default off: the\n"
     "                       reference has none, and TAA is then the velocity-reading one)\n"
     "  --width/--height, --scene, --no-motion-blur, --symmetric-taa, --no-ps-clear,\n"
-    "  --validation         as for the sample (see DynamicResolutionRendering --help)\n";
+    "  --renderer, --no-ssao, --no-local-lights, --shadow-scale, --shadow-law,\n"
+    "  --validation         as for the sample (see DynamicResolutionRendering --help);\n"
+    "                       --renderer deferred measures every row, the reference\n"
+    "                       included, with the deferred renderer\n";
 
 bool ParseInt(const std::string& s, int lo, int hi, int* out) {
   char* end = nullptr;

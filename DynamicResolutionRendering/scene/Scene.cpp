@@ -263,12 +263,20 @@ bool SceneImpl::ReadEntries(const std::string& path, bool single, std::string* e
   SceneDescription desc;
   if (!LoadSceneDescription(path, {}, &desc, error)) return false;
   for (const auto& w : desc.warnings) Warn(w);
+  lights = desc.lights;
   for (auto& d : desc.entries) {
     Entry e;
     e.desc = d;
     entries.push_back(std::move(e));
   }
   return true;
+}
+
+// The original's RenderScene values; UNLIT keeps only the ambient term at 1.
+SceneLightingValues SceneLighting(bool lit) {
+  const glm::vec4 light(0.89f, -0.45f, 0.089f, 16.f);
+  if (!lit) return {{0.f, 0.f, 0.f, 1.f}, {1.f, 1.f, 1.f, 1.f}, {0.f, 0.f, 0.f, 1.f}, light};
+  return {{1.58f, 1.36f, 0.74f, 1.f}, {0.42f, 0.44f, 0.46f, 1.f}, {1.30f, 1.18f, 0.78f, 1.f}, light};
 }
 
 bool SceneImpl::CreateConstantBuffers() {
@@ -278,10 +286,8 @@ bool SceneImpl::CreateConstantBuffers() {
   cb.BindFlags = d3dl::BIND_CONSTANT_BUFFER;
   cb.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
   bool ok = SUCCEEDED(device->CreateBuffer(&cb, nullptr, objectCB.GetAddressOf()));
-  // The original's RenderScene values; UNLIT keeps only the ambient term at 1.
-  const glm::vec4 light(0.89f, -0.45f, 0.089f, 16.f);
-  LightingConstants lit{{1.58f, 1.36f, 0.74f, 1.f}, {0.42f, 0.44f, 0.46f, 1.f}, {1.30f, 1.18f, 0.78f, 1.f}, light};
-  LightingConstants unlit{{0.f, 0.f, 0.f, 1.f}, {1.f, 1.f, 1.f, 1.f}, {0.f, 0.f, 0.f, 1.f}, light};
+  const SceneLightingValues lit = SceneLighting(true), unlit = SceneLighting(false);
+  static_assert(sizeof(SceneLightingValues) == sizeof(LightingConstants));
   cb.ByteWidth = sizeof(LightingConstants);
   cb.Usage = d3dl::USAGE_IMMUTABLE;
   cb.CPUAccessFlags = 0;
@@ -485,6 +491,7 @@ SceneStats Scene::Stats() const {
   s.textureBytes = impl_->gpuTextureBytes;
   s.shaderVariantsUsed = 0;
   for (auto& p : impl_->ps) s.shaderVariantsUsed += p ? 1 : 0;
+  for (auto& p : impl_->gbufferPs) s.shaderVariantsUsed += p ? 1 : 0;
   return s;
 }
 
@@ -499,6 +506,7 @@ bool Scene::ReloadShaders(const ShaderLibrary& shaders, bool fromSource, std::st
     if (!s.psWanted[v] && !s.ps[v]) continue;
     if (!shaders.Load(VariantFile(v), fromSource, &code[v], error)) return false;
   }
+  if (!s.ReloadDeferredShaders(shaders, fromSource, error)) return false;
   s.shaders = shaders;
   // All compiled: swap in (objects are recreated lazily from the new code).
   for (int vi = 0; vi < 4; ++vi) {

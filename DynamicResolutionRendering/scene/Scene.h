@@ -13,6 +13,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "ShaderLibrary.h"
+#include "scene/SceneDescription.h"
 #include "scene/SceneVertex.h"
 
 namespace d3dl {
@@ -60,7 +61,20 @@ struct SceneRenderParams {
   // on the materials named in mipBiasOptOut.
   std::optional<float> viewMipBias;
   std::vector<std::string> mipBiasOptOut;
+  // Deferred shading (Docs/Deferred.md): the caller bound the G-buffer
+  // (diffuse, specular, normal, then velocity when writeVelocity) instead of
+  // colour (+ velocity); the materials are written, not lit.
+  bool gbuffer = false;
 };
+
+// The original's lighting constants (its RenderScene values): LIT entries'
+// directional light, or UNLIT's ambient-only set; the scene's b1 buffers and
+// the deferred lighting pass both read them.
+struct SceneLightingValues {
+  glm::vec4 diffuse, ambient, specular;
+  glm::vec4 directionAndPower;  // xyz: the direction the light travels (not normalised); w: specular power
+};
+SceneLightingValues SceneLighting(bool lit);
 
 struct SceneStats {
   uint32_t drawsIssued = 0, drawsCulled = 0, shaderVariantsUsed = 0, texturesLoaded = 0;
@@ -95,6 +109,13 @@ class Scene {
   SceneStats Stats() const;
   // F4: reloads (fromSource: recompiles) every variant; the old ones stay on error.
   bool ReloadShaders(const ShaderLibrary& shaders, bool fromSource, std::string* error);
+
+  // Deferred shading (SceneDeferred.cpp). The description's LIGHT entries.
+  const std::vector<SceneLight>& Lights() const;
+  // Depth only, for a shadow map: the opaque draws of LIT entries (no sky, no
+  // decals, no cameras) inside viewProj's frustum, into the caller's DSV and
+  // viewport. Returns the number of draws.
+  uint32_t RenderDepth(d3dl::DeviceContext* ctx, const glm::mat4& viewProj);
 
   // Additions: warnings gathered while loading (missing textures, repaired data).
   const std::vector<std::string>& Warnings() const;

@@ -297,6 +297,87 @@ void RejectAbsurdTransform(const std::string& file, SceneEntry* e, std::vector<s
   }
 }
 
+bool IsLightKeyword(const Token& t) {
+  std::string u = t.text;
+  std::transform(u.begin(), u.end(), u.begin(), [](unsigned char c) { return std::toupper(c); });
+  return !t.quoted && u == "LIGHT";
+}
+
+bool ApplyLightOption(SceneLight& l, const std::string& key, const std::string& value, std::string* why) {
+  float f[3];
+  const bool spot = l.type == LightType::Spot;
+  if (key == "position") {
+    if (!ParseFloats(value, 3, f)) { *why = "position= expects x,y,z (three finite numbers)"; return false; }
+    l.position = {f[0], f[1], f[2]};
+  } else if (key == "direction" && spot) {
+    if (!ParseFloats(value, 3, f) || glm::length(glm::vec3(f[0], f[1], f[2])) < 1e-6f) {
+      *why = "direction= expects x,y,z, not all zero";
+      return false;
+    }
+    l.direction = glm::normalize(glm::vec3(f[0], f[1], f[2]));
+  } else if (key == "color") {
+    if (!ParseFloats(value, 3, f) || std::min({f[0], f[1], f[2]}) < 0.f || std::max({f[0], f[1], f[2]}) > 64.f) {
+      *why = "color= expects r,g,b, each in [0, 64]";
+      return false;
+    }
+    l.color = {f[0], f[1], f[2]};
+  } else if (key == "radius") {
+    if (!ParseFloats(value, 1, f) || !(f[0] > 0.f) || f[0] > 1e7f) { *why = "radius= expects a number in (0, 1e7]"; return false; }
+    l.radius = f[0];
+  } else if (key == "angle" && spot) {
+    if (!ParseFloats(value, 1, f) || !(f[0] > 0.f) || f[0] > 89.f) { *why = "angle= expects degrees in (0, 89]"; return false; }
+    l.angleDeg = f[0];
+  } else if (key == "shadow" && spot) {
+    if (value != "0" && value != "1") { *why = "shadow= expects 0 or 1"; return false; }
+    l.shadow = value == "1";
+  } else {
+    *why = "unknown light option '" + Printable(key) + "' (expected position=, color=, radius=" +
+           (spot ? ", direction=, angle=, shadow=)" : ")");
+    return false;
+  }
+  return true;
+}
+
+// LIGHT POINT|SPOT key=value...: tokens[*k] is the LIGHT keyword; *k moves past the entry.
+bool ReadLight(const std::vector<Token>& tokens, size_t* k, SceneLight* l, ParseFailure* why) {
+  const Token& keyword = tokens[*k];
+  l->line = keyword.line;
+  std::string kind = *k + 1 < tokens.size() ? tokens[*k + 1].text : "";
+  std::transform(kind.begin(), kind.end(), kind.begin(), [](unsigned char c) { return std::toupper(c); });
+  if (kind == "POINT") l->type = LightType::Point;
+  else if (kind == "SPOT") l->type = LightType::Spot;
+  else return Fail(why, keyword.line, "LIGHT needs its kind: found '" + Printable(kind) + "', expected POINT or SPOT");
+  *k += 2;
+  bool hasPosition = false, hasRadius = false, hasDirection = false;
+  while (*k < tokens.size() && IsOption(tokens[*k])) {
+    const Token& o = tokens[*k];
+    const size_t eq = o.text.find('=');
+    const std::string key = o.text.substr(0, eq);
+    std::string message;
+    if (!ApplyLightOption(*l, key, o.text.substr(eq + 1), &message)) return Fail(why, o.line, message);
+    hasPosition |= key == "position";
+    hasRadius |= key == "radius";
+    hasDirection |= key == "direction";
+    ++*k;
+  }
+  const bool spot = l->type == LightType::Spot;
+  if (!hasPosition || !hasRadius || (spot && !hasDirection))
+    return Fail(why, keyword.line, std::string("LIGHT ") + (spot ? "SPOT" : "POINT") + " needs position=" +
+                                       (spot ? ", direction=" : "") + " and radius=");
+  return true;
+}
+
+bool AddLight(const SceneLight& l, SceneDescription* out, ParseFailure* why) {
+  if (out->lights.size() >= kMaxSceneLights)
+    return Fail(why, l.line, "too many lights (at most " + std::to_string(kMaxSceneLights) + ")");
+  size_t shadowed = 0;
+  for (const SceneLight& o : out->lights) shadowed += o.shadow;
+  if (l.shadow && shadowed >= kMaxShadowedSpots)
+    return Fail(why, l.line, "too many spot lights with shadow=1 (at most " + std::to_string(kMaxShadowedSpots) + ")");
+  out->lights.push_back(l);
+  return true;
+}
+
 bool ParseEntries(const std::string& text, const ParseOptions& opts, SceneDescription* out, ParseFailure* why) {
   std::vector<Token> tokens;
   if (!Tokenise(text, opts, &tokens, why)) return false;
@@ -306,6 +387,11 @@ bool ParseEntries(const std::string& text, const ParseOptions& opts, SceneDescri
   while (k < tokens.size()) {
     if (out->entries.size() >= opts.maxEntries)
       return Fail(why, tokens[k].line, "too many entries (more than " + std::to_string(opts.maxEntries) + ")");
+    if (IsLightKeyword(tokens[k])) {
+      SceneLight light;
+      if (!ReadLight(tokens, &k, &light, why) || !AddLight(light, out, why)) return false;
+      continue;
+    }
     SceneEntry e;
     int animLine = 0;
     if (!ReadEntry(tokens, &k, &e, &animLine, why) || !ResolveFiles(out->folder, opts, animLine, &e, why)) return false;

@@ -12,6 +12,12 @@
 // after the type, optional key=value tokens belong to that entry:
 //   name=<text>  translate=x,y,z  rotate=x,y,z (degrees, applied Z*Y*X)  scale=s or x,y,z
 //   hidden=0|1   loop=<seconds>   (overrides the animation's own duration)
+// Light entries (the deferred renderer's; the forward path, as the original,
+// lights with its one directional light only), position and direction in world units:
+//   LIGHT POINT position=x,y,z color=r,g,b radius=R
+//   LIGHT SPOT  position=x,y,z direction=x,y,z color=r,g,b radius=R angle=DEG [shadow=0|1]
+// radius > 0 (the light reaches zero there), color components in [0, 64],
+// angle (the cone's half angle) in (0, 89] degrees, direction not zero.
 // Errors are reported as "file:line: what was found, what was expected".
 #pragma once
 
@@ -43,10 +49,26 @@ struct SceneEntry {
   glm::mat4 Transform() const;
 };
 
+enum class LightType { Point, Spot };
+
+struct SceneLight {
+  LightType type = LightType::Point;
+  glm::vec3 position{0.f};
+  glm::vec3 direction{0.f, -1.f, 0.f};  // spot: normalised
+  glm::vec3 color{1.f};
+  float radius = 0.f;
+  float angleDeg = 45.f;                // spot: cone half angle
+  bool shadow = false;                  // spot: casts shadows (a slice of the shadow-map array)
+  int line = 0;
+};
+inline constexpr size_t kMaxSceneLights = 32;   // the lighting pass's constant buffer
+inline constexpr size_t kMaxShadowedSpots = 4;  // slices of the shadow-map array
+
 struct SceneDescription {
   std::string file;   // path of the description
   std::string folder; // folder the paths are relative to
   std::vector<SceneEntry> entries;
+  std::vector<SceneLight> lights;  // LIGHT entries, in file order
   // "file:line: ..." for options that were ignored (transforms out of range).
   std::vector<std::string> warnings;
 };

@@ -88,7 +88,7 @@ void SceneImpl::DrawItemNow(d3dl::DeviceContext* ctx, const SceneRenderParams& p
   const GpuMesh& m = e.meshes[it.mesh];
   const GpuMaterial& mat = e.materials[m.material < e.materials.size() ? m.material : 0];
   const int variant = VariantIndex(mat.hasNormal, mat.hasSpecular, p.writeVelocity);
-  d3dl::PixelShader* shader = Variant(variant);
+  d3dl::PixelShader* shader = p.gbuffer ? GBufferVariant(variant) : Variant(variant);
   d3dl::VertexShader* vshader = nullptr;
   d3dl::InputLayout* il = nullptr;
   if (!shader || !VertexStage(variant, &vshader, &il)) return;
@@ -190,11 +190,11 @@ void Scene::Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p) {
   for (Entry& e : s.entries) {
     const bool decal = e.desc.type == EntryType::Decal;
     ctx->OMSetDepthStencilState(decal ? s.dsDecal.Get() : s.dsOpaque.Get(), 0);
-    ctx->OMSetBlendState(decal ? s.bsDecal.Get() : nullptr, nullptr, 0xffffffffu);
+    ctx->OMSetBlendState(decal ? s.DecalBlend(p.gbuffer) : nullptr, nullptr, 0xffffffffu);
     s.DrawEntry(ctx, p, e, false, jitter, eye, planes);
   }
   ctx->OMSetDepthStencilState(s.dsDecal.Get(), 0);
-  ctx->OMSetBlendState(s.bsDecal.Get(), nullptr, 0xffffffffu);
+  ctx->OMSetBlendState(s.DecalBlend(p.gbuffer), nullptr, 0xffffffffu);
   for (Entry& e : s.entries) s.DrawEntry(ctx, p, e, true, jitter, eye, planes);
   ctx->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
   ctx->OMSetDepthStencilState(nullptr, 0);

@@ -142,6 +142,21 @@ struct SceneImpl {
   d3dl::PixelShader* Variant(int v);
   bool VertexStage(int v, d3dl::VertexShader** shader, d3dl::InputLayout** il);
 
+  // Deferred shading (SceneDeferred.cpp), created on first use so that the
+  // forward path loads none of it.
+  std::vector<SceneLight> lights;
+  std::vector<uint32_t> gbufferPsCode[8];
+  ComPtr<d3dl::PixelShader> gbufferPs[8];
+  ComPtr<d3dl::VertexShader> shadowVs;
+  ComPtr<d3dl::PixelShader> shadowPs;
+  ComPtr<d3dl::InputLayout> shadowLayout;
+  ComPtr<d3dl::BlendState> bsDecalGBuffer;
+  ComPtr<d3dl::RasterizerState> rsShadow;
+  d3dl::PixelShader* GBufferVariant(int v);
+  d3dl::BlendState* DecalBlend(bool gbuffer);
+  bool CreateShadowStage();
+  bool ReloadDeferredShaders(const ShaderLibrary& lib, bool fromSource, std::string* error);
+
   // SceneDraw.cpp
   void ResetHistory(const glm::mat4& view, const glm::mat4& viewProj);
   void FrameMove(const glm::mat4& view, const glm::mat4& viewProj, int target);

@@ -100,3 +100,17 @@ TEST(BenchCommandLine, BadMovingValuesNameTheirRange) {
     EXPECT_NE(m.find(range), std::string::npos) << args[0] << ": " << m;
   }
 }
+
+// The renderer is the sample's option: the bench renders every row (and the
+// reference) with it, and a bad name is the sample's error.
+TEST(BenchCommandLine, RendererChoice) {
+  BenchPlan plan;
+  std::string m;
+  ASSERT_EQ(Parse({"--quick"}, &plan, &m), 0) << m;
+  EXPECT_EQ(plan.base.renderer, drr::Renderer::Forward);
+  ASSERT_EQ(Parse({"--quick", "--renderer", "deferred", "--no-ssao"}, &plan, &m), 0) << m;
+  EXPECT_EQ(plan.base.renderer, drr::Renderer::Deferred);
+  EXPECT_FALSE(plan.base.ssao);
+  EXPECT_EQ(Parse({"--renderer", "tiled"}, &plan, &m), 2);
+  EXPECT_EQ(m, "option --renderer: unknown renderer 'tiled' (allowed: forward, deferred)");
+}

@@ -225,7 +225,7 @@ TEST(SampleOptions, HelpAndParserShareOneTable) {
       EXPECT_EQ(m.find("unknown option"), std::string::npos) << word << ": " << m;
     }
   }
-  EXPECT_EQ(shown, 44);  // every option of the sample once (-h is --help's other name)
+  EXPECT_EQ(shown, 50);  // every option of the sample once (-h is --help's other name)
   for (const FixInfo& f : FixTable()) EXPECT_NE(help.find(std::string("  ") + f.name + " "), std::string::npos);
   for (int f = 0; f < static_cast<int>(Filter::Count); ++f)
     EXPECT_NE(help.find(FilterOption(static_cast<Filter>(f))), std::string::npos);
@@ -350,4 +350,39 @@ TEST(SampleOptions, QuietIsOffByDefaultAndParsed) {
   EXPECT_FALSE(o.quiet);
   ASSERT_EQ(Parse({"--quiet"}, &o, &m), ParseStatus::Ok) << m;
   EXPECT_TRUE(o.quiet);
+}
+
+// Deferred shading (Docs/Deferred.md): forward by default, the values from
+// their name tables, errors naming the value and what is allowed.
+TEST(SampleOptions, DeferredRenderer) {
+  Options o;
+  std::string m;
+  ASSERT_EQ(Parse({}, &o, &m), ParseStatus::Ok);
+  EXPECT_EQ(o.renderer, Renderer::Forward);
+  EXPECT_TRUE(o.ssao);
+  EXPECT_TRUE(o.localLights);
+  EXPECT_EQ(o.shadowLaw, ShadowLaw::Main);
+  ASSERT_EQ(Parse({"--renderer", "deferred", "--no-ssao", "--no-local-lights", "--shadow-scale=0.5", "--shadow-law",
+                   "fixed", "--shadow-map-size", "512"},
+                  &o, &m),
+            ParseStatus::Ok)
+      << m;
+  EXPECT_EQ(o.renderer, Renderer::Deferred);
+  EXPECT_FALSE(o.ssao);
+  EXPECT_FALSE(o.localLights);
+  EXPECT_EQ(o.shadowScale, 0.5);
+  EXPECT_EQ(o.shadowLaw, ShadowLaw::Fixed);
+  EXPECT_EQ(o.shadowMapSize, 512u);
+  EXPECT_NE(OptionsToJson(o).find("\"renderer\": \"deferred\", \"ssao\": false"), std::string::npos);
+  EXPECT_EQ(Parse({"--renderer", "tiled"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --renderer: unknown renderer 'tiled' (allowed: forward, deferred)");
+  EXPECT_EQ(Parse({"--shadow-law", "area"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --shadow-law: unknown shadow law 'area' (allowed: fixed, main)");
+  EXPECT_EQ(Parse({"--shadow-scale", "0.1"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --shadow-scale: value 0.1 is out of range [0.125, 1]");
+  EXPECT_EQ(Parse({"--shadow-map-size", "8192"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --shadow-map-size: value 8192 is out of range [64, 4096]");
+  ASSERT_EQ(Parse({"--help"}, &o, &m), ParseStatus::Help);
+  EXPECT_NE(m.find("--renderer NAME"), std::string::npos);
+  EXPECT_NE(m.find("forward|deferred (default forward"), std::string::npos) << m;
 }

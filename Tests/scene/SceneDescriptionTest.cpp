@@ -134,3 +134,69 @@ TEST(SceneDescription, BadPathsAreReportedWithTheResolvedLocation) {
   EXPECT_NE(err.find("no_such_scene.txt: cannot open scene description"), std::string::npos) << err;
   fs::remove_all(dir);
 }
+
+// Deferred shading's LIGHT entries (Docs/Deferred.md): between model entries,
+// any case, spot directions normalised, defaults for the optional values.
+TEST(SceneDescription, LightEntries) {
+  SceneDescription d;
+  std::string err;
+  ASSERT_TRUE(Parse("arena.gltf NO_ANIM LIT\n"
+                    "LIGHT POINT position=1,2,3 color=3,0.5,0.25 radius=900\n"
+                    "light spot position=0,10,0 direction=0,-2,0 radius=30 angle=25 shadow=1\n"
+                    "bell.gltf NO_ANIM LIT\n\"LIGHT\" NO_ANIM LIT\n",
+                    &d, &err))
+      << err;
+  ASSERT_EQ(d.entries.size(), 3u);
+  EXPECT_EQ(d.entries[2].meshPath, "LIGHT");  // quoted: a model file's name
+  ASSERT_EQ(d.lights.size(), 2u);
+  EXPECT_EQ(d.lights[0].type, LightType::Point);
+  EXPECT_EQ(d.lights[0].position, glm::vec3(1, 2, 3));
+  EXPECT_EQ(d.lights[0].color, glm::vec3(3, 0.5f, 0.25f));
+  EXPECT_EQ(d.lights[0].radius, 900.f);
+  EXPECT_EQ(d.lights[0].line, 2);
+  EXPECT_EQ(d.lights[1].type, LightType::Spot);
+  EXPECT_EQ(d.lights[1].direction, glm::vec3(0, -1, 0));
+  EXPECT_EQ(d.lights[1].color, glm::vec3(1));
+  EXPECT_EQ(d.lights[1].angleDeg, 25.f);
+  EXPECT_TRUE(d.lights[1].shadow);
+}
+
+TEST(SceneDescription, BadLightsNameTheLineAndTheValue) {
+  const std::string ok = "position=0,0,0 radius=1";
+  const struct {
+    std::string text, expect;
+  } cases[] = {
+      {"LIGHT\n", "test.txt:2: LIGHT needs its kind: found '', expected POINT or SPOT"},
+      {"LIGHT AREA " + ok, "test.txt:2: LIGHT needs its kind: found 'AREA'"},
+      {"LIGHT POINT radius=1", "test.txt:2: LIGHT POINT needs position= and radius="},
+      {"LIGHT SPOT " + ok, "LIGHT SPOT needs position=, direction= and radius="},
+      {"LIGHT POINT " + ok + "\n  radius=0", "test.txt:3: radius= expects a number in (0, 1e7]"},
+      {"LIGHT POINT " + ok + " radius=nan", "radius= expects a number in (0, 1e7]"},
+      {"LIGHT POINT " + ok + " color=1,2", "color= expects r,g,b, each in [0, 64]"},
+      {"LIGHT POINT " + ok + " color=1,-2,3", "color= expects r,g,b, each in [0, 64]"},
+      {"LIGHT POINT " + ok + " angle=30", "unknown light option 'angle' (expected position=, color=, radius=)"},
+      {"LIGHT SPOT " + ok + " direction=0,0,0", "direction= expects x,y,z, not all zero"},
+      {"LIGHT SPOT " + ok + " direction=0,1,0 angle=90", "angle= expects degrees in (0, 89]"},
+      {"LIGHT SPOT " + ok + " direction=0,1,0 shadow=yes", "shadow= expects 0 or 1"},
+  };
+  for (const auto& c : cases) {
+    SceneDescription d;
+    std::string err;
+    EXPECT_FALSE(Parse("arena.gltf NO_ANIM LIT\n" + c.text, &d, &err)) << c.text;
+    EXPECT_NE(err.find(c.expect), std::string::npos) << "text: " << c.text << "\nerror: " << err;
+  }
+}
+
+TEST(SceneDescription, LightLimits) {
+  std::string text = "arena.gltf NO_ANIM LIT\n";
+  for (size_t i = 0; i < kMaxShadowedSpots + 1; ++i)
+    text += "LIGHT SPOT position=0,0,0 direction=0,-1,0 radius=1 shadow=1\n";
+  SceneDescription d;
+  std::string err;
+  EXPECT_FALSE(Parse(text, &d, &err));
+  EXPECT_NE(err.find("test.txt:6: too many spot lights with shadow=1 (at most 4)"), std::string::npos) << err;
+  text = "arena.gltf NO_ANIM LIT\n";
+  for (size_t i = 0; i < kMaxSceneLights + 1; ++i) text += "LIGHT POINT position=0,0,0 radius=1\n";
+  EXPECT_FALSE(Parse(text, &d, &err));
+  EXPECT_NE(err.find("test.txt:34: too many lights (at most 32)"), std::string::npos) << err;
+}
