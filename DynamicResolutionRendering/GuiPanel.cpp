@@ -35,7 +35,7 @@ bool SettingsDiffer(const Options& a, const Options& b) {
          a.control != b.control || a.law != b.law || a.fixes != b.fixes ||
          // Upscaling (port addition)
          a.secondaryScreenPercentage != b.secondaryScreenPercentage || a.mipBias != b.mipBias ||
-         a.autoMipBias != b.autoMipBias;
+         a.autoMipBias != b.autoMipBias || a.taaMipBias != b.taaMipBias;
 }
 
 int OptionPercent(float scale) { return int(std::lround(100.0 * double(scale))); }
@@ -138,6 +138,7 @@ void GuiPanel::UpscaleSection(Options* o) {
   float bias = float(o->mipBias);
   ImGui::SetNextItemWidth(kComboWidth);
   if (ImGui::SliderFloat("Mip bias", &bias, -2.0f, 2.0f, "%.2f")) o->mipBias = bias;
+  ImGui::Checkbox("TAA mip bias -0.5 (original)", &o->taaMipBias);
 }
 
 void GuiPanel::Buttons() {

@@ -166,6 +166,9 @@ constexpr Spec kSpecs[] = {
          "TAAU: no automatic view mip bias (the original's sampler)"),
     Path("--mip-bias-opt-out", "LIST", &Options::mipBiasOptOut,
          "TAAU: materials (comma-separated) sampled without the view mip bias"),
+    Flag("--no-taa-mip-bias", &Options::taaMipBias, false,
+         "TAA: the scene's plain sampler instead of the original's\n"
+         "MipLODBias -0.5 while TAA is on (an ablation)"),
 };
 
 constexpr double kMinScale = 0.01;
@@ -412,7 +415,8 @@ std::string OptionsToJson(const Options& o) {
     << ", \"validation\": " << (o.validation ? "true" : "false")
     << ", \"fixes\": " << JsonQuote(FixNames(o.fixes))
     << ", \"secondary_screen_percentage\": " << o.secondaryScreenPercentage << ", \"mip_bias\": " << o.mipBias
-    << ", \"auto_mip_bias\": " << (o.autoMipBias ? "true" : "false") << "}";
+    << ", \"auto_mip_bias\": " << (o.autoMipBias ? "true" : "false")
+    << ", \"taa_mip_bias\": " << (o.taaMipBias ? "true" : "false") << "}";
   return j.str();
 }
 

@@ -70,6 +70,7 @@ struct Options {
   double mipBias = 0.0;                     // added to TAAU's automatic view mip bias
   bool autoMipBias = true;                  // TAAU: texture sampling biased by log2(screen percentage)
   std::string mipBiasOptOut;                // materials (comma-separated names) sampled without it
+  bool taaMipBias = true;                   // the original's TAA sampler bias -0.5 (--no-taa-mip-bias: 0, an ablation)
 
   int64_t EffectiveFrames() const { return frames >= 0 ? frames : (headless ? 300 : -1); }
   float MaxScale() const { return superSampling ? 2.0f : 1.0f; }
