@@ -126,7 +126,8 @@ bool TakeInt(const std::vector<std::string>& args, size_t* i, int lo, int hi, in
 // The comma-separated items after args[*i], each read by `parse`; false
 // with a message naming the item it could not read.
 template <typename T, typename Parse>
-bool TakeList(const std::vector<std::string>& args, size_t* i, std::vector<T>* out, Parse parse, std::string* message) {
+bool TakeList(const std::vector<std::string>& args, size_t* i, std::vector<T>* out, Parse parse, const char* expected,
+              std::string* message) {
   const std::string name = args[*i];
   std::string v;
   if (!TakeValue(args, i, &v, message)) return false;
@@ -136,7 +137,7 @@ bool TakeList(const std::vector<std::string>& args, size_t* i, std::vector<T>* o
     const std::string item = v.substr(at, comma - at);
     T value{};
     if (!parse(item, &value)) {
-      *message = name + ": cannot read '" + item + "' in '" + v + "'";
+      *message = name + ": '" + item + "' in '" + v + "' is not " + expected;
       return false;
     }
     out->push_back(value);
@@ -185,8 +186,8 @@ int ParseBenchArgs(const std::vector<std::string>& args, BenchPlan* plan, BenchA
       ok = TakeInt(args, &i, 1, 1000, &percent, message);
       parsed->movingSpeedPercent = percent;
     }
-    else if (a == "--filters") ok = TakeList(args, &i, &parsed->filterList, ParseFilterName, message);
-    else if (a == "--scales") ok = TakeList(args, &i, &parsed->scaleList, ParseScale, message);
+    else if (a == "--filters") ok = TakeList(args, &i, &parsed->filterList, ParseFilterName, "a --filter name", message);
+    else if (a == "--scales") ok = TakeList(args, &i, &parsed->scaleList, ParseScale, "a scale from 0.1 to 2", message);
     else if (a == "--ghost-frames") ok = TakeInt(args, &i, 2, 300, &parsed->ghostFrames, message);
     else if (a == "--bench-warmup-ms") ok = TakeInt(args, &i, 0, 60000, &parsed->warmupMs, message);
     else if (a == "--bench-warmup") ok = TakeInt(args, &i, 0, 10000, &parsed->warmup, message);
