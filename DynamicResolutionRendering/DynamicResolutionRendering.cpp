@@ -387,7 +387,7 @@ SceneRenderParams Sample::SceneParams() const {
   p.proj = glm::perspectiveRH_ZO(pose.fovY, aspect, pose.nearZ, pose.farZ);
   // Jitter in pixels (x right, y down) -> NDC (+Y up).
   p.jitterNdc = glm::vec2(2.0f * m_History.jitterCurr.x, -2.0f * m_History.jitterCurr.y);
-  p.mipBiasSampler = TAAActive();
+  p.mipBiasSampler = TAAActive() && m_Options.taaMipBias;
   // TAAU's automatic view mip bias: log2(screen percentage) + the user's bias.
   if (m_Targets.Plan().taau && m_Options.autoMipBias)
     p.viewMipBias = std::log2(m_DynamicResolution.GetScaleX()) + float(m_Options.mipBias);

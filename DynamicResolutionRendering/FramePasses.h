@@ -51,7 +51,7 @@ struct UpscaleConstants {
   float sharpness;        // unsharp amount of Directional and Gaussian Unsharp
   float sourceSize[2], invSourceSize[2];  // the secondary upscale's source
   float temporalParams[4];  // max history weight still / moving, clip gamma still / moving
-  // TAAU: a sample's weight falls as exp(-d^2 / 2 sigma^2), d in output
+  // TAAU: a sample's weight falls as (1 - d^2 / (2.2 sigma)^2)^2, d in output
   // pixels, sigma still / moving; and the output pixels per frame counted as fully moving.
   float sampleSigma[2];
   float motionPixels;

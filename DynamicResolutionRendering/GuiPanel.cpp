@@ -35,7 +35,7 @@ bool SettingsDiffer(const Options& a, const Options& b) {
          a.control != b.control || a.law != b.law || a.fixes != b.fixes ||
          // Upscaling (port addition)
          a.secondaryScreenPercentage != b.secondaryScreenPercentage || a.mipBias != b.mipBias ||
-         a.autoMipBias != b.autoMipBias ||
+         a.autoMipBias != b.autoMipBias || a.taaMipBias != b.taaMipBias ||
          // Deferred shading (port addition)
          a.renderer != b.renderer || a.ssao != b.ssao || a.localLights != b.localLights || a.shadowScale != b.shadowScale || a.shadowLaw != b.shadowLaw;
 }
@@ -140,6 +140,7 @@ void GuiPanel::UpscaleSection(Options* o) {
   float bias = float(o->mipBias);
   ImGui::SetNextItemWidth(kComboWidth);
   if (ImGui::SliderFloat("Mip bias", &bias, -2.0f, 2.0f, "%.2f")) o->mipBias = bias;
+  ImGui::Checkbox("TAA mip bias -0.5 (original)", &o->taaMipBias);
 }
 
 // Deferred shading (Docs/Deferred.md): the renderer, SSAO and the spot

@@ -166,6 +166,9 @@ constexpr Spec kSpecs[] = {
          "TAAU: no automatic view mip bias (the original's sampler)"),
     Path("--mip-bias-opt-out", "LIST", &Options::mipBiasOptOut,
          "TAAU: materials (comma-separated) sampled without the view mip bias"),
+    Flag("--no-taa-mip-bias", &Options::taaMipBias, false,
+         "TAA: the scene's plain sampler instead of the original's\n"
+         "MipLODBias -0.5 while TAA is on (an ablation)"),
     // Deferred shading (Docs/Deferred.md)
     Choice("--renderer", "NAME", &Options::renderer, ChoicesOf<Renderer, RendererOption>("renderer"),
            "{choices} (default forward: the original's path; deferred:\n"
@@ -429,7 +432,8 @@ std::string OptionsToJson(const Options& o) {
     << ", \"auto_mip_bias\": " << (o.autoMipBias ? "true" : "false")
     << ", \"renderer\": \"" << RendererOption(o.renderer) << "\", \"ssao\": " << (o.ssao ? "true" : "false")
     << ", \"shadow_scale\": " << o.shadowScale << ", \"shadow_law\": \"" << ShadowLawOption(o.shadowLaw)
-    << "\", \"shadow_map_size\": " << o.shadowMapSize << "}";
+    << "\", \"shadow_map_size\": " << o.shadowMapSize
+    << ", \"taa_mip_bias\": " << (o.taaMipBias ? "true" : "false") << "}";
   return j.str();
 }
 

@@ -71,6 +71,7 @@ struct Options {
   double mipBias = 0.0;                     // added to TAAU's automatic view mip bias
   bool autoMipBias = true;                  // TAAU: texture sampling biased by log2(screen percentage)
   std::string mipBiasOptOut;                // materials (comma-separated names) sampled without it
+  bool taaMipBias = true;                   // the original's TAA sampler bias -0.5 (--no-taa-mip-bias: 0, an ablation)
   // Deferred shading (Docs/Deferred.md); the forward path ignores the others.
   Renderer renderer = Renderer::Forward;    // --renderer
   bool ssao = true;                         // screen-space ambient occlusion into the G-buffer's AO target

@@ -29,43 +29,51 @@ TemporalOut TemporalUpsamplePS(PostVSOut i) {
   float2 q = i.uv * vp;
   int2 k = clamp(int2(floor(q + g_JitterPx)), int2(0, 0), last);
 
-  // The 3x3 neighbourhood: its colours, YCoCg moments and closest depth.
+  // The 3x3 neighbourhood: its colours, their offsets and the closest depth.
   float3 colour[9];
   float2 offset[9];  // each sample's distance to the pixel centre, output pixels
-  float3 m1 = 0.0, m2 = 0.0;
   float closest = 2.0;
   int2 closestTexel = k;
   [unroll] for (int n = 0; n < 9; ++n) {
     int2 t = clamp(k + int2(n % 3 - 1, n / 3 - 1), int2(0, 0), last);
     colour[n] = g_ColorCurr.Load(int3(t, 0)).rgb;
     offset[n] = (float2(t) + 0.5 - g_JitterPx - q) * outPerTexel;
-    float3 ycc = RgbToYCoCg(colour[n]);
-    m1 += ycc;
-    m2 += ycc * ycc;
     float z = g_DepthCurr.Load(int3(t, 0));
     if (z < closest) {
       closest = z;
       closestTexel = t;
     }
   }
-  float3 mean = m1 / 9.0;
-  float3 sigma = sqrt(max(m2 / 9.0 - mean * mean, 0.0));
 
   // The velocity of the closest surface: where the pixel was, how much it moves.
   float2 velocity = FiniteOrZero(g_VelocityCurr.Load(int3(closestTexel, 0)).xy);
   float2 prevUV = i.uv - velocity;
   float motion = saturate(length(velocity * g_OutputSize) / g_MotionPixels);  // 0 still .. 1 moving
 
-  // This frame's estimate, its samples weighted by their distance.
+  // This frame's estimate, its samples weighted by their distance d: the
+  // window (1 - d^2 / r^2)^2 with r = 2.2 sigma, as sharp as a Gaussian of
+  // that sigma near the centre and zero beyond r (no exponentials). The
+  // neighbourhood's YCoCg moments for the clip are weighted by its square
+  // root (plus a floor), so the box describes the samples near this output
+  // pixel rather than the whole 3x3 of dynamic texels.
   float s = lerp(g_SampleSigma.x, g_SampleSigma.y, motion);
-  float3 sum = 0.0;
-  float wsum = 0.0;
+  float invR2 = 1.0 / (4.84 * s * s);
+  float3 sum = 0.0, m1 = 0.0, m2 = 0.0;
+  float wsum = 0.0, msum = 0.0;
   [unroll] for (int j = 0; j < 9; ++j) {
-    float w = exp(-dot(offset[j], offset[j]) / (2.0 * s * s));
+    float x = saturate(1.0 - dot(offset[j], offset[j]) * invR2);
+    float w = x * x;
     sum += w * colour[j];
     wsum += w;
+    float3 ycc = RgbToYCoCg(colour[j]);
+    float wm = x + 0.05;
+    m1 += wm * ycc;
+    m2 += wm * ycc * ycc;
+    msum += wm;
   }
   float3 current = wsum > 1e-4 ? sum / wsum : colour[4];  // no sample near: the nearest one
+  float3 mean = m1 / msum;
+  float3 sigma = sqrt(max(m2 / msum - mean * mean, 0.0));
 
   float historyWeight = 0.0;
   float3 history = current;

@@ -11,8 +11,10 @@
 namespace drr {
 namespace {
 
-constexpr uint32_t kPalette[] = {0x1f77b4, 0xff7f0e, 0x2ca02c, 0xd62728, 0x9467bd,
-                                 0x8c564b, 0xe377c2, 0x7f7f7f, 0xbcbd22, 0x17becf};
+// Eighteen colours: a front of the bench has up to 17 filters, each a series.
+constexpr uint32_t kPalette[] = {0x1f77b4, 0xff7f0e, 0x2ca02c, 0xd62728, 0x9467bd, 0x8c564b,
+                                 0xe377c2, 0x7f7f7f, 0xbcbd22, 0x17becf, 0x000080, 0x808000,
+                                 0xff00ff, 0x8b0000, 0x006400, 0x4b0082, 0xdaa520, 0x404040};
 
 class Canvas {
  public:

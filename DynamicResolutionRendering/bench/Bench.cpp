@@ -190,6 +190,14 @@ BenchRow Measure(Sample& sample, const BenchPlan& plan, const Options& settings,
   return row;
 }
 
+// TAAU accumulates over its jitter sequence: a still row is measured after
+// two whole cycles (the original's TAA settles in two frames); not in the
+// quick preset, which checks completeness, not convergence.
+int StillWarmup(const BenchPlan& plan, Filter filter) {
+  if (!IsTemporalUpsample(filter) || plan.quick) return plan.warmupFrames;
+  return std::max(plan.warmupFrames, int(2 * kUpsampleJitterLength));
+}
+
 // What the measurements of one view share; AddRow measures one configuration
 // with the plan's warm-up and frame counts and records it.
 struct ViewRun {
@@ -205,7 +213,7 @@ struct ViewRun {
 
   void AddRow(const Options& settings, const std::string& filterName, double scale) {
     results->rows.push_back(Measure(sample, plan, settings, view.name, filterName, scale, reference,
-                                    plan.warmupFrames, plan.measuredFrames));
+                                    StillWarmup(plan, settings.filter), plan.measuredFrames));
     timed.emplace_back(settings, results->rows.size() - 1);
     progress->Step(view.name + " " + filterName + " " + Num2(scale));
   }
@@ -392,8 +400,17 @@ bool MeasureSweep(ViewRun& run, const Options& o, std::string* error) {
 }
 
 // Jitter ablation on the first view: the symmetric pair (-0.25/+0.25 px)
-// against the original's asymmetric one (0/0.5 px, the sweep's taa rows).
+// against the original's asymmetric one (0/0.5 px, the sweep's taa rows);
+// texture mip bias: TAA at 0.71 with the plain sampler, TAAU at 0.5 and
+// 0.71 without its automatic bias (against the sweep's taa and taau rows).
 void MeasureStillAblations(ViewRun& run, const Options& o) {
+  for (const MipBiasAblation& a : MipBiasAblations(run.plan)) {
+    Options s = o;
+    s.dynamicResolution = true;
+    s.superSampling = false;
+    a.edit(s);
+    run.AddRow(s, a.name, s.scaleX);
+  }
   for (float scale : {0.5f, 0.71f, 1.0f}) {
     Options s = o;
     s.dynamicResolution = true;
@@ -456,7 +473,8 @@ bool MeasureView(const BenchPlan& plan, const BenchView& view, bool firstView, B
 size_t ProgressSteps(const BenchPlan& plan) {
   const size_t perView = 2 + plan.filters.size() * plan.scales.size() + plan.scales.size();
   const size_t moving = (plan.ghosting || plan.claims ? 1 : 0) + (plan.ghosting ? 8 : 0) + (plan.claims ? 2 : 0);
-  return plan.views.size() * (perView + (plan.timingRounds > 0 ? 1 : 0)) + (plan.claims ? 8 : 0) + (plan.ablations ? 3 : 0) + moving +
+  return plan.views.size() * (perView + (plan.timingRounds > 0 ? 1 : 0)) + (plan.claims ? 8 : 0) +
+         (plan.ablations ? 3 + MipBiasAblations(plan).size() : 0) + moving +
          MovingProgressSteps(plan);
 }
 

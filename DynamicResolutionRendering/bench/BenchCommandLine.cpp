@@ -2,6 +2,7 @@
 // sweep (views, filters, scales) that follows from them.
 #include "bench/Bench.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 
@@ -30,9 +31,10 @@ const char* kBenchUsage =
     "from these numbers.\n"
     "\n"
     "  --quick              short preset for CI: one static camera, point / bilinear /\n"
-    "                       bicubic / TAA at scales 0.3 0.5 0.71 1.0, 320x180, with\n"
-    "                       the fixed-function-blit, claim and ghosting rows, and the\n"
-    "                       moving camera at x1 (point, bilinear, taa at 0.5 and 1.0)\n"
+    "                       bicubic / TAA / TAAU at scales 0.3 0.5 0.71 1.0, 320x180,\n"
+    "                       with the fixed-function-blit, claim and ghosting rows, and\n"
+    "                       the moving camera at x1 (point, bilinear, taa, taau at\n"
+    "                       0.5 and 1.0); interleaved timing 1 + 4 frames a turn\n"
     "  --out DIR            output folder (default: bench_out)\n"
     "  --bench-warmup N     frames rendered before measuring (default 8, quick 4)\n"
     "  --bench-warmup-ms T  and warm up for at least T ms (default 500, quick 0): GPU\n"
@@ -42,6 +44,11 @@ const char* kBenchUsage =
     "  --camera N           only this camera (a static view at its default time)\n"
     "  --filter F           only this filter\n"
     "  --scale S            only this scale\n"
+    "  --filters LIST       these filters (comma-separated --filter names), still\n"
+    "                       and moving; TAAU's still rows warm up for at least two\n"
+    "                       jitter cycles (32 frames; not with --quick)\n"
+    "  --scales LIST        these scales (comma-separated), still; moving: those\n"
+    "                       at or below 1.0\n"
     "  --memory-bandwidth GBPS  device memory bandwidth for the bandwidth bound of the\n"
     "                       scale pass (default: measured host memcpy on CPU\n"
     "                       rasterisers, none on GPUs: give the device's figure)\n"
@@ -58,7 +65,7 @@ const char* kBenchUsage =
     "  --no-moving          skip the moving-camera sequences: the cinematic camera\n"
     "                       at speeds 0.5, 1 and 2 (quick: 1; 1 = 1/30 s of animation\n"
     "                       a frame), every filter at scales 0.4 0.55 0.71 0.85 1.0\n"
-    "                       (quick: point, bilinear, taa at 0.5 and 1.0) and native,\n"
+    "                       (quick: point, bilinear, taa, taau at 0.5 and 1.0) and native,\n"
     "                       no 2x targets, motion blur off; each frame against the\n"
     "                       reference of its animation time: PSNR, SSIM, FLIP, and\n"
     "                       flicker (frame-to-frame change of the error image)\n"
@@ -66,7 +73,9 @@ const char* kBenchUsage =
     "  --moving-warmup N    frames before them (default 8, quick 2)\n"
     "  --moving-speed P     only this speed, in percent (100 = 1/30 s a frame)\n"
     "  --no-ablations       skip the ablation rows (symmetric jitter still and moving,\n"
-    "                       fast TAA and native with motion blur on, moving)\n"
+    "                       fast TAA and native with motion blur on, moving; texture\n"
+    "                       mip bias: TAA without its -0.5, TAAU without its\n"
+    "                       automatic view bias, still and moving)\n"
     "  --sweep-motion-blur  the still sweep with motion blur on (default off: the\n"
     "                       reference has none, and TAA is then the velocity-reading one)\n"
     "  --width/--height, --scene, --no-motion-blur, --symmetric-taa, --no-ps-clear,\n"
@@ -90,6 +99,8 @@ struct BenchArgs {
   int warmup = -1, warmupMs = -1, frames = -1, ghostFrames = -1;
   int movingFrames = -1, movingWarmup = -1, movingSpeedPercent = 0, timingRounds = -1;
   std::vector<std::string> sampleArgs;
+  std::vector<Filter> filterList;  // --filters
+  std::vector<float> scaleList;    // --scales
 };
 
 // The value after args[*i] (moving *i onto it); false with the usage in
@@ -113,6 +124,42 @@ bool TakeInt(const std::vector<std::string>& args, size_t* i, int lo, int hi, in
     return false;
   }
   return true;
+}
+
+// The comma-separated items after args[*i], each read by `parse`; false
+// with a message naming the item it could not read.
+template <typename T, typename Parse>
+bool TakeList(const std::vector<std::string>& args, size_t* i, std::vector<T>* out, Parse parse, const char* expected,
+              std::string* message) {
+  const std::string name = args[*i];
+  std::string v;
+  if (!TakeValue(args, i, &v, message)) return false;
+  out->clear();
+  for (size_t at = 0; at <= v.size();) {
+    const size_t comma = std::min(v.find(',', at), v.size());
+    const std::string item = v.substr(at, comma - at);
+    T value{};
+    if (!parse(item, &value)) {
+      *message = name + ": '" + item + "' in '" + v + "' is not " + expected;
+      return false;
+    }
+    out->push_back(value);
+    at = comma + 1;
+  }
+  return true;
+}
+
+bool ParseFilterName(const std::string& s, Filter* out) {
+  for (int f = int(Filter::None); f < int(Filter::Count); ++f)
+    if (s == FilterOption(Filter(f))) return *out = Filter(f), true;
+  return false;
+}
+
+bool ParseScale(const std::string& s, float* out) {
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (s.empty() || !end || *end || !(v >= 0.1 && v <= 2.0)) return false;
+  return *out = float(v), true;
 }
 
 // Reads the bench's own options into plan and parsed, and passes the others
@@ -142,6 +189,8 @@ int ParseBenchArgs(const std::vector<std::string>& args, BenchPlan* plan, BenchA
       ok = TakeInt(args, &i, 1, 1000, &percent, message);
       parsed->movingSpeedPercent = percent;
     }
+    else if (a == "--filters") ok = TakeList(args, &i, &parsed->filterList, ParseFilterName, "a --filter name", message);
+    else if (a == "--scales") ok = TakeList(args, &i, &parsed->scaleList, ParseScale, "a scale from 0.1 to 2", message);
     else if (a == "--ghost-frames") ok = TakeInt(args, &i, 2, 300, &parsed->ghostFrames, message);
     else if (a == "--bench-warmup-ms") ok = TakeInt(args, &i, 0, 60000, &parsed->warmupMs, message);
     else if (a == "--bench-warmup") ok = TakeInt(args, &i, 0, 10000, &parsed->warmup, message);
@@ -178,14 +227,18 @@ void ChooseSweep(const BenchArgs& parsed, BenchPlan* plan) {
                    {1, 4.0, "cinematic t=4"},
                    {1, 12.0, "cinematic t=12"}};
   }
-  if (parsed.filterGiven) {
+  if (!parsed.filterList.empty()) {
+    plan->filters = parsed.filterList;
+  } else if (parsed.filterGiven) {
     plan->filters = {plan->base.filter};
   } else if (plan->quick) {
-    plan->filters = {Filter::Point, Filter::Bilinear, Filter::Bicubic, Filter::TAA};
+    plan->filters = {Filter::Point, Filter::Bilinear, Filter::Bicubic, Filter::TAA, Filter::TAAU};
   } else {
     for (int f = int(Filter::Point); f < int(Filter::Count); ++f) plan->filters.push_back(Filter(f));
   }
-  if (parsed.scaleGiven) {
+  if (!parsed.scaleList.empty()) {
+    plan->scales = parsed.scaleList;
+  } else if (parsed.scaleGiven) {
     plan->scales = {plan->base.scaleX};
   } else if (plan->quick) {
     plan->scales = {0.3f, 0.5f, 0.71f, 1.0f};
@@ -200,11 +253,15 @@ void ChooseMoving(const BenchArgs& parsed, BenchPlan* plan) {
   if (parsed.movingSpeedPercent > 0) plan->movingSpeeds = {parsed.movingSpeedPercent / 100.0};
   else if (plan->quick) plan->movingSpeeds = {1.0};
   else plan->movingSpeeds = {0.5, 1.0, 2.0};
-  if (parsed.filterGiven) plan->movingFilters = {plan->base.filter};
-  else if (plan->quick) plan->movingFilters = {Filter::Point, Filter::Bilinear, Filter::TAA};
+  if (!parsed.filterList.empty()) plan->movingFilters = parsed.filterList;
+  else if (parsed.filterGiven) plan->movingFilters = {plan->base.filter};
+  else if (plan->quick) plan->movingFilters = {Filter::Point, Filter::Bilinear, Filter::TAA, Filter::TAAU};
   else plan->movingFilters = plan->filters;
   plan->movingScales.clear();
-  if (parsed.scaleGiven) {
+  if (!parsed.scaleList.empty()) {
+    for (float s : parsed.scaleList)
+      if (s <= 1.0f) plan->movingScales.push_back(s);
+  } else if (parsed.scaleGiven) {
     if (plan->base.scaleX <= 1.0f) plan->movingScales = {plan->base.scaleX};
   } else if (plan->quick) {
     plan->movingScales = {0.5f, 1.0f};
@@ -254,6 +311,7 @@ int ParseBenchCommandLine(const std::vector<std::string>& args, BenchPlan* plan,
   ChooseSweep(parsed, plan);
   ChooseMoving(parsed, plan);
   plan->timingRounds = parsed.timingRounds >= 0 ? parsed.timingRounds : (plan->quick ? 1 : 4);
+  if (plan->quick) plan->timingWarmup = 1, plan->timingFrames = 4;
   return 0;
 }
 

@@ -139,4 +139,15 @@ void Progress::Step(const std::string& what) {
   std::fflush(stderr);
 }
 
+// TAA at 0.71, TAAU at 0.71 and (not in the quick preset) at 0.5, where its bias is -1.
+std::vector<MipBiasAblation> MipBiasAblations(const BenchPlan& plan) {
+  std::vector<MipBiasAblation> rows = {
+      {kTaaNoMipBias, [](Options& s) { s.filter = Filter::TAA, s.scaleX = s.scaleY = 0.71f, s.taaMipBias = false; }},
+      {kTaauNoMipBias, [](Options& s) { s.filter = Filter::TAAU, s.scaleX = s.scaleY = 0.71f, s.autoMipBias = false; }},
+  };
+  if (!plan.quick)
+    rows.push_back({kTaauNoMipBias, [](Options& s) { s.filter = Filter::TAAU, s.scaleX = s.scaleY = 0.5f, s.autoMipBias = false; }});
+  return rows;
+}
+
 }  // namespace drr

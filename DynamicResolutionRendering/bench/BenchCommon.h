@@ -49,6 +49,14 @@ class Progress {
   bool tty_;
 };
 
+// The texture mip bias ablation's configurations (still and moving): a
+// row name and the edit of the sweep's options that makes it.
+struct MipBiasAblation {
+  const char* name;
+  void (*edit)(Options&);
+};
+std::vector<MipBiasAblation> MipBiasAblations(const BenchPlan& plan);
+
 // The moving-camera sequences and the ablations on them (BenchMoving.cpp).
 bool MeasureMovingSequences(const BenchPlan& plan, BenchResults* results, Progress* progress,
                             std::string* error);

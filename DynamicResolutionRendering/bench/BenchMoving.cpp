@@ -151,6 +151,12 @@ bool MeasureSpeed(const BenchPlan& plan, double speed, BenchResults* results, Pr
     }
     native.motionBlur = true;
     add(native, kNativeMotionBlur, 1.0);
+    for (const MipBiasAblation& a : MipBiasAblations(plan)) {
+      Options s = o;
+      s.dynamicResolution = true;
+      a.edit(s);
+      add(s, a.name, s.scaleX);
+    }
   }
   results->validationMessages += sample.ValidationMessages();
   sample.Shutdown();
@@ -162,7 +168,8 @@ bool MeasureSpeed(const BenchPlan& plan, double speed, BenchResults* results, Pr
 size_t MovingProgressSteps(const BenchPlan& plan) {
   if (!plan.moving) return 0;
   const size_t perSpeed = 2 + plan.movingFilters.size() * plan.movingScales.size();
-  return plan.movingSpeeds.size() * perSpeed + (plan.ablations && !plan.movingSpeeds.empty() ? 5 : 0);
+  return plan.movingSpeeds.size() * perSpeed +
+         (plan.ablations && !plan.movingSpeeds.empty() ? 5 + MipBiasAblations(plan).size() : 0);
 }
 
 bool MeasureMovingSequences(const BenchPlan& plan, BenchResults* results, Progress* progress, std::string* error) {

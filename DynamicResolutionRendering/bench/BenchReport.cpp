@@ -192,16 +192,21 @@ bool WritePlots(const BenchResults& res, const std::string& dir, std::string* er
          WritePlotPng(fig11, dir + "/frame_time_vs_scale.png", error);
 }
 
-// Least time a scale pass can take at `scale`: the viewport read and the back
-// buffer written once, 4 bytes a pixel each, at the memory bandwidth. NaN when
-// the bandwidth is unknown or no fixed-function-blit row gives the viewport.
+}  // namespace
+
+// Least time a scale pass can take: the viewport read and the back buffer
+// written once, 4 bytes a pixel each, at the memory bandwidth (NaN: unknown).
+double ScalePassBoundMs(const BenchResults& res, double viewportW, double viewportH) {
+  const double bytes = 4.0 * (viewportW * viewportH + double(res.plan->base.width) * res.plan->base.height);
+  return bytes / (res.bandwidthGBs * 1e9) * 1e3;
+}
+
+namespace {
+
+// The bound at `scale`, from the fixed-function-blit row's viewport (NaN: none).
 double BandwidthBoundMs(const BenchResults& res, double scale) {
-  for (const BenchRow& r : res.rows) {
-    if (r.filter != kFixedBlit || std::abs(r.scale - scale) > 1e-6) continue;
-    const double bytes = 4.0 * (double(r.viewportW) * r.viewportH +
-                                double(res.plan->base.width) * res.plan->base.height);
-    return bytes / (res.bandwidthGBs * 1e9) * 1e3;
-  }
+  for (const BenchRow& r : res.rows)
+    if (r.filter == kFixedBlit && std::abs(r.scale - scale) <= 1e-6) return ScalePassBoundMs(res, r.viewportW, r.viewportH);
   return std::nan("");
 }
 
@@ -527,19 +532,20 @@ bool WriteSummary(const BenchResults& res, const std::string& path, std::string*
         "lower bound. `bandwidth bound` is the physical one: the bytes a scale pass must read "
         "(the viewport, 4 bytes a pixel) and write (the back buffer, 4 bytes a pixel) over the "
         "memory bandwidth.\n\n"
-        "| filter | scale | ms | ratio to point | ratio to blit | article ratio to point (JP) |\n"
-        "| --- | ---: | ---: | ---: | ---: | ---: |\n";
+        "| filter | scale | ms | ratio to point | ratio to blit | ratio to bandwidth bound | article ratio to point (JP) |\n"
+        "| --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
   const float costScale = CostScale(plan);
   const double pointMs = MeanScaleMs(res, "point", costScale);
   const double blitMs = MeanScaleMs(res, kFixedBlit, costScale);
+  const double boundMs = BandwidthBoundMs(res, costScale);
   auto costRow = [&](const std::string& name, double ms) {
     const double article = ArticleScaleRatio(name);
     md << "| " << name << " | " << Num(costScale, 2) << " | " << Num(ms, 3) << " | "
        << Num(pointMs > 0 ? ms / pointMs : std::nan(""), 2) << " | "
        << Num(blitMs > 0 ? ms / blitMs : std::nan(""), 2) << " | "
+       << Num(boundMs > 0 ? ms / boundMs : std::nan(""), 1) << " | "
        << (article > 0 ? Num(article, 2) : std::string("-")) << " |\n";
   };
-  const double boundMs = BandwidthBoundMs(res, costScale);
   costRow("bandwidth bound", boundMs);
   costRow(kFixedBlit, blitMs);
   for (Filter f : plan.filters) costRow(FilterOption(f), MeanScaleMs(res, FilterOption(f), costScale));
@@ -552,6 +558,7 @@ bool WriteSummary(const BenchResults& res, const std::string& path, std::string*
   WriteStillQuality(res, md);
   WriteMovingQuality(res, md);
   WriteAblations(res, md);
+  WriteUpscaling(res, md);
   WriteIsoTables(res, md);
   WriteTaaSettled(res, md);
   WriteClaims(res, md);

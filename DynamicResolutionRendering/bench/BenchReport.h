@@ -59,6 +59,10 @@ inline constexpr const char* kReferenceRepeat = "reference-repeat";
 inline constexpr const char* kTaaSymmetric = "taa symmetric-jitter";
 inline constexpr const char* kTaaFast = "taa fast (motion blur on)";
 inline constexpr const char* kNativeMotionBlur = "native (motion blur on)";
+// Texture mip bias ablation (still and moving): the original's TAA without
+// its sampler's MipLODBias -0.5, TAAU without its automatic view mip bias.
+inline constexpr const char* kTaaNoMipBias = "taa mip-bias 0";
+inline constexpr const char* kTaauNoMipBias = "taau no-auto-mip-bias";
 
 struct BenchResults {
   const BenchPlan* plan = nullptr;

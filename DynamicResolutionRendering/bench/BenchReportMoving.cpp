@@ -144,10 +144,12 @@ void WriteAblations(const BenchResults& res, std::ostringstream& md) {
   const std::string firstView = res.plan->views.empty() ? "" : res.plan->views.front().name;
   const double speed = ReportSpeed(res);
   for (const BenchRow& r : res.rows) {
+    const bool mipBias = r.filter == kTaaNoMipBias || r.filter == kTaauNoMipBias ||
+                         (r.filter == "taau" && (Near(r.scale, 0.5) || Near(r.scale, 0.71)));
     const bool still = !r.moving && r.view == firstView &&
-                       (r.filter == kTaaSymmetric || (r.filter == "taa" && (Near(r.scale, 0.5) || Near(r.scale, 0.71) || Near(r.scale, 1.0))));
+                       (r.filter == kTaaSymmetric || mipBias || (r.filter == "taa" && (Near(r.scale, 0.5) || Near(r.scale, 0.71) || Near(r.scale, 1.0))));
     const bool moving = r.moving && Near(r.speed, speed) &&
-                        (r.filter == kTaaSymmetric || r.filter == kTaaFast || r.filter == kNativeMotionBlur || r.filter == "native" ||
+                        (r.filter == kTaaSymmetric || r.filter == kTaaFast || r.filter == kNativeMotionBlur || r.filter == "native" || mipBias ||
                          (r.filter == "taa" && (Near(r.scale, 0.71) || Near(r.scale, 1.0))));
     if (!still && !moving) continue;
     const std::string what = r.filter == "taa" ? "taa (asymmetric jitter, velocity-reading)" : r.filter;
@@ -156,7 +158,10 @@ void WriteAblations(const BenchResults& res, std::ostringstream& md) {
        << " | " << N(1000 * r.flicker, 1) << " | " << N(r.gpuFrame.median, 3) << " | " << N(r.gpuScale.median, 3) << " | "
        << r.qualityFrames << " / " << r.gpuSamples << " |\n";
   }
-  md << "\nTexture mip bias: not measured (the scene's samplers have no bias option).\n\n";
+  md << "\nTexture mip bias: `taa` samples the scene's textures with the original's MipLODBias -0.5, `" << kTaaNoMipBias
+     << "` with the plain sampler (`--no-taa-mip-bias`); `taau` adds log2(scale) to the bias (-1 at 0.5, -0.49 at "
+        "0.71), `" << kTaauNoMipBias << "` does not (`--no-auto-mip-bias`). Compare each with the row of the same "
+        "filter, camera and scale.\n\n";
 }
 
 // The best FLIP within each frame-time budget, and the cheapest frame

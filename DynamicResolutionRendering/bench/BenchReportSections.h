@@ -36,4 +36,12 @@ void WriteAblations(const BenchResults& res, std::ostringstream& md);
 void WriteIsoTables(const BenchResults& res, std::ostringstream& md);
 bool WriteFrontPlots(const BenchResults& res, const std::string& dir, std::string* error);
 
+// The scale pass's bandwidth bound in ms (BenchReport.cpp): the viewport
+// read and the back buffer written once, 4 bytes a pixel each.
+double ScalePassBoundMs(const BenchResults& res, double viewportW, double viewportH);
+// The port's upscalers against native and the original's TAA: TAAU at 0.5
+// and 0.71 still and moving, its cost ratios, the mip bias ablation
+// (BenchReportUpscale.cpp).
+void WriteUpscaling(const BenchResults& res, std::ostringstream& md);
+
 }  // namespace drr

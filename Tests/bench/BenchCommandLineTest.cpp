@@ -2,6 +2,8 @@
 // values rejected with their allowed range (exit code 2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "bench/Bench.h"
 
 namespace {
@@ -113,4 +115,36 @@ TEST(BenchCommandLine, RendererChoice) {
   EXPECT_FALSE(plan.base.ssao);
   EXPECT_EQ(Parse({"--renderer", "tiled"}, &plan, &m), 2);
   EXPECT_EQ(m, "option --renderer: unknown renderer 'tiled' (allowed: forward, deferred)");
+}
+
+// --filters and --scales set the still and the moving sweep (moving: only
+// the scales at or below 1.0); the quick preset carries TAAU on both; a bad
+// item is named with what was expected.
+TEST(BenchCommandLine, FilterAndScaleLists) {
+  BenchPlan plan;
+  std::string m;
+  ASSERT_EQ(Parse({"--filters", "point,taau,upscale-lanczos3", "--scales", "0.5,0.71,1.5"}, &plan, &m), 0) << m;
+  const std::vector<drr::Filter> filters = {drr::Filter::Point, drr::Filter::TAAU, drr::Filter::UpscaleLanczos3};
+  EXPECT_EQ(plan.filters, filters);
+  EXPECT_EQ(plan.movingFilters, filters);
+  EXPECT_EQ(plan.scales, (std::vector<float>{0.5f, 0.71f, 1.5f}));
+  EXPECT_EQ(plan.movingScales, (std::vector<float>{0.5f, 0.71f}));
+  BenchPlan quick;
+  ASSERT_EQ(Parse({"--quick"}, &quick, &m), 0) << m;
+  for (const auto* list : {&quick.filters, &quick.movingFilters})
+    EXPECT_NE(std::find(list->begin(), list->end(), drr::Filter::TAAU), list->end());
+  struct Case {
+    std::vector<std::string> args;
+    const char* expected;
+  } cases[] = {
+      {{"--filters", "point,bogus"}, "'bogus' in 'point,bogus' is not a --filter name"},
+      {{"--filters", "point,"}, "'' in 'point,' is not a --filter name"},
+      {{"--scales", "0.5,3"}, "'3' in '0.5,3' is not a scale from 0.1 to 2"},
+      {{"--scales"}, "missing value"},
+  };
+  for (const Case& c : cases) {
+    BenchPlan bad;
+    EXPECT_EQ(Parse(c.args, &bad, &m), 2) << c.args[0];
+    EXPECT_NE(m.find(c.expected), std::string::npos) << m;
+  }
 }

@@ -137,7 +137,8 @@ int main(int argc, char** argv) {
     if (!(gpuSamples >= 1)) Fail(where + ": no distinct GPU sample");
     const double scale = Parse(f[col["scale"]]);
     if (scale <= 1.0 + 1e-6 && f[col["supersampling"]] == "1" && filter.find("ss-allowed") == std::string::npos) Fail(where + ": 2x targets allowed at or below 1.0");
-    if (filter.find("symmetric-jitter") != std::string::npos || filter.find("motion blur on") != std::string::npos)
+    if (filter.find("symmetric-jitter") != std::string::npos || filter.find("motion blur on") != std::string::npos ||
+        filter.find("mip-bias") != std::string::npos)
       ++ablations[filter + (f[col["moving"]] == "1" ? " moving" : " still")];
     const double flip = Parse(f[col["flip"]]);
     if (filter != "fixed-function-blit" && filter.rfind("ghost ", 0) != 0 && filter.rfind("motion-blur", 0) != 0 &&
@@ -170,10 +171,11 @@ int main(int argc, char** argv) {
   if (blitRows == 0) Fail("no fixed-function-blit rows");
   if (ghostRows == 0) Fail("no ghosting rows");
   if (movingRows == 0) Fail("no moving-camera rows");
-  for (const char* m : {"native", "point", "bilinear", "taa"})
+  for (const char* m : {"native", "point", "bilinear", "taa", "taau"})
     if (!movingFilters.count(m)) Fail(std::string("no moving row for ") + m);
   for (const char* a : {"taa symmetric-jitter still", "taa symmetric-jitter moving", "taa fast (motion blur on) moving",
-                        "native (motion blur on) moving"})
+                        "native (motion blur on) moving", "taa mip-bias 0 still", "taa mip-bias 0 moving",
+                        "taau no-auto-mip-bias still", "taau no-auto-mip-bias moving"})
     if (!ablations.count(a)) Fail(std::string("no ablation row '") + a + "'");
 
   // Point filtering on the static view: strictly better from 0.3 to 1.0.

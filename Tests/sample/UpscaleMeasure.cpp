@@ -88,12 +88,14 @@ TEST(UpscaleMeasure, ArenaCinematic) {
       {"taau", Filter::TAAU, 0.71f, true},                   {"point", Filter::Point, 1.0f, true},
       {"taa", Filter::TAA, 1.0f, true},                      {"taau", Filter::TAAU, 1.0f, true},
   };
-  // DRR_UPSCALE_ONLY=NAME: only that configuration (and point), moving only.
+  // DRR_UPSCALE_ONLY=NAME: only that configuration (and point), moving only;
+  // DRR_UPSCALE_ROUNDS=N: N timing rounds (images are the same in each).
   const char* only = std::getenv("DRR_UPSCALE_ONLY");
+  const int rounds = std::getenv("DRR_UPSCALE_ROUNDS") ? std::max(1, std::atoi(std::getenv("DRR_UPSCALE_ROUNDS"))) : kRounds;
   for (bool moving : {false, true}) {
     if (only && !moving) continue;
     std::vector<Result> results(std::size(configs));
-    for (int round = 0; round < kRounds; ++round)
+    for (int round = 0; round < rounds; ++round)
       for (size_t i = 0; i < std::size(configs); ++i) {
         const Config& c = configs[i];
         if (only && std::string(c.name) != only && c.filter != Filter::Point) continue;
@@ -112,7 +114,7 @@ TEST(UpscaleMeasure, ArenaCinematic) {
       if (configs[i].filter == Filter::Point && configs[i].dynamic) pointMs[configs[i].scale] = results[i].gpuMs;
     }
     std::printf("\n%s camera, %ux%u, PSNR against the 4x4 reference, GPU frame ms (min of %d medians):\n",
-                moving ? "moving" : "still", kW, kH, kRounds);
+                moving ? "moving" : "still", kW, kH, rounds);
     for (size_t i = 0; i < std::size(configs); ++i) {
       const Config& c = configs[i];
       if (only && std::string(c.name) != only && c.filter != Filter::Point) continue;

@@ -349,3 +349,97 @@ TEST(UpscaleEdgeAdaptive, RunsBothPassesSharperThanBilinear) {
 
 }  // namespace
 }  // namespace drr
+
+namespace drr {
+namespace {
+
+// The secondary screen percentage at 50 % with the primary at 0.5 of the
+// back buffer: the primary (nearest texel) copies the 128x72 viewport 1:1
+// into the 128x72 output target, the secondary Catmull-Rom scales it to the
+// 256x144 back buffer; every interior pixel must hold a CPU Catmull-Rom of
+// the scene colour, as the quality-3 test checks it. A secondary sized
+// otherwise, or a second scale factor applied anywhere, moves the samples.
+TEST_F(UpscaleTaau, SecondaryUpscaleIsItsCatmullRomOfTheOutputTarget) {
+  Options o = Base(Filter::UpscaleNearest, 0.5f);
+  o.secondaryScreenPercentage = 50.0;
+  StartSample(o);
+  const Image out = RenderAndCapture(sample, 3);
+  const Image& scene = sample.CapturedSceneColor();
+  ASSERT_EQ(out.width, kW);
+  ASSERT_EQ(out.height, kH);
+  EXPECT_EQ(sample.GetDynamicResolution().GetViewport().Width, float(kW / 2));
+  EXPECT_EQ(sample.PassesRun().count("SecondaryUpscale"), 1u);
+  const Source src{&scene, int(kW / 2), int(kH / 2)};
+  const double tol = 2.0 / 255.0;
+  uint64_t bad = 0, checked = 0;
+  for (uint32_t y = 8; y + 8 < kH; ++y)
+    for (uint32_t x = 8; x + 8 < kW; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const double ref = Separable(src, (x + 0.5) * 0.5 - 0.5, (y + 0.5) * 0.5 - 0.5, c, CatmullRom, 2, false);
+        const int gpu = out.RGBA8(x, y)[c];
+        const int lo = int(std::floor(drr::LinearToSrgb(ref - tol) * 255.0 + 0.5)) - 1;
+        const int hi = int(std::floor(drr::LinearToSrgb(ref + tol) * 255.0 + 0.5)) + 1;
+        bad += gpu < lo || gpu > hi;
+        ++checked;
+      }
+  std::printf("[secondary] 50 %%: %llu of %llu channel values outside the CPU Catmull-Rom\n", (unsigned long long)bad,
+              (unsigned long long)checked);
+  EXPECT_EQ(bad, 0u);
+}
+
+// The scene colour of TAAU's first frame with the automatic bias on or off
+// and the materials in `optOut` sampled without it.
+Image TaauSceneColourOptOut(bool autoBias, const std::string& optOut) {
+  Options o = Base(Filter::TAAU, 0.5f);
+  o.autoMipBias = autoBias;
+  o.mipBiasOptOut = optOut;
+  Sample s;
+  std::string err;
+  EXPECT_EQ(s.Init(o, &err), 0) << err;
+  testkit::RenderAndCapture(s, 1);
+  Image img = s.CapturedSceneColor();
+  EXPECT_EQ(s.ValidationMessages(), 0u);
+  s.Shutdown();
+  return img;
+}
+
+// Per-material opt-out: with the Arena's floor opted out, every pixel the
+// bias changes shows either the unbiased texel (the floor) or the biased one
+// (every other material), both in large numbers, except where a decal (the
+// blended "Decals" material, biased) lies over the floor: those pixels must
+// be the decal's (opting the decals out changes them). A name that is no
+// material changes nothing. Pixels of the dynamic viewport (scale 0.5).
+TEST(UpscaleMipBias, OptOutKeepsTheNamedMaterialUnbiased) {
+  const Image plain = TaauSceneColourOptOut(false, "");
+  const Image biased = TaauSceneColourOptOut(true, "");
+  const Image floorOut = TaauSceneColourOptOut(true, "Floor");
+  const Image decalsOut = TaauSceneColourOptOut(true, "Decals");
+  EXPECT_EQ(testkit::Compare(TaauSceneColourOptOut(true, "NoSuchMaterial"), biased).maxAbs, 0);
+  ASSERT_EQ(plain.width, biased.width);
+  ASSERT_EQ(plain.width, floorOut.width);
+  uint64_t changed = 0, keptPlain = 0, keptBiased = 0, decal = 0, neither = 0;
+  for (uint32_t y = 0; y < kH / 2; ++y)
+    for (uint32_t x = 0; x < kW / 2; ++x) {
+      auto same = [&](const Image& a, const Image& b) {
+        const auto pa = a.RGBA8(x, y), pb = b.RGBA8(x, y);
+        return pa[0] == pb[0] && pa[1] == pb[1] && pa[2] == pb[2];
+      };
+      if (same(plain, biased)) continue;
+      ++changed;
+      if (same(floorOut, plain)) ++keptPlain;
+      else if (same(floorOut, biased)) ++keptBiased;
+      else if (!same(decalsOut, biased)) ++decal;
+      else ++neither;
+    }
+  std::printf("[mip bias] %llu pixels changed by the bias; floor opted out: %llu unbiased, %llu biased, %llu decal "
+              "over the floor, %llu other\n",
+              (unsigned long long)changed, (unsigned long long)keptPlain, (unsigned long long)keptBiased,
+              (unsigned long long)decal, (unsigned long long)neither);
+  EXPECT_GT(keptPlain, 100u);
+  EXPECT_GT(keptBiased, 100u);
+  // 0.1 % allowed: 2 of 7 816 pixels here fall in no class (not traced).
+  EXPECT_LE(neither, changed / 1000);
+}
+
+}  // namespace
+}  // namespace drr
