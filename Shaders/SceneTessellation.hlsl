@@ -30,7 +30,7 @@ cbuffer TessConstants : register(b1) {
   float4 g_FrustumPlanes[6];  // world space, normalised; inside where dot(plane, p) >= 0
   float4 g_TessEye;           // xyz: the camera (world); w: pixels per world unit at distance 1
   float4 g_TessDetail;        // x: target pixels per edge, y: max factor, z: 1 = cull back faces, w: back-face margin
-  float4 g_Surface;           // x: 0 Phong, 1 displacement; y: relief (object units); z: Phong shape factor; w: unused
+  float4 g_Surface;           // x: 0 Phong, 1 displacement; y: relief (object units below the mesh at height 0); z: Phong shape factor; w: unused
 };
 
 Texture2D<float4> g_Displacement : register(t0);
@@ -178,7 +178,7 @@ VSOut TessDS(PatchFactors factors, float3 uvw : SV_DomainLocation, const OutputP
   if (g_Surface.x > 0.5) {
     // Level 0 everywhere: a point on a shared edge reads the same texel on both sides.
     const float h = g_Displacement.SampleLevel(g_DisplacementSampler, uv, 0).r;
-    pos = q + n * (h * g_Surface.y);
+    pos = q + n * ((h - 1.0) * g_Surface.y);  // white: the mesh surface; black: relief units below
   } else {
     pos = PhongPoint(uvw, q, patch);
   }
