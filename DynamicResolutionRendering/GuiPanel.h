@@ -77,6 +77,7 @@ class GuiPanel {
   void FilterAndControl(Options* o);
   void PortSection(Options* o);
   void UpscaleSection(Options* o);  // port addition (Docs/Upscaling.md)
+  void TessellationSection(Options* o);  // port addition (Docs/Tessellation.md)
   void Text(const GuiView& view);
 
   ImGuiContext* m_ImGui = nullptr;

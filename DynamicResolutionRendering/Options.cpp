@@ -166,6 +166,13 @@ constexpr Spec kSpecs[] = {
          "TAAU: no automatic view mip bias (the original's sampler)"),
     Path("--mip-bias-opt-out", "LIST", &Options::mipBiasOptOut,
          "TAAU: materials (comma-separated) sampled without the view mip bias"),
+    // Tessellation (Docs/Tessellation.md)
+    Flag("--tessellation", &Options::tessellation, true,
+         "screen-space adaptive tessellation of the materials the scene\n"
+         "description marks (tessellate=); factors follow the dynamic viewport"),
+    Number("--tess-pixels-per-edge", "N", &Options::tessPixelsPerEdge, 1, 256,
+           "tessellation detail: target edge length in pixels ({range}, default 8)"),
+    Int("--max-tess-factor", "N", &Options::maxTessFactor, 1, 64, "max tessellation factor ({range}, default 16)"),
 };
 
 constexpr double kMinScale = 0.01;

@@ -70,6 +70,11 @@ struct Options {
   double mipBias = 0.0;                     // added to TAAU's automatic view mip bias
   bool autoMipBias = true;                  // TAAU: texture sampling biased by log2(screen percentage)
   std::string mipBiasOptOut;                // materials (comma-separated names) sampled without it
+  // Screen-space adaptive tessellation (Docs/Tessellation.md): the scene's
+  // tessellate= rules act only with it on.
+  bool tessellation = false;
+  double tessPixelsPerEdge = 8.0;  // "tessellation detail": target on-screen edge length
+  int maxTessFactor = 16;          // "max tessellation factor"
 
   int64_t EffectiveFrames() const { return frames >= 0 ? frames : (headless ? 300 : -1); }
   float MaxScale() const { return superSampling ? 2.0f : 1.0f; }

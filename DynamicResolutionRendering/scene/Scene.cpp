@@ -33,7 +33,10 @@ std::string SceneStats::ToString() const {
            "triangles %llu",
            drawsIssued, drawsCulled, shaderVariantsUsed, texturesLoaded, textureBytes / 1048576.0, vertexBytes / 1048576.0,
            indexBytes / 1048576.0, (unsigned long long)triangles);
-  return b;
+  if (tessellatedDraws == 0) return b;
+  char t[128];
+  snprintf(t, sizeof t, ", tessellated draws %u (patches %llu)", tessellatedDraws, (unsigned long long)patchesSubmitted);
+  return std::string(b) + t;
 }
 
 namespace {
@@ -410,7 +413,7 @@ std::unique_ptr<Scene> Scene::Load(d3dl::Device* device, const std::string& path
   if (!s.ReadEntries(path, single, error)) return nullptr;
   TextureCache cache({}, IsolatedTextureLoader());
   for (auto& e : s.entries)
-    if (!s.LoadEntry(e, cache, error)) return nullptr;
+    if (!s.LoadEntry(e, cache, error) || !s.LoadTessellation(e, error)) return nullptr;
   s.stats.texturesLoaded = uint32_t(cache.LoadedCount());
   if (!s.CreateShaders(error)) return nullptr;
   if (!s.CreateConstantBuffers() || !s.CreateStates()) {
