@@ -97,7 +97,10 @@ float EdgeFactor(float3 a, float3 b) {
   const float len = length(a - b);
   const float dist = max(length(0.5 * (a + b) - g_TessEye.xyz), 1e-3);
   const float pixels = len * g_TessEye.w / dist;
-  return clamp(pixels / g_TessDetail.x, 1.0, g_TessDetail.y);
+  // Rounded, for integer partitioning: the vertex work then falls with the
+  // square of the scale down to factor 1 (fractional_odd would turn 1.2 into
+  // three segments, as many as 2.4 gets).
+  return clamp(round(pixels / g_TessDetail.x), 1.0, g_TessDetail.y);
 }
 
 // Off screen: all three corners, grown by the surface's bound, outside one plane.
@@ -145,12 +148,12 @@ PatchFactors TessPatch(InputPatch<ControlPoint, 3> patch) {
   f.edges[0] = EdgeFactor(p[1], p[2]);
   f.edges[1] = EdgeFactor(p[2], p[0]);
   f.edges[2] = EdgeFactor(p[0], p[1]);
-  f.inside = (f.edges[0] + f.edges[1] + f.edges[2]) / 3.0;
+  f.inside = round((f.edges[0] + f.edges[1] + f.edges[2]) / 3.0);
   return f;
 }
 
 [domain("tri")]
-[partitioning("fractional_odd")]
+[partitioning("integer")]
 [outputtopology("triangle_cw")]
 [outputcontrolpoints(3)]
 [patchconstantfunc("TessPatch")]
