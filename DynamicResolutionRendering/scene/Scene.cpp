@@ -502,7 +502,9 @@ bool Scene::ReloadShaders(const ShaderLibrary& shaders, bool fromSource, std::st
     if (!s.psWanted[v] && !s.ps[v]) continue;
     if (!shaders.Load(VariantFile(v), fromSource, &code[v], error)) return false;
   }
+  if (!s.ReloadTessellation(shaders, fromSource, error)) return false;
   s.shaders = shaders;
+  s.ResetTessellationStages(fromSource);
   // All compiled: swap in (objects are recreated lazily from the new code).
   for (int vi = 0; vi < 4; ++vi) {
     s.vsCode[vi] = std::move(vcode[vi]);

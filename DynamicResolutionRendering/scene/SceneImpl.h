@@ -77,6 +77,7 @@ struct EntryTessellation {
 // without tessellate= rules never creates them.
 struct TessellationStages {
   bool tried = false, ok = false;
+  bool fromSource = false;           // after F4 with recompilation
   ComPtr<d3dl::VertexShader> vs[2];  // by normal map
   ComPtr<d3dl::InputLayout> layout[2];
   ComPtr<d3dl::HullShader> hs[2];
@@ -173,6 +174,8 @@ struct SceneImpl {
   bool BindTessellation(d3dl::DeviceContext* ctx, const SceneRenderParams& p, const Entry& e, const GpuMesh& m,
                         const GpuMaterial& mat, TessMode mode);
   void UnbindTessellation(d3dl::DeviceContext* ctx);
+  bool ReloadTessellation(const ShaderLibrary& lib, bool fromSource, std::string* error);
+  void ResetTessellationStages(bool fromSource);
 
   // SceneDraw.cpp
   void ResetHistory(const glm::mat4& view, const glm::mat4& viewProj);

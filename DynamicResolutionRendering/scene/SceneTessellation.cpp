@@ -84,7 +84,7 @@ bool SceneImpl::PrepareTessellation(const SceneRenderParams& p, const glm::vec4 
   };
   for (int n = 0; n < 2; ++n) {
     const std::string suffix = "_n" + std::to_string(n);
-    if (!shaders.Load("scene_tess_vs" + suffix, false, &code, &err) ||
+    if (!shaders.Load("scene_tess_vs" + suffix, t.fromSource, &code, &err) ||
         FAILED(device->CreateVertexShader(code.data(), code.size() * 4, t.vs[n].ReleaseAndGetAddressOf())))
       return fail("scene_tess_vs" + suffix);
     d3dl::INPUT_ELEMENT_DESC elems[5];
@@ -96,12 +96,12 @@ bool SceneImpl::PrepareTessellation(const SceneRenderParams& p, const glm::vec4 
     if (FAILED(device->CreateInputLayout(elems, n ? 5 : 3, code.data(), code.size() * 4,
                                          t.layout[n].ReleaseAndGetAddressOf())))
       return fail("the input layout of scene_tess_vs" + suffix);
-    if (!shaders.Load("scene_tess_hs" + suffix, false, &code, &err) ||
+    if (!shaders.Load("scene_tess_hs" + suffix, t.fromSource, &code, &err) ||
         FAILED(device->CreateHullShader(code.data(), code.size() * 4, t.hs[n].ReleaseAndGetAddressOf())))
       return fail("scene_tess_hs" + suffix + " (does the adapter support tessellation?)");
     for (int v = 0; v < 2; ++v) {
       const std::string name = "scene_tess_ds" + suffix + "_v" + std::to_string(v);
-      if (!shaders.Load(name, false, &code, &err) ||
+      if (!shaders.Load(name, t.fromSource, &code, &err) ||
           FAILED(device->CreateDomainShader(code.data(), code.size() * 4, t.ds[n * 2 + v].ReleaseAndGetAddressOf())))
         return fail(name);
     }
@@ -121,6 +121,23 @@ bool SceneImpl::PrepareTessellation(const SceneRenderParams& p, const glm::vec4 
     return fail("its constant buffer, sampler or flat height map");
   t.ok = true;
   return true;
+}
+
+// F4: when the stages exist, every tessellation shader must load (compile)
+// before the scene swaps its shaders; the stages are then re-created from the
+// new code at the next tessellated frame.
+bool SceneImpl::ReloadTessellation(const ShaderLibrary& lib, bool fromSource, std::string* error) {
+  if (!tessStages.ok) return true;
+  std::vector<uint32_t> code;
+  for (const char* name : {"scene_tess_vs_n0", "scene_tess_vs_n1", "scene_tess_hs_n0", "scene_tess_hs_n1",
+                           "scene_tess_ds_n0_v0", "scene_tess_ds_n0_v1", "scene_tess_ds_n1_v0", "scene_tess_ds_n1_v1"})
+    if (!lib.Load(name, fromSource, &code, error)) return false;
+  return true;
+}
+
+void SceneImpl::ResetTessellationStages(bool fromSource) {
+  tessStages = TessellationStages{};
+  tessStages.fromSource = fromSource;
 }
 
 TessMode SceneImpl::TessModeFor(const SceneRenderParams& p, const Entry& e, const GpuMesh& m) const {
