@@ -6,8 +6,14 @@
 # the article law in VSync mode with --refresh set to twice the native rate,
 # CTL_FRAMES frames; the settled scale is the median of the last third.
 # Configurations run one after the other, REPEAT times, interleaved.
+# With SWEEP="1.0 0.8 ..." it instead measures the GPU frame at those fixed
+# scales (SWEEP_FRAMES each, median of the last half; ROUNDS rounds, the two
+# configurations interleaved at each scale) and prints where the median curve
+# crosses half its value at the first scale: where the article law settles
+# (Controller.md), without the controller's own noise.
 #
-# usage: scripts/measure-tessellation.sh [build dir] (env: W H PPE MAXF NATIVE_FRAMES CTL_FRAMES REPEAT SCENE)
+# usage: scripts/measure-tessellation.sh [build dir]
+#        (env: W H PPE MAXF NATIVE_FRAMES CTL_FRAMES REPEAT SCENE SWEEP SWEEP_FRAMES ROUNDS)
 set -euo pipefail
 BUILD=${1:-build}
 EXE=$BUILD/DynamicResolutionRendering/DynamicResolutionRendering
@@ -37,6 +43,31 @@ PY
 }
 
 echo "lavapipe ${W}x${H}, small Arena, camera 1, article law; tessellation: pixels per edge $PPE, max factor $MAXF"
+if [ -n "${SWEEP:-}" ]; then
+  for r in $(seq "${ROUNDS:-2}"); do
+    for s in $SWEEP; do
+      for cfg in off on; do
+        $EXE $COMMON --frames "${SWEEP_FRAMES:-16}" --scale "$s" ${FLAGS[$cfg]} --report "$TMP/s.json" >/dev/null
+        echo "$cfg $s $(native_ms "$TMP/s.json")" | tee -a "$TMP/sweep.txt"
+      done
+    done
+  done
+  python3 - "$TMP/sweep.txt" <<'PY'
+import statistics as st, sys, collections
+d = collections.defaultdict(list)
+for line in open(sys.argv[1]):
+    cfg, s, ms = line.split(); d[(cfg, float(s))].append(float(ms))
+for cfg in ("off", "on"):
+    pts = sorted((s, st.median(v)) for (c, s), v in d.items() if c == cfg)
+    top = pts[-1][1]; half = top / 2
+    print(cfg + ": " + ", ".join("%.2f: %.1f ms" % p for p in pts))
+    cross = None
+    for (s0, t0), (s1, t1) in zip(pts, pts[1:]):
+        if t0 <= half <= t1 and t1 > t0: cross = s0 + (half - t0) / (t1 - t0) * (s1 - s0)
+    print("  t(%.2f)/2 = %.1f ms is crossed at scale %s" % (pts[-1][0], half, "%.3f" % cross if cross else "below %.2f" % pts[0][0]))
+PY
+  exit 0
+fi
 for r in $(seq "$REPEAT"); do
   for cfg in off on; do
     $EXE $COMMON --frames "$NATIVE_FRAMES" --no-dynamic-resolution ${FLAGS[$cfg]} --report "$TMP/native.json" >/dev/null
