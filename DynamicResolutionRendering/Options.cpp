@@ -419,7 +419,9 @@ std::string OptionsToJson(const Options& o) {
     << ", \"validation\": " << (o.validation ? "true" : "false")
     << ", \"fixes\": " << JsonQuote(FixNames(o.fixes))
     << ", \"secondary_screen_percentage\": " << o.secondaryScreenPercentage << ", \"mip_bias\": " << o.mipBias
-    << ", \"auto_mip_bias\": " << (o.autoMipBias ? "true" : "false") << "}";
+    << ", \"auto_mip_bias\": " << (o.autoMipBias ? "true" : "false")
+    << ", \"tessellation\": " << (o.tessellation ? "true" : "false")
+    << ", \"tess_pixels_per_edge\": " << o.tessPixelsPerEdge << ", \"max_tess_factor\": " << o.maxTessFactor << "}";
   return j.str();
 }
 
