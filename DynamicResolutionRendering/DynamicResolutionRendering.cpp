@@ -402,6 +402,9 @@ SceneRenderParams Sample::SceneParams() const {
   p.showCameras = m_Options.showCameras;
   p.shadingEye = m_Cameras.ShadingEye(m_Options.fixes.Has(Fix::CameraEye));
   p.frustumCulling = m_Options.fixes.Has(Fix::FrustumCull);
+  p.tessellation.enabled = m_Options.tessellation;  // the viewport height is set per frame (OnFrameRender)
+  p.tessellation.pixelsPerEdge = float(m_Options.tessPixelsPerEdge);
+  p.tessellation.maxFactor = float(m_Options.maxTessFactor);
   return p;
 }
 
@@ -422,6 +425,7 @@ void Sample::OnFrameRender(double elapsed) {
   const SceneTargets scene = ChooseSceneTargets(m_Targets, setup, bb);
   SceneRenderParams params = SceneParams();
   params.writeVelocity = scene.count == 2;
+  params.tessellation.viewportHeight = setup.sceneViewport.Height;  // the dynamic viewport: factors follow the scale
 
   timers.frame.Start(ctx);
   m_Passes.Clear(ctx, setup, m_Targets, scene);

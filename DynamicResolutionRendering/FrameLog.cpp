@@ -191,7 +191,9 @@ bool FrameLog::WriteReport(const std::string& path, const ReportInfo& info, std:
   if (info.scene) {
     const SceneStats st = info.scene->Stats();
     j.BeginObject("scene_stats").Inline().Value("draws_issued", st.drawsIssued).Value("draws_culled", st.drawsCulled);
-    j.Value("triangles", st.triangles).Value("texture_bytes", st.textureBytes).EndObject();
+    j.Value("triangles", st.triangles).Value("texture_bytes", st.textureBytes);
+    if (st.tessellatedDraws) j.Value("tessellated_draws", st.tessellatedDraws).Value("patches_submitted", st.patchesSubmitted);
+    j.EndObject();
   }
   j.BeginArray("warnings");
   if (info.warnings)

@@ -37,7 +37,11 @@ bool SettingsDiffer(const Options& a, const Options& b) {
          a.secondaryScreenPercentage != b.secondaryScreenPercentage || a.mipBias != b.mipBias ||
          a.autoMipBias != b.autoMipBias || a.taaMipBias != b.taaMipBias ||
          // Deferred shading (port addition)
-         a.renderer != b.renderer || a.ssao != b.ssao || a.localLights != b.localLights || a.shadowScale != b.shadowScale || a.shadowLaw != b.shadowLaw;
+         a.renderer != b.renderer || a.ssao != b.ssao || a.localLights != b.localLights || a.shadowScale != b.shadowScale ||
+         a.shadowLaw != b.shadowLaw ||
+         // Tessellation (port addition)
+         a.tessellation != b.tessellation || a.tessPixelsPerEdge != b.tessPixelsPerEdge ||
+         a.maxTessFactor != b.maxTessFactor;
 }
 
 int OptionPercent(float scale) { return int(std::lround(100.0 * double(scale))); }
@@ -158,6 +162,20 @@ void GuiPanel::DeferredSection(Options* o) {
   ImGui::EndDisabled();
 }
 
+// Tessellation (Docs/Tessellation.md): the seed's "Tessellation Detail" and
+// "Max Tessellation Factor".
+void GuiPanel::TessellationSection(Options* o) {
+  if (!ImGui::CollapsingHeader("Tessellation (port)")) return;
+  ImGui::Checkbox("Adaptive tessellation", &o->tessellation);
+  ImGui::BeginDisabled(!o->tessellation);
+  float pixels = float(o->tessPixelsPerEdge);
+  ImGui::SetNextItemWidth(kComboWidth);
+  if (ImGui::SliderFloat("Pixels per edge", &pixels, 1.0f, 64.0f, "%.1f")) o->tessPixelsPerEdge = pixels;
+  ImGui::SetNextItemWidth(kComboWidth);
+  ImGui::SliderInt("Max factor", &o->maxTessFactor, 1, 64);
+  ImGui::EndDisabled();
+}
+
 void GuiPanel::Buttons() {
   // The original's "Change device (F3)" opens DXUT's device dialog, which the port does not have.
   const ImVec2 size(kPanelWidth - 2.0f * ImGui::GetStyle().WindowPadding.x, 0.0f);
@@ -239,6 +257,7 @@ void GuiPanel::PortSection(Options* o) {
   ImGui::EndDisabled();
   UpscaleSection(o);
   DeferredSection(o);
+  TessellationSection(o);
   if (ImGui::CollapsingHeader("Port fixes")) {
     for (const FixToggle& t : FixToggles(o->fixes)) {
       bool on = t.on;

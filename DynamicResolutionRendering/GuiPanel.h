@@ -78,6 +78,7 @@ class GuiPanel {
   void PortSection(Options* o);
   void UpscaleSection(Options* o);  // port addition (Docs/Upscaling.md)
   void DeferredSection(Options* o);  // port addition (Docs/Deferred.md)
+  void TessellationSection(Options* o);  // port addition (Docs/Tessellation.md)
   void Text(const GuiView& view);
 
   ImGuiContext* m_ImGui = nullptr;

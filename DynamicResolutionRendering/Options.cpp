@@ -183,6 +183,13 @@ constexpr Spec kSpecs[] = {
            "the dynamic resolution scale; fixed: the shadow scale alone)"),
     Int("--shadow-map-size", "N", &Options::shadowMapSize, 64, 4096,
         "deferred: allocated spot shadow-map size in texels ({range},\ndefault 1024)"),
+    // Tessellation (Docs/Tessellation.md)
+    Flag("--tessellation", &Options::tessellation, true,
+         "screen-space adaptive tessellation of the materials the scene\n"
+         "description marks (tessellate=); factors follow the dynamic viewport"),
+    Number("--tess-pixels-per-edge", "N", &Options::tessPixelsPerEdge, 1, 256,
+           "tessellation detail: target edge length in pixels ({range}, default 8)"),
+    Int("--max-tess-factor", "N", &Options::maxTessFactor, 1, 64, "max tessellation factor ({range}, default 16)"),
 };
 
 constexpr double kMinScale = 0.01;
@@ -433,7 +440,9 @@ std::string OptionsToJson(const Options& o) {
     << ", \"renderer\": \"" << RendererOption(o.renderer) << "\", \"ssao\": " << (o.ssao ? "true" : "false")
     << ", \"shadow_scale\": " << o.shadowScale << ", \"shadow_law\": \"" << ShadowLawOption(o.shadowLaw)
     << "\", \"shadow_map_size\": " << o.shadowMapSize
-    << ", \"taa_mip_bias\": " << (o.taaMipBias ? "true" : "false") << "}";
+    << ", \"taa_mip_bias\": " << (o.taaMipBias ? "true" : "false")
+    << ", \"tessellation\": " << (o.tessellation ? "true" : "false")
+    << ", \"tess_pixels_per_edge\": " << o.tessPixelsPerEdge << ", \"max_tess_factor\": " << o.maxTessFactor << "}";
   return j.str();
 }
 

@@ -79,6 +79,11 @@ struct Options {
   double shadowScale = 1.0;                 // spot shadow maps: fraction of --shadow-map-size
   ShadowLaw shadowLaw = ShadowLaw::Main;    // how the shadow scale follows the main scale
   uint32_t shadowMapSize = 1024;            // the shadow maps' allocated size (texels, square)
+  // Screen-space adaptive tessellation (Docs/Tessellation.md): the scene's
+  // tessellate= rules act only with it on.
+  bool tessellation = false;
+  double tessPixelsPerEdge = 8.0;  // "tessellation detail": target on-screen edge length
+  int maxTessFactor = 16;          // "max tessellation factor"
 
   int64_t EffectiveFrames() const { return frames >= 0 ? frames : (headless ? 300 : -1); }
   float MaxScale() const { return superSampling ? 2.0f : 1.0f; }

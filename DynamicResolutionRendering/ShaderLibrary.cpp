@@ -48,7 +48,10 @@ bool ShaderLibrary::Load(const std::string& name, bool fromSource, std::vector<u
     d3dl::ShaderCompileDesc d;
     d.SourcePath = m_SourceDir + "/" + e.source;
     d.EntryPoint = e.entry;
-    d.Stage = e.stage == "vert" ? d3dl::ShaderStage::Vertex : d3dl::ShaderStage::Pixel;
+    if (!d3dl::ShaderStageFromGlslangName(e.stage, &d.Stage)) {  // vert, frag, tesc, tese (scene tessellation)
+      *error = e.source + " (" + e.entry + "): unknown stage '" + e.stage + "' in shaders.txt";
+      return false;
+    }
     for (const std::string& def : e.defines) {
       const size_t eq = def.find('=');
       d.Defines.emplace_back(def.substr(0, eq), eq == std::string::npos ? "1" : def.substr(eq + 1));

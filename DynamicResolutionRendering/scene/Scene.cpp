@@ -33,7 +33,10 @@ std::string SceneStats::ToString() const {
            "triangles %llu",
            drawsIssued, drawsCulled, shaderVariantsUsed, texturesLoaded, textureBytes / 1048576.0, vertexBytes / 1048576.0,
            indexBytes / 1048576.0, (unsigned long long)triangles);
-  return b;
+  if (tessellatedDraws == 0) return b;
+  char t[128];
+  snprintf(t, sizeof t, ", tessellated draws %u (patches %llu)", tessellatedDraws, (unsigned long long)patchesSubmitted);
+  return std::string(b) + t;
 }
 
 namespace {
@@ -416,7 +419,7 @@ std::unique_ptr<Scene> Scene::Load(d3dl::Device* device, const std::string& path
   if (!s.ReadEntries(path, single, error)) return nullptr;
   TextureCache cache({}, IsolatedTextureLoader());
   for (auto& e : s.entries)
-    if (!s.LoadEntry(e, cache, error)) return nullptr;
+    if (!s.LoadEntry(e, cache, error) || !s.LoadTessellation(e, error)) return nullptr;
   s.stats.texturesLoaded = uint32_t(cache.LoadedCount());
   if (!s.CreateShaders(error)) return nullptr;
   if (!s.CreateConstantBuffers() || !s.CreateStates()) {
@@ -507,7 +510,9 @@ bool Scene::ReloadShaders(const ShaderLibrary& shaders, bool fromSource, std::st
     if (!shaders.Load(VariantFile(v), fromSource, &code[v], error)) return false;
   }
   if (!s.ReloadDeferredShaders(shaders, fromSource, error)) return false;
+  if (!s.ReloadTessellation(shaders, fromSource, error)) return false;
   s.shaders = shaders;
+  s.ResetTessellationStages(fromSource);
   // All compiled: swap in (objects are recreated lazily from the new code).
   for (int vi = 0; vi < 4; ++vi) {
     s.vsCode[vi] = std::move(vcode[vi]);

@@ -38,6 +38,15 @@ struct CameraPose {
   float farZ = 400000.f;
 };
 
+// Screen-space adaptive tessellation (Docs/Tessellation.md): the entries'
+// tessellate= rules act only when enabled.
+struct TessellationParams {
+  bool enabled = false;
+  float pixelsPerEdge = 8.f;   // target on-screen edge length ("tessellation detail")
+  float maxFactor = 16.f;      // "max tessellation factor", 1..64
+  float viewportHeight = 0.f;  // of the dynamic (scene) viewport in pixels; the factors follow it
+};
+
 struct SceneRenderParams {
   glm::mat4 view{1.f};
   glm::mat4 proj{1.f};          // glm::perspectiveRH_ZO: right-handed world, clip depth 0..1, +Y up (D3D clip)
@@ -65,6 +74,7 @@ struct SceneRenderParams {
   // (diffuse, specular, normal, then velocity when writeVelocity) instead of
   // colour (+ velocity); the materials are written, not lit.
   bool gbuffer = false;
+  TessellationParams tessellation;
 };
 
 // The original's lighting constants (its RenderScene values): LIT entries'
@@ -80,6 +90,8 @@ struct SceneStats {
   uint32_t drawsIssued = 0, drawsCulled = 0, shaderVariantsUsed = 0, texturesLoaded = 0;
   uint64_t textureBytes = 0, vertexBytes = 0, indexBytes = 0;
   uint64_t triangles = 0;  // of the whole scene (drawn or not)
+  uint32_t tessellatedDraws = 0;  // draws through the hull/domain shaders (--tessellation)
+  uint64_t patchesSubmitted = 0;  // their input triangles (the hull shader culls some)
   std::string ToString() const;
 };
 

@@ -108,8 +108,13 @@ bool ApplyOption(SceneEntry& e, const std::string& key, const std::string& value
   } else if (key == "loop") {
     if (!ParseFloats(value, 1, f) || f[0] <= 0.f) { *why = "loop= expects a positive number of seconds"; return false; }
     e.loopSeconds = f[0];
+  } else if (bool handled = false; !ApplyTessellationOption(e, key, value, &handled, why)) {
+    return false;
+  } else if (handled) {
+    return true;
   } else {
-    *why = "unknown option '" + Printable(key) + "' (expected name=, translate=, rotate=, scale=, hidden=, loop=)";
+    *why = "unknown option '" + Printable(key) +
+           "' (expected name=, translate=, rotate=, scale=, hidden=, loop=, tessellate=, displacement=, relief=)";
     return false;
   }
   return true;
@@ -255,6 +260,8 @@ bool ReadEntry(const std::vector<Token>& tokens, size_t* k, SceneEntry* e, int* 
     if (!ApplyOption(*e, o.text.substr(0, eq), o.text.substr(eq + 1), &message)) return Fail(why, o.line, message);
     ++*k;
   }
+  std::string message;
+  if (!CheckTessellationEntry(*e, &message)) return Fail(why, e->line, message);
   return true;
 }
 
@@ -268,10 +275,14 @@ bool ResolveFiles(const std::string& folder, const ParseOptions& opts, int animL
   };
   e->meshFile = resolve(e->meshPath);
   if (!e->animPath.empty()) e->animFile = resolve(e->animPath);
+  if (!e->displacementPath.empty()) e->displacementFile = resolve(e->displacementPath);
   if (!opts.checkFiles) return true;
   std::error_code ec;
   if (!fs::is_regular_file(e->meshFile, ec))
     return Fail(why, e->line, "mesh file '" + Printable(e->meshPath, 200) + "' not found (looked for " + e->meshFile + ")");
+  if (!e->displacementPath.empty() && !fs::is_regular_file(e->displacementFile, ec))
+    return Fail(why, e->line, "displacement map '" + Printable(e->displacementPath, 200) + "' not found (looked for " +
+                                  e->displacementFile + ")");
   if (!e->animFile.empty() && !fs::is_regular_file(e->animFile, ec))
     return Fail(why, animLine, "animation file '" + Printable(e->animPath, 200) + "' not found (looked for " + e->animFile +
                                    "; write NO_ANIM for none)");

@@ -18,6 +18,9 @@
 //   LIGHT SPOT  position=x,y,z direction=x,y,z color=r,g,b radius=R angle=DEG [shadow=0|1]
 // radius > 0 (the light reaches zero there), color components in [0, 64],
 // angle (the cone's half angle) in (0, 89] degrees, direction not zero.
+//   tessellate=phong|displace or tessellate=<material>:<mode>[,<material>:<mode>...]
+//   displacement=<height map, relative path>  relief=<units>   (with a displace mode)
+//   (acted on only with the sample's --tessellation; Docs/Tessellation.md)
 // Errors are reported as "file:line: what was found, what was expected".
 #pragma once
 
@@ -29,6 +32,14 @@
 namespace drr {
 
 enum class EntryType { Lit, Unlit, Camera, Decal };
+
+// Adaptive tessellation of an entry's meshes (Docs/Tessellation.md).
+enum class TessMode { None, Phong, Displace };
+const char* TessModeName(TessMode m);
+struct TessRule {
+  std::string material;  // the model's material name; empty: every material of the entry
+  TessMode mode = TessMode::None;
+};
 
 const char* EntryTypeName(EntryType t);
 
@@ -46,6 +57,12 @@ struct SceneEntry {
   glm::vec3 scale{1.f};
   bool hidden = false;
   double loopSeconds = 0.0;   // 0 = use the animation's duration
+  // Tessellation (SceneDescriptionTess.cpp): rules in the order written, the
+  // height map of the displace rules (as written, and resolved) and its relief.
+  std::vector<TessRule> tessellate;
+  std::string displacementPath, displacementFile;
+  float relief = 0.f;
+  TessMode TessModeOf(const std::string& material) const;  // the first rule naming it, or the all-rule
   glm::mat4 Transform() const;
 };
 
@@ -83,6 +100,13 @@ struct ParseOptions {
   size_t maxLineLength = 4096;   // longer lines are an error
   size_t maxEntries = 100000;
 };
+
+// The tessellation options (tessellate=, displacement=, relief=): false with
+// *why when key is one of them and its value is wrong; *handled false for any other key.
+bool ApplyTessellationOption(SceneEntry& e, const std::string& key, const std::string& value, bool* handled,
+                             std::string* why);
+// After an entry's options: a displace rule needs displacement= and relief=, and those need one.
+bool CheckTessellationEntry(const SceneEntry& e, std::string* why);
 
 // Parses text as if it were the content of 'file' (used for messages and to
 // resolve relative paths). Returns false with error = "file:line: ...".

@@ -91,7 +91,8 @@ void SceneImpl::DrawItemNow(d3dl::DeviceContext* ctx, const SceneRenderParams& p
   d3dl::PixelShader* shader = p.gbuffer ? GBufferVariant(variant) : Variant(variant);
   d3dl::VertexShader* vshader = nullptr;
   d3dl::InputLayout* il = nullptr;
-  if (!shader || !VertexStage(variant, &vshader, &il)) return;
+  const TessMode tess = TessModeFor(p, e, m);  // None unless --tessellation and a rule (SceneTessellation.cpp)
+  if (!shader || (tess == TessMode::None && !VertexStage(variant, &vshader, &il))) return;
   d3dl::MAPPED_SUBRESOURCE map;
   if (FAILED(ctx->Map(objectCB.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &map))) return;
   // Both matrices jittered alike, so the jitter never shows as velocity.
@@ -99,8 +100,12 @@ void SceneImpl::DrawItemNow(d3dl::DeviceContext* ctx, const SceneRenderParams& p
                            glm::vec4(eye, 1.f)};
   std::memcpy(map.pData, &oc, sizeof oc);
   ctx->Unmap(objectCB.Get(), 0);
-  ctx->IASetInputLayout(il);
-  ctx->VSSetShader(vshader);
+  if (tess == TessMode::None) {
+    ctx->IASetInputLayout(il);
+    ctx->VSSetShader(vshader);
+  } else if (!BindTessellation(ctx, p, e, m, mat, tess)) {
+    return;
+  }
   ctx->PSSetShader(shader);
   d3dl::ShaderResourceView* views[3] = {mat.diffuse.Get(), mat.normal.Get(), mat.specular.Get()};
   ctx->PSSetShaderResources(0, 3, views);
@@ -114,6 +119,7 @@ void SceneImpl::DrawItemNow(d3dl::DeviceContext* ctx, const SceneRenderParams& p
   ctx->IASetVertexBuffers(0, 1, &vb, &stride, &offset);
   ctx->IASetIndexBuffer(m.ib.Get(), m.indexFormat, 0);
   ctx->DrawIndexed(m.indexCount, 0, 0);
+  if (tess != TessMode::None) UnbindTessellation(ctx);
   ++stats.drawsIssued;
 }
 
@@ -168,6 +174,8 @@ d3dl::SamplerState* SceneImpl::MaterialSampler(const SceneRenderParams& p, const
 void Scene::Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p) {
   SceneImpl& s = *impl_;
   s.stats.drawsIssued = s.stats.drawsCulled = 0;
+  s.stats.tessellatedDraws = 0;
+  s.stats.patchesSubmitted = 0;
   if (!ctx) return;
   const glm::mat4 viewProj = p.proj * p.view;
   if (p.paused && s.history.started) {
@@ -180,6 +188,7 @@ void Scene::Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p) {
   const glm::vec3 eye = p.shadingEye ? *p.shadingEye : glm::vec3(glm::inverse(s.history.view)[3]);
   glm::vec4 planes[6];
   FrustumPlanes(p.proj * s.history.view, planes);
+  s.PrepareTessellation(p, planes);
   ctx->BeginEvent("Scene");
   ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLELIST);
   d3dl::Buffer* cb = s.objectCB.Get();

@@ -66,8 +66,32 @@ struct DrawItem {
   glm::mat4 wvp[3] = {glm::mat4(1.f), glm::mat4(1.f), glm::mat4(1.f)};  // un-jittered
 };
 
+// Tessellation of an entry (SceneTessellation.cpp): the mode of each of its
+// materials (from the description's rules) and the displace rules' height map.
+struct EntryTessellation {
+  std::vector<TessMode> materialMode;
+  ComPtr<d3dl::ShaderResourceView> displacement;
+};
+
+// The tessellation stages, created at the first tessellated frame; a scene
+// without tessellate= rules never creates them.
+struct TessellationStages {
+  bool tried = false, ok = false;
+  bool fromSource = false;           // after F4 with recompilation
+  ComPtr<d3dl::VertexShader> vs[2];  // by normal map
+  ComPtr<d3dl::InputLayout> layout[2];
+  ComPtr<d3dl::HullShader> hs[2];
+  ComPtr<d3dl::DomainShader> ds[4];  // normal map * 2 + velocity
+  ComPtr<d3dl::Buffer> cb;
+  ComPtr<d3dl::SamplerState> sampler;
+  ComPtr<d3dl::ShaderResourceView> flatHeight;  // bound for Phong draws (the DS declares t0)
+  glm::vec4 planes[6];                          // this frame's frustum (world)
+  glm::vec3 eye{0.f};
+};
+
 struct Entry {
   SceneEntry desc;
+  EntryTessellation tess;
   ModelData model;
   glm::mat4 transform{1.f};
   std::vector<GpuMesh> meshes;
@@ -156,6 +180,16 @@ struct SceneImpl {
   d3dl::BlendState* DecalBlend(bool gbuffer);
   bool CreateShadowStage();
   bool ReloadDeferredShaders(const ShaderLibrary& lib, bool fromSource, std::string* error);
+  // SceneTessellation.cpp
+  TessellationStages tessStages;
+  bool LoadTessellation(Entry& e, std::string* error);
+  bool PrepareTessellation(const SceneRenderParams& p, const glm::vec4 planes[6]);
+  TessMode TessModeFor(const SceneRenderParams& p, const Entry& e, const GpuMesh& m) const;
+  bool BindTessellation(d3dl::DeviceContext* ctx, const SceneRenderParams& p, const Entry& e, const GpuMesh& m,
+                        const GpuMaterial& mat, TessMode mode);
+  void UnbindTessellation(d3dl::DeviceContext* ctx);
+  bool ReloadTessellation(const ShaderLibrary& lib, bool fromSource, std::string* error);
+  void ResetTessellationStages(bool fromSource);
 
   // SceneDraw.cpp
   void ResetHistory(const glm::mat4& view, const glm::mat4& viewProj);

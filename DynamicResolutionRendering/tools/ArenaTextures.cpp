@@ -220,4 +220,22 @@ Image MakeDecal(int n, uint32_t seed) {  // 2x2 atlas of scorch marks / cracks /
   return img;
 }
 
+
+// The floor's displacement map (grey, 0 in the mortar, up to 1 on a stone),
+// for --tessellation. Its pattern repeats every half texture: the floor's
+// cells are 2.5 texture repeats wide and each starts at texture coordinate 0,
+// so a period of 0.5 gives the same height on both sides of a cell border
+// (no crack). Its stones fall on MakeStone's 4x4 grid.
+Image MakeFloorHeight(int n, uint32_t seed) {
+  Image img = Blank(n, n);
+  ForEachTexel(n, [&](int x, int y, float u, float v) {
+    const float u2 = std::fmod(2.f * u, 1.f), v2 = std::fmod(2.f * v, 1.f);
+    int id;
+    const float blk = BlockPattern(u2, v2, 2, 2, false, 0.024f, &id);
+    const float dome = Fbm(u2, v2, 4, 4, seed);
+    PutGray(img, x, y, blk * (0.55f + 0.45f * dome));
+  });
+  return img;
+}
+
 }  // namespace arena

@@ -28,6 +28,7 @@ MaterialTextures MakeMarble(int n, uint32_t seed);
 MaterialTextures MakeRock(int n, uint32_t seed);    // normal map, no specular map
 MaterialTextures MakeBronze(int n, uint32_t seed);  // specular map, no normal map
 Image MakeSky(int n, uint32_t seed);    // n x n/2: u = azimuth, v = 0 zenith .. 1 below horizon
-Image MakeDecal(int n, uint32_t seed);  // 2x2 atlas of scorch marks / cracks / glyphs, with alpha
+Image MakeDecal(int n, uint32_t seed);
+Image MakeFloorHeight(int n, uint32_t seed);  // the floor's displacement map (Docs/Tessellation.md)  // 2x2 atlas of scorch marks / cracks / glyphs, with alpha
 
 }  // namespace arena

@@ -225,7 +225,7 @@ TEST(SampleOptions, HelpAndParserShareOneTable) {
       EXPECT_EQ(m.find("unknown option"), std::string::npos) << word << ": " << m;
     }
   }
-  EXPECT_EQ(shown, 51);  // every option of the sample once (-h is --help's other name)
+  EXPECT_EQ(shown, 54);  // every option of the sample once (-h is --help's other name)
   for (const FixInfo& f : FixTable()) EXPECT_NE(help.find(std::string("  ") + f.name + " "), std::string::npos);
   for (int f = 0; f < static_cast<int>(Filter::Count); ++f)
     EXPECT_NE(help.find(FilterOption(static_cast<Filter>(f))), std::string::npos);
@@ -385,4 +385,24 @@ TEST(SampleOptions, DeferredRenderer) {
   ASSERT_EQ(Parse({"--help"}, &o, &m), ParseStatus::Help);
   EXPECT_NE(m.find("--renderer NAME"), std::string::npos);
   EXPECT_NE(m.find("forward|deferred (default forward"), std::string::npos) << m;
+}
+
+// Tessellation (Docs/Tessellation.md): off by default, the two settings
+// range-checked with the value named.
+TEST(SampleOptions, TessellationSettings) {
+  Options o;
+  std::string m;
+  ASSERT_EQ(Parse({}, &o, &m), ParseStatus::Ok);
+  EXPECT_FALSE(o.tessellation);
+  EXPECT_EQ(o.tessPixelsPerEdge, 8.0);
+  EXPECT_EQ(o.maxTessFactor, 16);
+  ASSERT_EQ(Parse({"--tessellation", "--tess-pixels-per-edge", "2.5", "--max-tess-factor=64"}, &o, &m), ParseStatus::Ok) << m;
+  EXPECT_TRUE(o.tessellation);
+  EXPECT_EQ(o.tessPixelsPerEdge, 2.5);
+  EXPECT_EQ(o.maxTessFactor, 64);
+  EXPECT_EQ(Parse({"--max-tess-factor", "65"}, &o, &m), ParseStatus::Error);
+  EXPECT_NE(m.find("--max-tess-factor"), std::string::npos) << m;
+  EXPECT_NE(m.find("65"), std::string::npos) << m;
+  EXPECT_EQ(Parse({"--tess-pixels-per-edge", "0"}, &o, &m), ParseStatus::Error);
+  EXPECT_NE(m.find("--tess-pixels-per-edge"), std::string::npos) << m;
 }

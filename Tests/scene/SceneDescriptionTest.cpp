@@ -85,6 +85,15 @@ TEST(SceneDescription, MalformedFilesNameFileLineAndExpectation) {
       {"\"a.obj NO_ANIM LIT\n", "test.txt:1: unterminated quoted path"},
       {"", "test.txt: no entries"},
       {"# only a comment\n\n", "test.txt: no entries"},
+      // Tessellation (Docs/Tessellation.md)
+      {"a.obj NO_ANIM LIT\nb.obj NO_ANIM LIT tessellate=smooth\n", "test.txt:2: tessellate= has unknown mode 'smooth'"},
+      {"a.obj NO_ANIM LIT tessellate=:phong\n", "test.txt:1: tessellate= has an empty material name"},
+      {"a.obj NO_ANIM LIT tessellate=\n", "test.txt:1: tessellate= needs a value"},
+      {"a.obj NO_ANIM LIT tessellate=displace\n", "test.txt:1: tessellate=...displace needs displacement=<height map> and relief=<units>"},
+      {"a.obj NO_ANIM LIT tessellate=displace displacement=h.png\n", "test.txt:1: tessellate=...displace needs"},
+      {"a.obj NO_ANIM LIT tessellate=phong relief=3\n", "test.txt:1: displacement= and relief= act only with"},
+      {"a.obj NO_ANIM LIT tessellate=displace displacement=h.png relief=-2\n", "test.txt:1: relief= expects a positive number"},
+      {"a.obj NO_ANIM LIT tessellate=displace displacement=h.png relief=nan\n", "test.txt:1: relief= expects"},
   };
   for (const auto& c : cases) {
     SceneDescription d;
@@ -199,4 +208,35 @@ TEST(SceneDescription, LightLimits) {
   for (size_t i = 0; i < kMaxSceneLights + 1; ++i) text += "LIGHT POINT position=0,0,0 radius=1\n";
   EXPECT_FALSE(Parse(text, &d, &err));
   EXPECT_NE(err.find("test.txt:34: too many lights (at most 32)"), std::string::npos) << err;
+}
+
+TEST(SceneDescription, TessellationRulesPerMaterial) {
+  SceneDescription d;
+  std::string err;
+  ASSERT_TRUE(Parse("arena.gltf NO_ANIM LIT tessellate=Floor:displace,Rock:phong displacement=textures/h.png relief=12\n"
+                    "bell.gltf bell.gltf LIT tessellate=phong\nsky.gltf NO_ANIM UNLIT\n",
+                    &d, &err))
+      << err;
+  ASSERT_EQ(d.entries.size(), 3u);
+  const SceneEntry& arena = d.entries[0];
+  EXPECT_EQ(arena.TessModeOf("Floor"), TessMode::Displace);
+  EXPECT_EQ(arena.TessModeOf("Rock"), TessMode::Phong);
+  EXPECT_EQ(arena.TessModeOf("Brick"), TessMode::None);
+  EXPECT_FLOAT_EQ(arena.relief, 12.f);
+  EXPECT_EQ(arena.displacementFile, "/scenes/textures/h.png");
+  EXPECT_EQ(d.entries[1].TessModeOf("Bronze"), TessMode::Phong);
+  EXPECT_EQ(d.entries[2].TessModeOf("Sky"), TessMode::None);
+}
+
+TEST(SceneDescription, MissingDisplacementMapNamesFileAndLine) {
+  fs::path dir = fs::temp_directory_path() / "drr_scene_desc_tess";
+  fs::create_directories(dir);
+  std::ofstream(dir / "a.obj") << "v 0 0 0\n";
+  SceneDescription d;
+  std::string err;
+  ParseOptions o;
+  EXPECT_FALSE(ParseSceneDescription("a.obj NO_ANIM LIT\na.obj NO_ANIM LIT tessellate=displace displacement=none.png relief=1\n",
+                                     (dir / "s.txt").string(), o, &d, &err));
+  EXPECT_NE(err.find("s.txt:2: displacement map 'none.png' not found"), std::string::npos) << err;
+  fs::remove_all(dir);
 }
