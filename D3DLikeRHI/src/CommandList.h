@@ -6,10 +6,12 @@
 // are not known while recording: each resource's first use in the list is
 // kept as its entry use, and its tracked state at the end as its exit state;
 // ExecuteCommandList transitions the resource to the entry use and then makes
-// the exit state current.
+// the exit state current. A released list's recording goes back to its
+// context's ListRecycler and is reused once the GPU is done with it.
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -69,9 +71,41 @@ struct ListRecording {
   RingAlloc lastSlice;
 };
 
+// The recordings of one deferred context, kept for reuse (ListRecycler.cpp):
+// a released list's command pool and secondary buffer, descriptor pools, ring
+// chunks and container capacity serve a later list of the same context once
+// the frame that last executed it has completed, so recording a list
+// allocates nothing from Vulkan and touches warm memory. Shared by the
+// context and its lists (a list may outlive its context); the mutex is taken
+// once per list, never per command.
+class ListRecycler {
+ public:
+  explicit ListRecycler(DeviceImpl* dev) : dev_(dev) {}
+  ~ListRecycler();
+  // A reset recording whose last execution has completed, else a new one.
+  std::unique_ptr<ListRecording> Take();
+  // `rec`, whose references are released, may serve again once frame
+  // `lastExecuted` has completed (0: never executed). Destroyed instead when
+  // the context is gone or enough recordings are parked.
+  void Give(std::unique_ptr<ListRecording> rec, uint64_t lastExecuted);
+  void Close();  // the context is destroyed
+
+ private:
+  struct Parked {
+    std::unique_ptr<ListRecording> rec;
+    uint64_t lastExecuted;
+  };
+  std::unique_ptr<ListRecording> Create();
+  void Reset(ListRecording& rec);
+  DeviceImpl* dev_;
+  std::mutex mutex_;
+  std::vector<Parked> parked_;
+  bool closed_ = false;
+};
+
 class CommandListImpl final : public Child<CommandList> {
  public:
-  CommandListImpl(DeviceImpl* d, std::unique_ptr<ListRecording> rec);
+  CommandListImpl(DeviceImpl* d, std::unique_ptr<ListRecording> rec, std::shared_ptr<ListRecycler> recycler);
   ~CommandListImpl() override;
   UINT GetContextFlags() override { return 0; }
   ListRecording& rec() { return *rec_; }
@@ -79,8 +113,11 @@ class CommandListImpl final : public Child<CommandList> {
 
  private:
   std::unique_ptr<ListRecording> rec_;
+  std::shared_ptr<ListRecycler> recycler_;
 };
 
+// Drops the references a recording's commands hold.
+void ReleaseListReferences(ListRecording& rec);
 // Releases the recording's references and hands its Vulkan objects to the
 // deferred destruction (after the fence of the frame being recorded).
 void DestroyRecording(DeviceImpl* dev, ListRecording& rec);

@@ -354,6 +354,7 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   const bool deferred_;
   std::atomic<UINT> deferredRefs_{1};
   std::unique_ptr<ListRecording> rec_;
+  std::shared_ptr<ListRecycler> recycler_;  // this context's recordings for reuse (ListRecycler.cpp)
 };
 
 // Pipeline statistics queries (QueryStatistics.cpp): the query's pool, and

@@ -38,15 +38,25 @@ HRESULT DeviceImpl::CreateDeferredContext(UINT flags, DeviceContext** context) {
   return S_OK;
 }
 
-CommandListImpl::CommandListImpl(DeviceImpl* d, std::unique_ptr<ListRecording> rec)
-    : Child<CommandList>(d), rec_(std::move(rec)) {}
+CommandListImpl::CommandListImpl(DeviceImpl* d, std::unique_ptr<ListRecording> rec,
+                                 std::shared_ptr<ListRecycler> recycler)
+    : Child<CommandList>(d), rec_(std::move(rec)), recycler_(std::move(recycler)) {}
 
-CommandListImpl::~CommandListImpl() { DestroyRecording(dev_, *rec_); }
+// The references go now; the Vulkan objects serve a later list of the same
+// context once the frame that last executed this one has completed.
+CommandListImpl::~CommandListImpl() {
+  ReleaseListReferences(*rec_);
+  recycler_->Give(std::move(rec_), lastExecuted);
+}
 
-void DestroyRecording(DeviceImpl* dev, ListRecording& rec) {
+void ReleaseListReferences(ListRecording& rec) {
   for (const auto& h : rec.held) h.release(h.object);
   rec.held.clear();
   rec.retained.clear();
+}
+
+void DestroyRecording(DeviceImpl* dev, ListRecording& rec) {
+  ReleaseListReferences(rec);
   rec.ring.DeferDestroy();
   for (VkDescriptorPool p : rec.descPools) dev->Defer(VK_OBJECT_TYPE_DESCRIPTOR_POOL, reinterpret_cast<uint64_t>(p));
   rec.descPools.clear();
@@ -67,19 +77,12 @@ bool ContextImpl::RejectDeferred(const char* fn, bool portLimit) {
   return true;
 }
 
-// A fresh list: its own command pool, secondary buffer, descriptor pools and
-// ring; nothing is bound in a new command buffer.
+// A new list: its own command pool, secondary buffer, descriptor pools and
+// ring (recycled from an earlier list of this context when one is free);
+// nothing is bound in a new command buffer.
 void ContextImpl::BeginRecording() {
-  rec_ = std::make_unique<ListRecording>();
-  rec_->ring.Init(dev_);
-  VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  pci.queueFamilyIndex = dev_->queueFamily();
-  vkCreateCommandPool(dev_->vk(), &pci, nullptr, &rec_->pool);
-  VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  ai.commandPool = rec_->pool;
-  ai.level = VK_COMMAND_BUFFER_LEVEL_SECONDARY;
-  ai.commandBufferCount = 1;
-  vkAllocateCommandBuffers(dev_->vk(), &ai, &rec_->cmd);
+  if (!recycler_) recycler_ = std::make_shared<ListRecycler>(dev_);
+  rec_ = recycler_->Take();
   // Executed outside rendering scopes (it begins its own): nothing inherited.
   VkCommandBufferInheritanceInfo inherit{VK_STRUCTURE_TYPE_COMMAND_BUFFER_INHERITANCE_INFO};
   VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
@@ -102,7 +105,7 @@ HRESULT ContextImpl::FinishCommandList(BOOL restoreState, CommandList** out) {
   std::unique_ptr<ListRecording> done = std::move(rec_);
   BeginRecording();
   if (!restoreState) ClearState();
-  *out = new CommandListImpl(dev_, std::move(done));
+  *out = new CommandListImpl(dev_, std::move(done), recycler_);
   return S_OK;
 }
 
