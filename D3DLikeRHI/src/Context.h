@@ -325,6 +325,7 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void UnmapInList(Resource* resource);
   void UpdateConstantsInList(BufferImpl* b, const BOX* box, const void* data);
   void RetainDrawState(bool indexed);
+  void RetainComputeState();
   template <class T>
   void Retain(T* object);
   void RetainInList(Unknown* object);

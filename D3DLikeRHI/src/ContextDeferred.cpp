@@ -206,6 +206,9 @@ void ContextImpl::UseTextureInList(TextureCore* t, const SubresourceRange& r, co
 void ContextImpl::UseBufferInList(VkBuffer buf, SyncState& s, const Usage& u) {
   bool first;
   ListSyncEntry& e = ListEntry(&s, u, &first);
+  // A write (a UAV, a fill) may feed a later draw's vertex or index reads:
+  // the next draw re-checks their barriers, as on the immediate context.
+  if (u.write) dirty_ |= kVertexBuffers | kIndexBuffer;
   if (first) {
     e.buffer = buf;
     return;
@@ -213,7 +216,6 @@ void ContextImpl::UseBufferInList(VkBuffer buf, SyncState& s, const Usage& u) {
   BarrierInfo info;
   if (!Transition(e.local, u, &info)) return;
   barriers_.AddBuffer(buf, info);
-  if (u.write) dirty_ |= kVertexBuffers | kIndexBuffer;
 }
 
 void ContextImpl::NoteUseInList(GpuUse& u, bool write) {
@@ -240,6 +242,7 @@ void ContextImpl::RetainDrawState(bool indexed) {
   if (indexed) Retain(ia.indexBuffer.Get());
   for (const auto& s : program_->cbs) Retain(state_.stages[s.stage].constantBuffers[s.slot].Get());
   for (const auto& s : program_->srvs) Retain(state_.stages[s.stage].shaderResources[s.slot].Get());
+  for (const auto& s : program_->bufferSrvs) Retain(state_.stages[s.stage].shaderResources[s.slot].Get());
   for (const auto& s : program_->samplers) Retain(state_.stages[s.stage].samplers[s.slot].Get());
   Retain(state_.rs.state.Get());
   const OutputMergerState& om = state_.om;
@@ -247,6 +250,21 @@ void ContextImpl::RetainDrawState(bool indexed) {
   Retain(om.depthStencilView.Get());
   Retain(om.blend.Get());
   Retain(om.depthStencil.Get());
+  for (const auto& s : program_->uavImages) Retain(state_.psUavs.uavs[s.slot].Get());
+  for (const auto& s : program_->uavBuffers) Retain(state_.psUavs.uavs[s.slot].Get());
+}
+
+// Every object a dispatch reads or writes (compute on a deferred context).
+void ContextImpl::RetainComputeState() {
+  const ProgramLayout& p = *computeProgram_;
+  const ShaderStageState& cs = state_.cs.stage;
+  Retain(cs.shader.Get());
+  for (const auto& s : p.cbs) Retain(cs.constantBuffers[s.slot].Get());
+  for (const auto& s : p.srvs) Retain(cs.shaderResources[s.slot].Get());
+  for (const auto& s : p.bufferSrvs) Retain(cs.shaderResources[s.slot].Get());
+  for (const auto& s : p.samplers) Retain(cs.samplers[s.slot].Get());
+  for (const auto& s : p.uavImages) Retain(state_.cs.uavs[s.slot].Get());
+  for (const auto& s : p.uavBuffers) Retain(state_.cs.uavs[s.slot].Get());
 }
 
 // ---------------------------------------------------------------------------
