@@ -66,9 +66,10 @@ struct ListRecording {
 
   uint64_t draws = 0;  // added to DEVICE_STATS::DrawCalls at each execution
 
-  // Single-entry cache of `slices` (one constant buffer per draw is common).
+  // Single-entry cache of `slices` (one constant buffer per draw is common);
+  // the node stays put until `slices` is cleared.
   const BufferImpl* lastBuffer = nullptr;
-  RingAlloc lastSlice;
+  Slice* lastEntry = nullptr;
 };
 
 // The recordings of one deferred context, kept for reuse (ListRecycler.cpp):

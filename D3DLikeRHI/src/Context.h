@@ -320,7 +320,8 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void UseBufferInList(VkBuffer buf, SyncState& s, const Usage& u);
   const RingAlloc& ListCbRing(BufferImpl* b);
   const RingAlloc& ListDynRing(const BufferImpl* b);
-  bool NewListSlice(BufferImpl* b, bool discarded, bool written);
+  ListRecording::Slice* NewListSlice(BufferImpl* b, bool discarded, bool written);
+  ListRecording::Slice* FindListSlice(const BufferImpl* b);
   HRESULT MapInList(Resource* resource, UINT sub, MAP type, MAPPED_SUBRESOURCE* mapped);
   void UnmapInList(Resource* resource);
   void UpdateConstantsInList(BufferImpl* b, const BOX* box, const void* data);

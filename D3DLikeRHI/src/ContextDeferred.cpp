@@ -269,48 +269,61 @@ void ContextImpl::RetainComputeState() {
 
 // ---------------------------------------------------------------------------
 // Recording: buffer contents in the list's own ring
-bool ContextImpl::NewListSlice(BufferImpl* b, bool discarded, bool written) {
+ListRecording::Slice* ContextImpl::NewListSlice(BufferImpl* b, bool discarded, bool written) {
   const VkDeviceSize align = b->IsConstantBuffer() ? dev_->uboAlign() : kDynamicAlign;
+  ListRecording& r = *rec_;
   RingAlloc a;
-  if (!rec_->ring.TryAllocate(b->size(), align, &a) && !rec_->ring.Allocate(b->size(), align, &a)) return false;
-  auto [it, added] = rec_->slices.try_emplace(b);
-  it->second = {a, discarded, written};
-  rec_->lastBuffer = b;
-  rec_->lastSlice = a;
-  if (added) Retain(b);
-  return true;
+  if (!r.ring.TryAllocate(b->size(), align, &a) && !r.ring.Allocate(b->size(), align, &a)) return nullptr;
+  ListRecording::Slice* e = r.lastBuffer == b ? r.lastEntry : nullptr;
+  if (!e) {
+    auto [it, added] = r.slices.try_emplace(b);
+    if (added) Retain(b);
+    e = &it->second;
+  }
+  *e = {a, discarded, written};
+  r.lastBuffer = b;
+  r.lastEntry = e;
+  return e;
 }
 
-const RingAlloc& ContextImpl::ListCbRing(BufferImpl* b) {
+// The buffer's contents in this list so far (null: not yet), through the
+// single-entry cache (one constant buffer per draw is common).
+ListRecording::Slice* ContextImpl::FindListSlice(const BufferImpl* b) {
   ListRecording& r = *rec_;
-  if (r.lastBuffer == b) return r.lastSlice;
-  auto it = r.slices.find(b);
-  if (it == r.slices.end()) {  // read before written in this list: its contents at execution
-    if (!NewListSlice(b, false, false)) return r.lastSlice;
-    r.imports.push_back({b, r.lastSlice});
-    return r.lastSlice;
-  }
+  if (r.lastBuffer == b) return r.lastEntry;
+  const auto it = r.slices.find(b);
+  if (it == r.slices.end()) return nullptr;
   r.lastBuffer = b;
-  r.lastSlice = it->second.ring;
-  return r.lastSlice;
+  r.lastEntry = &it->second;
+  return r.lastEntry;
+}
+
+namespace {
+const RingAlloc kNoSlice{};
+}  // namespace
+
+const RingAlloc& ContextImpl::ListCbRing(BufferImpl* b) {
+  if (const ListRecording::Slice* e = FindListSlice(b)) return e->ring;
+  // Read before written in this list: its contents at execution.
+  const ListRecording::Slice* e = NewListSlice(b, false, false);
+  if (!e) return kNoSlice;
+  rec_->imports.push_back({b, e->ring});
+  return e->ring;
 }
 
 const RingAlloc& ContextImpl::ListDynRing(const BufferImpl* b) {
-  static const RingAlloc kNone{};
-  auto it = rec_->slices.find(b);
-  return it == rec_->slices.end() ? kNone : it->second.ring;
+  const ListRecording::Slice* e = FindListSlice(b);
+  return e ? e->ring : kNoSlice;
 }
 
 HRESULT ContextImpl::MapInList(Resource* resource, UINT sub, MAP type, MAPPED_SUBRESOURCE* mapped) {
   BufferImpl* b = AsBuffer(resource);
-  const auto it = b ? rec_->slices.find(b) : rec_->slices.end();
-  const bool discarded = it != rec_->slices.end() && it->second.discarded;
-  const HRESULT hr = ValidateDeferredMap(*dev_, resource, sub, type, mapped, discarded);
+  ListRecording::Slice* e = b ? FindListSlice(b) : nullptr;
+  const HRESULT hr = ValidateDeferredMap(*dev_, resource, sub, type, mapped, e && e->discarded);
   if (mapped) *mapped = {};
   if (FAILED(hr)) return hr;
-  if (type == MAP_WRITE_DISCARD && !NewListSlice(b, true, true)) return E_OUTOFMEMORY;
-  const RingAlloc& a = rec_->slices[b].ring;
-  mapped->pData = a.ptr;
+  if (type == MAP_WRITE_DISCARD && !(e = NewListSlice(b, true, true))) return E_OUTOFMEMORY;
+  mapped->pData = e->ring.ptr;
   mapped->RowPitch = mapped->DepthPitch = b->size();
   return S_OK;
 }
@@ -325,13 +338,14 @@ void ContextImpl::UnmapInList(Resource* resource) {
 // shadow at recording time, for a partial update of a buffer the list did
 // not write yet) under the updated range.
 void ContextImpl::UpdateConstantsInList(BufferImpl* b, const BOX* box, const void* data) {
-  const auto it = rec_->slices.find(b);
-  const uint8_t* base = it != rec_->slices.end() ? it->second.ring.ptr : b->shadow();
+  const ListRecording::Slice* prior = FindListSlice(b);
+  const uint8_t* base = prior ? prior->ring.ptr : b->shadow();
   const UINT lo = box ? box->left : 0, hi = box ? box->right : b->size();
   std::vector<uint8_t> bytes(base, base + b->size());
   std::memcpy(bytes.data() + lo, data, hi - lo);
-  if (!NewListSlice(b, false, true)) return;
-  std::memcpy(rec_->lastSlice.ptr, bytes.data(), b->size());
+  const ListRecording::Slice* e = NewListSlice(b, false, true);
+  if (!e) return;
+  std::memcpy(e->ring.ptr, bytes.data(), b->size());
   dirty_ |= kConstants;
 }
 

@@ -84,7 +84,7 @@ void ListRecycler::Reset(ListRecording& rec) {
   rec.held.clear();
   rec.draws = 0;
   rec.lastBuffer = nullptr;
-  rec.lastSlice = {};
+  rec.lastEntry = nullptr;
 }
 
 }  // namespace d3dl::impl
