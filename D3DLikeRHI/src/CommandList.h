@@ -28,6 +28,7 @@ struct ListSyncEntry {
   uint32_t mip = 0, layer = 0;
   Usage entry{};             // first use in the list
   SyncState initial, local;  // right after the entry use; at the end of the list
+  bool used = true;          // false: a subresource of a used image, untouched by the list
 };
 
 // A constant buffer the list reads before writing it: its contents at
@@ -45,6 +46,8 @@ struct ListRecording {
   ConstantRing ring;
 
   std::vector<ListSyncEntry> syncs;
+  // A buffer's state -> its entry; an image's first subresource state -> the
+  // first of its subresources' consecutive entries.
   std::unordered_map<const SyncState*, uint32_t> syncIndex;
   // Contents of constant and DYNAMIC buffers in this list: the slice of the
   // last Map(WRITE_DISCARD)/UpdateSubresource or the import slot.

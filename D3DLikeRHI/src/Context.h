@@ -316,6 +316,7 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   // context only: the list being recorded (cmd_ is its secondary buffer).
   void BeginRecording();
   ListSyncEntry& ListEntry(SyncState* global, const Usage& u, bool* first);
+  uint32_t ListImageEntries(TextureCore* t, TextureImage& img);
   void UseTextureInList(TextureCore* t, const SubresourceRange& range, const Usage& u);
   void UseBufferInList(VkBuffer buf, SyncState& s, const Usage& u);
   const RingAlloc& ListCbRing(BufferImpl* b);

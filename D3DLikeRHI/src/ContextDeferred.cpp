@@ -118,6 +118,7 @@ void ContextImpl::ExecuteCommandList(CommandList* commandList, BOOL restoreState
   EndRendering();
   CopyImports(*list);
   for (const ListSyncEntry& e : r.syncs) {
+    if (!e.used) continue;
     if (e.tex)
       UseTexture(e.tex, OneSubresource(e.mip, e.layer), e.entry);
     else
@@ -126,7 +127,7 @@ void ContextImpl::ExecuteCommandList(CommandList* commandList, BOOL restoreState
   FlushBarriers();
   vkCmdExecuteCommands(cmd_, 1, &r.cmd);
   for (const ListSyncEntry& e : r.syncs)
-    if (!SameState(e.local, e.initial)) *e.global = e.local;  // the list changed it
+    if (e.used && !SameState(e.local, e.initial)) *e.global = e.local;  // the list changed it
   const uint64_t serial = dev_->CurrentSerial();
   for (const auto& [use, written] : r.uses) written ? use->Write(serial) : use->Read(serial);
   list->lastExecuted = serial;
@@ -183,17 +184,38 @@ ListSyncEntry& ContextImpl::ListEntry(SyncState* global, const Usage& u, bool* f
   return rec_->syncs[it->second];
 }
 
+// The list's entries of every subresource of `img`, made together at the
+// image's first use in the list (unused until touched): one lookup per
+// texture and use, not one per subresource.
+uint32_t ContextImpl::ListImageEntries(TextureCore* t, TextureImage& img) {
+  ListRecording& r = *rec_;
+  const auto [it, added] = r.syncIndex.emplace(img.sync.data(), static_cast<uint32_t>(r.syncs.size()));
+  if (added) {
+    const uint32_t mips = t->desc.MipLevels;
+    for (uint32_t k = 0; k < img.sync.size(); ++k) {
+      ListSyncEntry e;
+      e.global = &img.sync[k];
+      e.tex = t;
+      e.mip = k % mips;
+      e.layer = k / mips;
+      e.used = false;
+      r.syncs.push_back(e);
+    }
+  }
+  return it->second;
+}
+
 void ContextImpl::UseTextureInList(TextureCore* t, const SubresourceRange& r, const Usage& u) {
   TextureImage& img = t->Cur();
   const uint32_t mipCount = t->desc.MipLevels;
+  const uint32_t base = ListImageEntries(t, img);
   for (uint32_t l = r.baseLayer; l < r.baseLayer + r.layers; ++l) {
     for (uint32_t m = r.baseMip; m < r.baseMip + r.mips; ++m) {
-      bool first;
-      ListSyncEntry& e = ListEntry(&img.sync[l * mipCount + m], u, &first);
-      if (first) {  // the immediate context records this barrier at execution
-        e.tex = t;
-        e.mip = m;
-        e.layer = l;
+      ListSyncEntry& e = rec_->syncs[base + l * mipCount + m];
+      if (!e.used) {  // the immediate context records this barrier at execution
+        e.used = true;
+        e.entry = u;
+        e.initial = e.local = StateAfterEntry(u);
         continue;
       }
       BarrierInfo info;
