@@ -6,10 +6,12 @@
 // are not known while recording: each resource's first use in the list is
 // kept as its entry use, and its tracked state at the end as its exit state;
 // ExecuteCommandList transitions the resource to the entry use and then makes
-// the exit state current.
+// the exit state current. A released list's recording goes back to its
+// context's ListRecycler and is reused once the GPU is done with it.
 #pragma once
 
 #include <memory>
+#include <mutex>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -26,6 +28,7 @@ struct ListSyncEntry {
   uint32_t mip = 0, layer = 0;
   Usage entry{};             // first use in the list
   SyncState initial, local;  // right after the entry use; at the end of the list
+  bool used = true;          // false: a subresource of a used image, untouched by the list
 };
 
 // A constant buffer the list reads before writing it: its contents at
@@ -43,6 +46,8 @@ struct ListRecording {
   ConstantRing ring;
 
   std::vector<ListSyncEntry> syncs;
+  // A buffer's state -> its entry; an image's first subresource state -> the
+  // first of its subresources' consecutive entries.
   std::unordered_map<const SyncState*, uint32_t> syncIndex;
   // Contents of constant and DYNAMIC buffers in this list: the slice of the
   // last Map(WRITE_DISCARD)/UpdateSubresource or the import slot.
@@ -64,14 +69,47 @@ struct ListRecording {
 
   uint64_t draws = 0;  // added to DEVICE_STATS::DrawCalls at each execution
 
-  // Single-entry cache of `slices` (one constant buffer per draw is common).
+  // Single-entry cache of `slices` (one constant buffer per draw is common);
+  // the node stays put until `slices` is cleared.
   const BufferImpl* lastBuffer = nullptr;
-  RingAlloc lastSlice;
+  Slice* lastEntry = nullptr;
+};
+
+// The recordings of one deferred context, kept for reuse (ListRecycler.cpp):
+// a released list's command pool and secondary buffer, descriptor pools, ring
+// chunks and container capacity serve a later list of the same context once
+// the frame that last executed it has completed, so recording a list
+// allocates nothing from Vulkan and touches warm memory. Shared by the
+// context and its lists (a list may outlive its context); the mutex is taken
+// once per list, never per command.
+class ListRecycler {
+ public:
+  explicit ListRecycler(DeviceImpl* dev) : dev_(dev) {}
+  ~ListRecycler();
+  // A reset recording whose last execution has completed, else a new one.
+  std::unique_ptr<ListRecording> Take();
+  // `rec`, whose references are released, may serve again once frame
+  // `lastExecuted` has completed (0: never executed). Destroyed instead when
+  // the context is gone or enough recordings are parked.
+  void Give(std::unique_ptr<ListRecording> rec, uint64_t lastExecuted);
+  void Close();  // the context is destroyed
+
+ private:
+  struct Parked {
+    std::unique_ptr<ListRecording> rec;
+    uint64_t lastExecuted;
+  };
+  std::unique_ptr<ListRecording> Create();
+  void Reset(ListRecording& rec);
+  DeviceImpl* dev_;
+  std::mutex mutex_;
+  std::vector<Parked> parked_;
+  bool closed_ = false;
 };
 
 class CommandListImpl final : public Child<CommandList> {
  public:
-  CommandListImpl(DeviceImpl* d, std::unique_ptr<ListRecording> rec);
+  CommandListImpl(DeviceImpl* d, std::unique_ptr<ListRecording> rec, std::shared_ptr<ListRecycler> recycler);
   ~CommandListImpl() override;
   UINT GetContextFlags() override { return 0; }
   ListRecording& rec() { return *rec_; }
@@ -79,8 +117,11 @@ class CommandListImpl final : public Child<CommandList> {
 
  private:
   std::unique_ptr<ListRecording> rec_;
+  std::shared_ptr<ListRecycler> recycler_;
 };
 
+// Drops the references a recording's commands hold.
+void ReleaseListReferences(ListRecording& rec);
 // Releases the recording's references and hands its Vulkan objects to the
 // deferred destruction (after the fence of the frame being recorded).
 void DestroyRecording(DeviceImpl* dev, ListRecording& rec);

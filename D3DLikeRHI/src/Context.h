@@ -316,15 +316,18 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   // context only: the list being recorded (cmd_ is its secondary buffer).
   void BeginRecording();
   ListSyncEntry& ListEntry(SyncState* global, const Usage& u, bool* first);
+  uint32_t ListImageEntries(TextureCore* t, TextureImage& img);
   void UseTextureInList(TextureCore* t, const SubresourceRange& range, const Usage& u);
   void UseBufferInList(VkBuffer buf, SyncState& s, const Usage& u);
   const RingAlloc& ListCbRing(BufferImpl* b);
   const RingAlloc& ListDynRing(const BufferImpl* b);
-  bool NewListSlice(BufferImpl* b, bool discarded, bool written);
+  ListRecording::Slice* NewListSlice(BufferImpl* b, bool discarded, bool written);
+  ListRecording::Slice* FindListSlice(const BufferImpl* b);
   HRESULT MapInList(Resource* resource, UINT sub, MAP type, MAPPED_SUBRESOURCE* mapped);
   void UnmapInList(Resource* resource);
   void UpdateConstantsInList(BufferImpl* b, const BOX* box, const void* data);
   void RetainDrawState(bool indexed);
+  void RetainComputeState();
   template <class T>
   void Retain(T* object);
   void RetainInList(Unknown* object);
@@ -354,6 +357,7 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   const bool deferred_;
   std::atomic<UINT> deferredRefs_{1};
   std::unique_ptr<ListRecording> rec_;
+  std::shared_ptr<ListRecycler> recycler_;  // this context's recordings for reuse (ListRecycler.cpp)
 };
 
 // Pipeline statistics queries (QueryStatistics.cpp): the query's pool, and

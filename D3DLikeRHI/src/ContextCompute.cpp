@@ -64,27 +64,26 @@ void ContextImpl::UseShaderViews(const ProgramLayout& p, ShaderStage stage) {
   const bool cs = stage == ShaderStage::Compute;
   const VkPipelineStageFlags2 reads = cs ? usage::kComputeStage : usage::kShaderStages;
   const VkPipelineStageFlags2 writes = cs ? usage::kComputeStage : VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-  const uint64_t serial = dev_->CurrentSerial();
   if (cs)
     for (const auto& s : p.srvs)
       if (SRVImpl* v = Stage(s.stage).shaderResources[s.slot].Get(); v && v->v.tex) {
         UseTexture(v->v.tex, v->v.range(), usage::SampledRead(reads));
-        v->v.tex->use.Read(serial);
+        NoteUse(v->v.tex->use, false);
       }
   for (const auto& s : p.bufferSrvs)
     if (SRVImpl* v = Stage(s.stage).shaderResources[s.slot].Get(); v && v->v.buf) {
       UseBuffer(v->v.buf->vkBuffer(), v->v.buf->sync(), usage::StorageBufferRead(reads));
-      v->v.buf->use.Read(serial);
+      NoteUse(v->v.buf->use, false);
     }
   for (const auto& s : p.uavImages) {
     const ViewCore& v = UavAt(stage, s.slot)->v;
     UseTexture(v.tex, OneSubresource(v.baseMip, 0), usage::StorageWrite(writes, true));
-    v.tex->use.Write(serial);
+    NoteUse(v.tex->use, true);
   }
   for (const auto& s : p.uavBuffers) {
     BufferImpl* b = UavAt(stage, s.slot)->v.buf;
     UseBuffer(b->vkBuffer(), b->sync(), usage::StorageWrite(writes, false));
-    b->use.Write(serial);
+    NoteUse(b->use, true);
   }
 }
 
@@ -103,6 +102,7 @@ bool ContextImpl::CommitCompute() {
   if ((computeDirty_ & kDescriptors) && !UavsBound(p, ShaderStage::Compute))
     return ErrorOnce(OnceError::UnboundUav), false;
   UseShaderViews(p, ShaderStage::Compute);
+  if (rec_) RetainComputeState();
   EndRendering();
   FlushBarriers();
   if (computeDirty_ & kPipeline) {
@@ -130,7 +130,8 @@ void ContextImpl::DispatchIndirect(Buffer* args, UINT offset) {
   BufferImpl* b = static_cast<BufferImpl*>(args);
   UseBuffer(b->vkBuffer(), b->sync(), usage::IndirectRead);
   if (!CommitCompute()) return;
-  b->use.Read(dev_->CurrentSerial());
+  if (rec_) RetainInList(b);
+  NoteUse(b->use, false);
   vkCmdDispatchIndirect(cmd_, b->vkBuffer(), offset);
 }
 
@@ -180,18 +181,19 @@ bool UavClearBitsSupported(VkFormat f) {
 void ContextImpl::ClearUav(UAVImpl* uav, const VkClearColorValue& value, uint32_t fill) {
   const ViewCore& v = uav->v;
   EndRendering();
+  if (rec_) RetainInList(uav);
   if (v.buf) {
     UseBuffer(v.buf->vkBuffer(), v.buf->sync(), usage::BufferFillDst);
     FlushBarriers();
     vkCmdFillBuffer(cmd_, v.buf->vkBuffer(), v.bufOffset, v.bufRange, fill);
-    v.buf->use.Write(dev_->CurrentSerial());
+    NoteUse(v.buf->use, true);
     return;
   }
   UseTexture(v.tex, OneSubresource(v.baseMip, 0), usage::TransferDst);
   FlushBarriers();
   const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, v.baseMip, 1, 0, 1};
   vkCmdClearColorImage(cmd_, v.tex->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &value, 1, &range);
-  v.tex->use.Write(dev_->CurrentSerial());
+  NoteUse(v.tex->use, true);
 }
 
 void ContextImpl::ClearUnorderedAccessViewUint(UnorderedAccessView* uav, const UINT values[4]) {

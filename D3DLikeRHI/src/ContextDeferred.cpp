@@ -38,15 +38,25 @@ HRESULT DeviceImpl::CreateDeferredContext(UINT flags, DeviceContext** context) {
   return S_OK;
 }
 
-CommandListImpl::CommandListImpl(DeviceImpl* d, std::unique_ptr<ListRecording> rec)
-    : Child<CommandList>(d), rec_(std::move(rec)) {}
+CommandListImpl::CommandListImpl(DeviceImpl* d, std::unique_ptr<ListRecording> rec,
+                                 std::shared_ptr<ListRecycler> recycler)
+    : Child<CommandList>(d), rec_(std::move(rec)), recycler_(std::move(recycler)) {}
 
-CommandListImpl::~CommandListImpl() { DestroyRecording(dev_, *rec_); }
+// The references go now; the Vulkan objects serve a later list of the same
+// context once the frame that last executed this one has completed.
+CommandListImpl::~CommandListImpl() {
+  ReleaseListReferences(*rec_);
+  recycler_->Give(std::move(rec_), lastExecuted);
+}
 
-void DestroyRecording(DeviceImpl* dev, ListRecording& rec) {
+void ReleaseListReferences(ListRecording& rec) {
   for (const auto& h : rec.held) h.release(h.object);
   rec.held.clear();
   rec.retained.clear();
+}
+
+void DestroyRecording(DeviceImpl* dev, ListRecording& rec) {
+  ReleaseListReferences(rec);
   rec.ring.DeferDestroy();
   for (VkDescriptorPool p : rec.descPools) dev->Defer(VK_OBJECT_TYPE_DESCRIPTOR_POOL, reinterpret_cast<uint64_t>(p));
   rec.descPools.clear();
@@ -67,19 +77,12 @@ bool ContextImpl::RejectDeferred(const char* fn, bool portLimit) {
   return true;
 }
 
-// A fresh list: its own command pool, secondary buffer, descriptor pools and
-// ring; nothing is bound in a new command buffer.
+// A new list: its own command pool, secondary buffer, descriptor pools and
+// ring (recycled from an earlier list of this context when one is free);
+// nothing is bound in a new command buffer.
 void ContextImpl::BeginRecording() {
-  rec_ = std::make_unique<ListRecording>();
-  rec_->ring.Init(dev_);
-  VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  pci.queueFamilyIndex = dev_->queueFamily();
-  vkCreateCommandPool(dev_->vk(), &pci, nullptr, &rec_->pool);
-  VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  ai.commandPool = rec_->pool;
-  ai.level = VK_COMMAND_BUFFER_LEVEL_SECONDARY;
-  ai.commandBufferCount = 1;
-  vkAllocateCommandBuffers(dev_->vk(), &ai, &rec_->cmd);
+  if (!recycler_) recycler_ = std::make_shared<ListRecycler>(dev_);
+  rec_ = recycler_->Take();
   // Executed outside rendering scopes (it begins its own): nothing inherited.
   VkCommandBufferInheritanceInfo inherit{VK_STRUCTURE_TYPE_COMMAND_BUFFER_INHERITANCE_INFO};
   VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
@@ -102,7 +105,7 @@ HRESULT ContextImpl::FinishCommandList(BOOL restoreState, CommandList** out) {
   std::unique_ptr<ListRecording> done = std::move(rec_);
   BeginRecording();
   if (!restoreState) ClearState();
-  *out = new CommandListImpl(dev_, std::move(done));
+  *out = new CommandListImpl(dev_, std::move(done), recycler_);
   return S_OK;
 }
 
@@ -115,6 +118,7 @@ void ContextImpl::ExecuteCommandList(CommandList* commandList, BOOL restoreState
   EndRendering();
   CopyImports(*list);
   for (const ListSyncEntry& e : r.syncs) {
+    if (!e.used) continue;
     if (e.tex)
       UseTexture(e.tex, OneSubresource(e.mip, e.layer), e.entry);
     else
@@ -123,7 +127,7 @@ void ContextImpl::ExecuteCommandList(CommandList* commandList, BOOL restoreState
   FlushBarriers();
   vkCmdExecuteCommands(cmd_, 1, &r.cmd);
   for (const ListSyncEntry& e : r.syncs)
-    if (!SameState(e.local, e.initial)) *e.global = e.local;  // the list changed it
+    if (e.used && !SameState(e.local, e.initial)) *e.global = e.local;  // the list changed it
   const uint64_t serial = dev_->CurrentSerial();
   for (const auto& [use, written] : r.uses) written ? use->Write(serial) : use->Read(serial);
   list->lastExecuted = serial;
@@ -180,17 +184,38 @@ ListSyncEntry& ContextImpl::ListEntry(SyncState* global, const Usage& u, bool* f
   return rec_->syncs[it->second];
 }
 
+// The list's entries of every subresource of `img`, made together at the
+// image's first use in the list (unused until touched): one lookup per
+// texture and use, not one per subresource.
+uint32_t ContextImpl::ListImageEntries(TextureCore* t, TextureImage& img) {
+  ListRecording& r = *rec_;
+  const auto [it, added] = r.syncIndex.emplace(img.sync.data(), static_cast<uint32_t>(r.syncs.size()));
+  if (added) {
+    const uint32_t mips = t->desc.MipLevels;
+    for (uint32_t k = 0; k < img.sync.size(); ++k) {
+      ListSyncEntry e;
+      e.global = &img.sync[k];
+      e.tex = t;
+      e.mip = k % mips;
+      e.layer = k / mips;
+      e.used = false;
+      r.syncs.push_back(e);
+    }
+  }
+  return it->second;
+}
+
 void ContextImpl::UseTextureInList(TextureCore* t, const SubresourceRange& r, const Usage& u) {
   TextureImage& img = t->Cur();
   const uint32_t mipCount = t->desc.MipLevels;
+  const uint32_t base = ListImageEntries(t, img);
   for (uint32_t l = r.baseLayer; l < r.baseLayer + r.layers; ++l) {
     for (uint32_t m = r.baseMip; m < r.baseMip + r.mips; ++m) {
-      bool first;
-      ListSyncEntry& e = ListEntry(&img.sync[l * mipCount + m], u, &first);
-      if (first) {  // the immediate context records this barrier at execution
-        e.tex = t;
-        e.mip = m;
-        e.layer = l;
+      ListSyncEntry& e = rec_->syncs[base + l * mipCount + m];
+      if (!e.used) {  // the immediate context records this barrier at execution
+        e.used = true;
+        e.entry = u;
+        e.initial = e.local = StateAfterEntry(u);
         continue;
       }
       BarrierInfo info;
@@ -203,6 +228,9 @@ void ContextImpl::UseTextureInList(TextureCore* t, const SubresourceRange& r, co
 void ContextImpl::UseBufferInList(VkBuffer buf, SyncState& s, const Usage& u) {
   bool first;
   ListSyncEntry& e = ListEntry(&s, u, &first);
+  // A write (a UAV, a fill) may feed a later draw's vertex or index reads:
+  // the next draw re-checks their barriers, as on the immediate context.
+  if (u.write) dirty_ |= kVertexBuffers | kIndexBuffer;
   if (first) {
     e.buffer = buf;
     return;
@@ -210,7 +238,6 @@ void ContextImpl::UseBufferInList(VkBuffer buf, SyncState& s, const Usage& u) {
   BarrierInfo info;
   if (!Transition(e.local, u, &info)) return;
   barriers_.AddBuffer(buf, info);
-  if (u.write) dirty_ |= kVertexBuffers | kIndexBuffer;
 }
 
 void ContextImpl::NoteUseInList(GpuUse& u, bool write) {
@@ -237,6 +264,7 @@ void ContextImpl::RetainDrawState(bool indexed) {
   if (indexed) Retain(ia.indexBuffer.Get());
   for (const auto& s : program_->cbs) Retain(state_.stages[s.stage].constantBuffers[s.slot].Get());
   for (const auto& s : program_->srvs) Retain(state_.stages[s.stage].shaderResources[s.slot].Get());
+  for (const auto& s : program_->bufferSrvs) Retain(state_.stages[s.stage].shaderResources[s.slot].Get());
   for (const auto& s : program_->samplers) Retain(state_.stages[s.stage].samplers[s.slot].Get());
   Retain(state_.rs.state.Get());
   const OutputMergerState& om = state_.om;
@@ -244,52 +272,80 @@ void ContextImpl::RetainDrawState(bool indexed) {
   Retain(om.depthStencilView.Get());
   Retain(om.blend.Get());
   Retain(om.depthStencil.Get());
+  for (const auto& s : program_->uavImages) Retain(state_.psUavs.uavs[s.slot].Get());
+  for (const auto& s : program_->uavBuffers) Retain(state_.psUavs.uavs[s.slot].Get());
+}
+
+// Every object a dispatch reads or writes (compute on a deferred context).
+void ContextImpl::RetainComputeState() {
+  const ProgramLayout& p = *computeProgram_;
+  const ShaderStageState& cs = state_.cs.stage;
+  Retain(cs.shader.Get());
+  for (const auto& s : p.cbs) Retain(cs.constantBuffers[s.slot].Get());
+  for (const auto& s : p.srvs) Retain(cs.shaderResources[s.slot].Get());
+  for (const auto& s : p.bufferSrvs) Retain(cs.shaderResources[s.slot].Get());
+  for (const auto& s : p.samplers) Retain(cs.samplers[s.slot].Get());
+  for (const auto& s : p.uavImages) Retain(state_.cs.uavs[s.slot].Get());
+  for (const auto& s : p.uavBuffers) Retain(state_.cs.uavs[s.slot].Get());
 }
 
 // ---------------------------------------------------------------------------
 // Recording: buffer contents in the list's own ring
-bool ContextImpl::NewListSlice(BufferImpl* b, bool discarded, bool written) {
+ListRecording::Slice* ContextImpl::NewListSlice(BufferImpl* b, bool discarded, bool written) {
   const VkDeviceSize align = b->IsConstantBuffer() ? dev_->uboAlign() : kDynamicAlign;
+  ListRecording& r = *rec_;
   RingAlloc a;
-  if (!rec_->ring.TryAllocate(b->size(), align, &a) && !rec_->ring.Allocate(b->size(), align, &a)) return false;
-  auto [it, added] = rec_->slices.try_emplace(b);
-  it->second = {a, discarded, written};
-  rec_->lastBuffer = b;
-  rec_->lastSlice = a;
-  if (added) Retain(b);
-  return true;
+  if (!r.ring.TryAllocate(b->size(), align, &a) && !r.ring.Allocate(b->size(), align, &a)) return nullptr;
+  ListRecording::Slice* e = r.lastBuffer == b ? r.lastEntry : nullptr;
+  if (!e) {
+    auto [it, added] = r.slices.try_emplace(b);
+    if (added) Retain(b);
+    e = &it->second;
+  }
+  *e = {a, discarded, written};
+  r.lastBuffer = b;
+  r.lastEntry = e;
+  return e;
 }
 
-const RingAlloc& ContextImpl::ListCbRing(BufferImpl* b) {
+// The buffer's contents in this list so far (null: not yet), through the
+// single-entry cache (one constant buffer per draw is common).
+ListRecording::Slice* ContextImpl::FindListSlice(const BufferImpl* b) {
   ListRecording& r = *rec_;
-  if (r.lastBuffer == b) return r.lastSlice;
-  auto it = r.slices.find(b);
-  if (it == r.slices.end()) {  // read before written in this list: its contents at execution
-    if (!NewListSlice(b, false, false)) return r.lastSlice;
-    r.imports.push_back({b, r.lastSlice});
-    return r.lastSlice;
-  }
+  if (r.lastBuffer == b) return r.lastEntry;
+  const auto it = r.slices.find(b);
+  if (it == r.slices.end()) return nullptr;
   r.lastBuffer = b;
-  r.lastSlice = it->second.ring;
-  return r.lastSlice;
+  r.lastEntry = &it->second;
+  return r.lastEntry;
+}
+
+namespace {
+const RingAlloc kNoSlice{};
+}  // namespace
+
+const RingAlloc& ContextImpl::ListCbRing(BufferImpl* b) {
+  if (const ListRecording::Slice* e = FindListSlice(b)) return e->ring;
+  // Read before written in this list: its contents at execution.
+  const ListRecording::Slice* e = NewListSlice(b, false, false);
+  if (!e) return kNoSlice;
+  rec_->imports.push_back({b, e->ring});
+  return e->ring;
 }
 
 const RingAlloc& ContextImpl::ListDynRing(const BufferImpl* b) {
-  static const RingAlloc kNone{};
-  auto it = rec_->slices.find(b);
-  return it == rec_->slices.end() ? kNone : it->second.ring;
+  const ListRecording::Slice* e = FindListSlice(b);
+  return e ? e->ring : kNoSlice;
 }
 
 HRESULT ContextImpl::MapInList(Resource* resource, UINT sub, MAP type, MAPPED_SUBRESOURCE* mapped) {
   BufferImpl* b = AsBuffer(resource);
-  const auto it = b ? rec_->slices.find(b) : rec_->slices.end();
-  const bool discarded = it != rec_->slices.end() && it->second.discarded;
-  const HRESULT hr = ValidateDeferredMap(*dev_, resource, sub, type, mapped, discarded);
+  ListRecording::Slice* e = b ? FindListSlice(b) : nullptr;
+  const HRESULT hr = ValidateDeferredMap(*dev_, resource, sub, type, mapped, e && e->discarded);
   if (mapped) *mapped = {};
   if (FAILED(hr)) return hr;
-  if (type == MAP_WRITE_DISCARD && !NewListSlice(b, true, true)) return E_OUTOFMEMORY;
-  const RingAlloc& a = rec_->slices[b].ring;
-  mapped->pData = a.ptr;
+  if (type == MAP_WRITE_DISCARD && !(e = NewListSlice(b, true, true))) return E_OUTOFMEMORY;
+  mapped->pData = e->ring.ptr;
   mapped->RowPitch = mapped->DepthPitch = b->size();
   return S_OK;
 }
@@ -304,13 +360,14 @@ void ContextImpl::UnmapInList(Resource* resource) {
 // shadow at recording time, for a partial update of a buffer the list did
 // not write yet) under the updated range.
 void ContextImpl::UpdateConstantsInList(BufferImpl* b, const BOX* box, const void* data) {
-  const auto it = rec_->slices.find(b);
-  const uint8_t* base = it != rec_->slices.end() ? it->second.ring.ptr : b->shadow();
+  const ListRecording::Slice* prior = FindListSlice(b);
+  const uint8_t* base = prior ? prior->ring.ptr : b->shadow();
   const UINT lo = box ? box->left : 0, hi = box ? box->right : b->size();
   std::vector<uint8_t> bytes(base, base + b->size());
   std::memcpy(bytes.data() + lo, data, hi - lo);
-  if (!NewListSlice(b, false, true)) return;
-  std::memcpy(rec_->lastSlice.ptr, bytes.data(), b->size());
+  const ListRecording::Slice* e = NewListSlice(b, false, true);
+  if (!e) return;
+  std::memcpy(e->ring.ptr, bytes.data(), b->size());
   dirty_ |= kConstants;
 }
 

@@ -26,6 +26,7 @@ ContextImpl::~ContextImpl() {
   ClearState();
   defaults_ = {};
   if (rec_) DestroyRecording(dev_, *rec_);  // an unfinished list, never submitted
+  if (recycler_) recycler_->Close();         // its lists may outlive it: they destroy theirs
   DestroyCommandFrames();
 }
 

@@ -41,19 +41,28 @@ void ContextImpl::IASetInputLayout(InputLayout* layout) {
 void ContextImpl::IASetVertexBuffers(UINT start, UINT num, Buffer* const* buffers, const UINT* strides,
                                      const UINT* offsets) {
   if (!ValidateSlots(*dev_, "IA", "SetVertexBuffers", start, num, IA_VERTEX_INPUT_RESOURCE_SLOT_COUNT)) return;
+  bool changed = false;  // re-binding the bound buffers leaves the draw on its fast path
   for (UINT i = 0; i < num; ++i) {
     auto& v = state_.ia.vertexBuffers[start + i];
-    Assign(v.buffer, CheckedVertexBuffer(*dev_, buffers ? buffers[i] : nullptr, start + i));
-    v.stride = strides ? strides[i] : 0;
-    v.offset = offsets ? offsets[i] : 0;
+    BufferImpl* b = CheckedVertexBuffer(*dev_, buffers ? buffers[i] : nullptr, start + i);
+    const UINT stride = strides ? strides[i] : 0, offset = offsets ? offsets[i] : 0;
+    if (v.buffer.Get() == b && v.stride == stride && v.offset == offset) continue;
+    Assign(v.buffer, b);
+    v.stride = stride;
+    v.offset = offset;
+    changed = true;
   }
-  dirty_ |= kVertexBuffers;
+  if (changed) dirty_ |= kVertexBuffers;
 }
 
 void ContextImpl::IASetIndexBuffer(Buffer* buffer, DXGI_FORMAT format, UINT offset) {
-  Assign(state_.ia.indexBuffer, CheckedIndexBuffer(*dev_, buffer, format));
-  state_.ia.indexType = format == DXGI_FORMAT_R32_UINT ? VK_INDEX_TYPE_UINT32 : VK_INDEX_TYPE_UINT16;
-  state_.ia.indexOffset = offset;
+  BufferImpl* b = CheckedIndexBuffer(*dev_, buffer, format);
+  const VkIndexType type = format == DXGI_FORMAT_R32_UINT ? VK_INDEX_TYPE_UINT32 : VK_INDEX_TYPE_UINT16;
+  InputAssemblerState& ia = state_.ia;
+  if (ia.indexBuffer.Get() == b && ia.indexType == type && ia.indexOffset == offset) return;
+  Assign(ia.indexBuffer, b);
+  ia.indexType = type;
+  ia.indexOffset = offset;
   dirty_ |= kIndexBuffer;
 }
 
@@ -83,9 +92,13 @@ void ContextImpl::SetCBs(ShaderStage stage, UINT start, UINT num, Buffer* const*
   if (!ValidateSlots(*dev_, StagePrefix(stage), "SetConstantBuffers", start, num, kMaxConstantBufferSlots))
     return;
   auto& slots = Stage(stage).constantBuffers;
-  for (UINT i = 0; i < num; ++i)
-    Assign(slots[start + i], CheckedConstantBuffer(*dev_, stage, buffers ? buffers[i] : nullptr, start + i));
-  MarkDirty(stage, kConstants | kCbSlots);
+  bool changed = false;
+  for (UINT i = 0; i < num; ++i) {
+    BufferImpl* b = CheckedConstantBuffer(*dev_, stage, buffers ? buffers[i] : nullptr, start + i);
+    changed = changed || slots[start + i].Get() != b;
+    Assign(slots[start + i], b);
+  }
+  MarkDirty(stage, changed ? uint32_t(kConstants | kCbSlots) : uint32_t(kConstants));
 }
 void ContextImpl::VSSetConstantBuffers(UINT s, UINT n, Buffer* const* b) { SetCBs(ShaderStage::Vertex, s, n, b); }
 void ContextImpl::PSSetConstantBuffers(UINT s, UINT n, Buffer* const* b) { SetCBs(ShaderStage::Pixel, s, n, b); }
@@ -93,6 +106,7 @@ void ContextImpl::PSSetConstantBuffers(UINT s, UINT n, Buffer* const* b) { SetCB
 void ContextImpl::SetSRVs(ShaderStage stage, UINT start, UINT num, ShaderResourceView* const* views) {
   if (!ValidateSlots(*dev_, StagePrefix(stage), "SetShaderResources", start, num, kMaxTextureSlots)) return;
   auto& slots = Stage(stage).shaderResources;
+  bool changed = false;  // the same views again keep the descriptor set
   for (UINT i = 0; i < num; ++i) {
     auto* v = views ? static_cast<SRVImpl*>(views[i]) : nullptr;
     if (v && BoundForOutput(v->v)) {
@@ -101,9 +115,10 @@ void ContextImpl::SetSRVs(ShaderStage stage, UINT start, UINT num, ShaderResourc
                 StagePrefix(stage), start + i, v->v.tex ? "texture" : "buffer");
       v = nullptr;
     }
+    changed = changed || slots[start + i].Get() != v;
     Assign(slots[start + i], v);
   }
-  MarkDirty(stage, kDescriptors);
+  if (changed) MarkDirty(stage, kDescriptors);
 }
 void ContextImpl::VSSetShaderResources(UINT s, UINT n, ShaderResourceView* const* v) { SetSRVs(ShaderStage::Vertex, s, n, v); }
 void ContextImpl::PSSetShaderResources(UINT s, UINT n, ShaderResourceView* const* v) { SetSRVs(ShaderStage::Pixel, s, n, v); }
@@ -111,9 +126,13 @@ void ContextImpl::PSSetShaderResources(UINT s, UINT n, ShaderResourceView* const
 void ContextImpl::SetSamplers(ShaderStage stage, UINT start, UINT num, SamplerState* const* samplers) {
   if (!ValidateSlots(*dev_, StagePrefix(stage), "SetSamplers", start, num, kMaxSamplerSlots)) return;
   auto& slots = Stage(stage).samplers;
-  for (UINT i = 0; i < num; ++i)
-    Assign(slots[start + i], samplers ? static_cast<SamplerImpl*>(samplers[i]) : nullptr);
-  MarkDirty(stage, kDescriptors);
+  bool changed = false;
+  for (UINT i = 0; i < num; ++i) {
+    auto* smp = samplers ? static_cast<SamplerImpl*>(samplers[i]) : nullptr;
+    changed = changed || slots[start + i].Get() != smp;
+    Assign(slots[start + i], smp);
+  }
+  if (changed) MarkDirty(stage, kDescriptors);
 }
 void ContextImpl::VSSetSamplers(UINT s, UINT n, SamplerState* const* v) { SetSamplers(ShaderStage::Vertex, s, n, v); }
 void ContextImpl::PSSetSamplers(UINT s, UINT n, SamplerState* const* v) { SetSamplers(ShaderStage::Pixel, s, n, v); }

@@ -98,6 +98,7 @@ bool PipelineCache::CreateLayout(const std::vector<VkDescriptorSetLayoutBinding>
 // ---------------------------------------------------------------------------
 // Compute and unordered access: layouts and pipelines keyed by the shader.
 ProgramLayout* PipelineCache::GetComputeProgram(ShaderBase* cs) {
+  std::lock_guard<std::mutex> lock(mutex_);  // deferred contexts dispatch from several threads
   auto it = computePrograms_.find(cs->cacheId);
   if (it != computePrograms_.end()) return it->second.get();
   auto prog = std::make_unique<ProgramLayout>();
@@ -110,6 +111,7 @@ ProgramLayout* PipelineCache::GetComputeProgram(ShaderBase* cs) {
 }
 
 VkPipeline PipelineCache::GetComputePipeline(ShaderBase* cs, ProgramLayout* prog) {
+  std::lock_guard<std::mutex> lock(mutex_);
   auto it = computePipelines_.find(cs->cacheId);
   if (it != computePipelines_.end()) return it->second;
   VkComputePipelineCreateInfo ci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};

@@ -56,7 +56,7 @@ void FrameQueue::Recycle(Frame& f) {
   if (f.submitted) {
     vkWaitForFences(d, 1, &f.fence, VK_TRUE, UINT64_MAX);
     vkResetFences(d, 1, &f.fence);
-    completed_ = std::max(completed_, f.serial);
+    NoteCompleted(f.serial);
     f.submitted = false;
   }
   std::vector<Garbage> garbage;
@@ -137,7 +137,7 @@ void FrameQueue::Submit(VkCommandBuffer cmd, VkSemaphore signal) {
 uint64_t FrameQueue::CompletedSerial() {
   for (auto& f : frames_)
     if (f.submitted && f.serial > completed_ && vkGetFenceStatus(dev_->vk(), f.fence) == VK_SUCCESS)
-      completed_ = std::max(completed_, f.serial);
+      NoteCompleted(f.serial);
   return completed_;
 }
 
@@ -150,7 +150,7 @@ void FrameQueue::WaitForSerial(uint64_t serial) {
   }
   Frame& f = frames_[serial % frames_.size()];
   if (f.serial == serial && f.submitted) vkWaitForFences(dev_->vk(), 1, &f.fence, VK_TRUE, UINT64_MAX);
-  completed_ = std::max(completed_, serial);  // else its slot was already recycled
+  NoteCompleted(serial);  // else its slot was already recycled
 }
 
 size_t FrameQueue::PendingGarbage() const {

@@ -6,6 +6,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <atomic>
 #include <mutex>
 #include <vector>
 
@@ -48,6 +49,9 @@ class FrameQueue {
   // of the frame that used it before has signalled.
   void Submit(VkCommandBuffer cmd, VkSemaphore signal);
   uint64_t CompletedSerial();  // polls fences
+  // The last completed frame this queue has seen (fence waited or polled),
+  // without polling: any thread (deferred contexts recycling their lists).
+  uint64_t CompletedSerialSeen() const { return completed_.load(std::memory_order_acquire); }
   void WaitForSerial(uint64_t serial);
 
  private:
@@ -72,7 +76,11 @@ class FrameQueue {
   std::vector<Frame> frames_;
   uint32_t slot_ = 0;
   uint64_t serial_ = 1;
-  uint64_t completed_ = 0;
+  // Written by the immediate context's thread only (NoteCompleted).
+  std::atomic<uint64_t> completed_{0};
+  void NoteCompleted(uint64_t serial) {
+    if (serial > completed_.load(std::memory_order_relaxed)) completed_.store(serial, std::memory_order_release);
+  }
   std::vector<VkSemaphore> pendingWaits_;
   // Guards the frames' garbage lists and slot_ against Defer from other threads.
   mutable std::mutex garbageMutex_;
