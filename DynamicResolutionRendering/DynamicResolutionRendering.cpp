@@ -12,6 +12,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scene/RecordingThreads.h"
 #include "scene/Scene.h"
 
 #ifndef DRR_DEFAULT_SCENE
@@ -395,6 +396,7 @@ SceneRenderParams Sample::SceneParams() const {
   p.showCameras = m_Options.showCameras;
   p.shadingEye = m_Cameras.ShadingEye(m_Options.fixes.Has(Fix::CameraEye));
   p.frustumCulling = m_Options.fixes.Has(Fix::FrustumCull);
+  p.recordingThreads = RecordingThreadsFor(m_Options.threads);
   return p;
 }
 
@@ -415,6 +417,7 @@ void Sample::OnFrameRender(double elapsed) {
   const SceneTargets scene = ChooseSceneTargets(m_Targets, setup, bb);
   SceneRenderParams params = SceneParams();
   params.writeVelocity = scene.count == 2;
+  params.viewport = setup.sceneViewport;  // what FramePasses::Scene sets: deferred contexts set it too
 
   timers.frame.Start(ctx);
   m_Passes.Clear(ctx, setup, m_Targets, scene);

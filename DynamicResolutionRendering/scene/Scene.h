@@ -13,6 +13,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "ShaderLibrary.h"
+#include "d3dl/Types.h"
 #include "scene/SceneVertex.h"
 
 namespace d3dl {
@@ -60,12 +61,26 @@ struct SceneRenderParams {
   // on the materials named in mipBiasOptOut.
   std::optional<float> viewMipBias;
   std::vector<std::string> mipBiasOptOut;
+  // Port addition (Docs/Threads.md): 1 records on the caller's context; N > 1
+  // splits the draws across N deferred contexts (the caller's thread and N - 1
+  // persistent workers) and executes the lists on the caller's context, which
+  // must then be the immediate one. The lists set the render targets and
+  // viewport themselves: the bound views are read back (OMGetRenderTargets),
+  // the viewport must be given here (without it, one thread).
+  int recordingThreads = 1;
+  std::optional<d3dl::VIEWPORT> viewport;
 };
 
 struct SceneStats {
   uint32_t drawsIssued = 0, drawsCulled = 0, shaderVariantsUsed = 0, texturesLoaded = 0;
   uint64_t textureBytes = 0, vertexBytes = 0, indexBytes = 0;
   uint64_t triangles = 0;  // of the whole scene (drawn or not)
+  // The last Render: threads that recorded it (1: the caller's context) and
+  // the draws each recorded, and its wall-clock CPU time from entry to the
+  // last ExecuteCommandList (GPU execution not included).
+  uint32_t recordingThreads = 1;
+  std::vector<uint32_t> drawsPerThread;
+  double recordMs = 0.0;
   std::string ToString() const;
 };
 
