@@ -1,6 +1,6 @@
-// The scene's draws split across deferred contexts (Docs/Threads.md), as the
-// 3DMark 11 design: the main thread records on a deferred context too and
-// alone executes the lists on the immediate context; the workers record only.
+// The scene's draws split across threads (Docs/Threads.md), as the 3DMark 11
+// design: the main thread records on the immediate context and executes the
+// lists there; the workers record only, each on its own deferred context.
 #include <atomic>
 
 #include "scene/SceneImpl.h"
@@ -19,7 +19,8 @@ bool SceneImpl::RecordThreaded(d3dl::DeviceContext* immediate, const SceneRender
       return false;
     }
   }
-  // With references added, released at the end.
+  // A list starts from the default state: the workers bind the caller's
+  // targets (read back with references added, released at the end).
   immediate->OMGetRenderTargets(2, f.rtv, &f.dsv);
   f.viewport = *p.viewport;
 
@@ -27,23 +28,30 @@ bool SceneImpl::RecordThreaded(d3dl::DeviceContext* immediate, const SceneRender
   // this thread builds the draw list; they start drawing once it is published.
   std::atomic<bool> planned{false};
   std::vector<ComPtr<d3dl::CommandList>> lists(static_cast<size_t>(threads));
-  std::vector<uint32_t> issued(size_t(threads), 0);
-  const std::function<void(int)> job = [&](int t) {
+  std::vector<uint32_t> issued(static_cast<size_t>(threads), 0);
+  const auto chunk = [&](int t) {
+    const ChunkRange r = SplitEvenly(uint32_t(drawList.size()), uint32_t(threads), uint32_t(t));
+    return std::pair(drawList.data() + r.first, drawList.data() + r.last);
+  };
+  const std::function<void(int)> worker = [&](int t) {
     d3dl::DeviceContext* dc = pool->Context(t);
     BeginDraws(dc, f, true);
     planned.wait(false, std::memory_order_acquire);
-    const ChunkRange r = SplitEvenly(uint32_t(drawList.size()), uint32_t(threads), uint32_t(t));
-    issued[size_t(t)] = RecordDraws(dc, f, drawList.data() + r.first, drawList.data() + r.last);
+    const auto [first, last] = chunk(t);
+    issued[size_t(t)] = RecordDraws(dc, f, first, last);
     dc->FinishCommandList(0, lists[size_t(t)].GetAddressOf());
   };
-  pool->Start(&job);
+  pool->Start(&worker);
   prepare();
   planned.store(true, std::memory_order_release);
   planned.notify_all();
-  job(0);
+  BeginDraws(immediate, f, false);
+  const auto [first, last] = chunk(0);
+  issued[0] = RecordDraws(immediate, f, first, last);
   pool->Wait();
-  // In draw-list order, so the image is the single-threaded one.
-  for (int t = 0; t < threads; ++t)
+  // In draw-list order after the first chunk, so the image is the
+  // single-threaded one.
+  for (int t = 1; t < threads; ++t)
     if (lists[size_t(t)] && issued[size_t(t)] > 0) immediate->ExecuteCommandList(lists[size_t(t)].Get(), 1);
   for (d3dl::RenderTargetView* v : f.rtv)
     if (v) v->Release();

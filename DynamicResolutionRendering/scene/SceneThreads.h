@@ -1,7 +1,7 @@
 // Multithreaded scene recording (Docs/Threads.md): persistent worker threads,
-// one deferred context per thread, and the split of the frame's draw list
-// into contiguous chunks. Thread 0 is the caller's (it records its chunk on a
-// deferred context too, then executes every list on the immediate context);
+// one deferred context each, and the split of the frame's draw list into
+// contiguous chunks. Thread 0 is the caller's: it records the first chunk on
+// the immediate context, then executes the workers' lists there in order;
 // threads 1.. are workers created once and woken each frame.
 #pragma once
 
@@ -29,15 +29,15 @@ ChunkRange SplitEvenly(uint32_t draws, uint32_t chunks, uint32_t chunk);
 
 class RecordingPool {
  public:
-  // `threads` (>= 2) deferred contexts and threads - 1 worker threads; null
-  // with *error when a deferred context cannot be created.
+  // threads - 1 worker threads (threads >= 2), each with its deferred
+  // context; null with *error when a deferred context cannot be created.
   static std::unique_ptr<RecordingPool> Create(d3dl::Device* device, int threads, std::string* error);
   ~RecordingPool();  // stops and joins the workers
   RecordingPool(const RecordingPool&) = delete;
   RecordingPool& operator=(const RecordingPool&) = delete;
 
-  int Threads() const { return int(contexts_.size()); }
-  d3dl::DeviceContext* Context(int thread) const { return contexts_[thread].Get(); }
+  int Threads() const { return int(contexts_.size()) + 1; }  // the caller's included
+  d3dl::DeviceContext* Context(int thread) const { return contexts_[size_t(thread - 1)].Get(); }  // 1..
 
   // Wakes the workers to run job(1) .. job(Threads() - 1); the caller runs
   // job(0) itself between Start and Wait. Wait returns when every worker's
@@ -49,7 +49,7 @@ class RecordingPool {
   RecordingPool() = default;
   void WorkerLoop(int thread);
 
-  std::vector<d3dl::ComPtr<d3dl::DeviceContext>> contexts_;
+  std::vector<d3dl::ComPtr<d3dl::DeviceContext>> contexts_;  // of threads 1..
   std::vector<std::thread> workers_;
   std::mutex mutex_;
   std::condition_variable wake_, done_;
