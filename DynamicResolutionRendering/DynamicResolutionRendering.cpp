@@ -461,6 +461,10 @@ void Sample::RenderGui(double elapsed) {
   v.softwareAdapter = m_Device.Adapter().IsSoftware;
   v.adapter = m_Device.Adapter().Description;
   v.lastMessage = m_LastMessage;
+  if (m_Scene) {
+    const SceneStats st = m_Scene->Stats();
+    v.recording = {m_Options.threads, st.drawsPerThread, st.recordMs};
+  }
   v.apply = [this](const Options& o) { ApplySettings(o); };
   m_Gui.Build(v);
   if (m_Gui.Drawn()) m_Passes.CountPass("GUI");
@@ -566,7 +570,9 @@ int Sample::Run() {
   }
   if (!m_Options.report.empty()) written(WriteReport(m_Options.report, &err), "report", m_Options.report);
   if (m_Options.stats && m_Scene) {
-    std::printf("%s\n", m_Scene->Stats().ToString().c_str());
+    const SceneStats st = m_Scene->Stats();
+    std::printf("%s\n", st.ToString().c_str());
+    std::printf("%s\n", st.RecordingString().c_str());
     const uint64_t original = RenderTargetSet::OriginalBytes(m_Device.Width(), m_Device.Height(),
                                                              m_DynamicResolution.GetDynamicBufferWidth(),
                                                              m_DynamicResolution.GetDynamicBufferHeight());

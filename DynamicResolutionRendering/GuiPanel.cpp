@@ -1,4 +1,5 @@
 #include "GuiPanel.h"
+#include "scene/RecordingThreads.h"
 
 #include <imgui.h>
 
@@ -35,7 +36,9 @@ bool SettingsDiffer(const Options& a, const Options& b) {
          a.control != b.control || a.law != b.law || a.fixes != b.fixes ||
          // Upscaling (port addition)
          a.secondaryScreenPercentage != b.secondaryScreenPercentage || a.mipBias != b.mipBias ||
-         a.autoMipBias != b.autoMipBias;
+         a.autoMipBias != b.autoMipBias ||
+         // Recording threads (port addition)
+         a.threads != b.threads;
 }
 
 int OptionPercent(float scale) { return int(std::lround(100.0 * double(scale))); }
@@ -113,6 +116,7 @@ void GuiPanel::Panel(const GuiView& v) {
   for (const std::string& line : TimingLines(v.stats->timing))
     ImGui::TextUnformatted(line.c_str());
   PortSection(&o);
+  ThreadsSection(v, &o);
   ImGui::End();
   if (sliderMoved || SettingsDiffer(o, *v.options)) v.apply(o);
 }
@@ -138,6 +142,16 @@ void GuiPanel::UpscaleSection(Options* o) {
   float bias = float(o->mipBias);
   ImGui::SetNextItemWidth(kComboWidth);
   if (ImGui::SliderFloat("Mip bias", &bias, -2.0f, 2.0f, "%.2f")) o->mipBias = bias;
+}
+
+// Scene recording threads (Docs/Threads.md): --threads and what the last
+// frame used.
+void GuiPanel::ThreadsSection(const GuiView& v, Options* o) {
+  if (!ImGui::CollapsingHeader("Recording threads (port)")) return;
+  ImGui::SetNextItemWidth(kComboWidth);
+  ImGui::SliderInt("Threads (0 auto)", &o->threads, 0, kMaxRecordingThreads);
+  o->threads = std::clamp(o->threads, 0, kMaxRecordingThreads);
+  for (const std::string& line : RecordingLines(v.recording)) ImGui::TextUnformatted(line.c_str());
 }
 
 void GuiPanel::Buttons() {

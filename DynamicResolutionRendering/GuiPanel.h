@@ -36,6 +36,7 @@ struct GuiView {
   double dxutFps = 0.0;  // DXUT's one-second figure (the coordinator's DxutFpsCounter)
   bool vsync = true, softwareAdapter = false;
   std::string backBufferFormat, adapter, lastMessage;
+  RecordingInfo recording;  // port addition: the scene's recording threads (Docs/Threads.md)
   // Called inside Build when the user changed a setting (scales: the applied
   // ones unless a slider moved).
   std::function<void(const Options&)> apply;
@@ -77,6 +78,7 @@ class GuiPanel {
   void FilterAndControl(Options* o);
   void PortSection(Options* o);
   void UpscaleSection(Options* o);  // port addition (Docs/Upscaling.md)
+  void ThreadsSection(const GuiView& v, Options* o);  // port addition (Docs/Threads.md)
   void Text(const GuiView& view);
 
   ImGuiContext* m_ImGui = nullptr;

@@ -36,6 +36,14 @@ std::string SceneStats::ToString() const {
   return b;
 }
 
+std::string SceneStats::RecordingString() const {
+  std::string draws;
+  for (uint32_t n : drawsPerThread) draws += (draws.empty() ? "" : " + ") + std::to_string(n);
+  char b[64];
+  snprintf(b, sizeof b, ", %.3f ms CPU", recordMs);
+  return "recording threads " + std::to_string(recordingThreads) + ": draws " + (draws.empty() ? "-" : draws) + b;
+}
+
 namespace {
 // Names of the compiled variants in Shaders/CMakeLists.txt.
 std::string VariantFile(int v) {
