@@ -351,3 +351,23 @@ TEST(SampleOptions, QuietIsOffByDefaultAndParsed) {
   ASSERT_EQ(Parse({"--quiet"}, &o, &m), ParseStatus::Ok) << m;
   EXPECT_TRUE(o.quiet);
 }
+
+// --threads (Docs/Threads.md): 0 automatic (the default), 1 the immediate
+// context, up to 8; anything else is refused naming the value and the range.
+TEST(SampleOptions, RecordingThreads) {
+  Options o;
+  std::string m;
+  EXPECT_EQ(o.threads, 0);
+  EXPECT_EQ(Parse({"--threads", "3"}, &o, &m), ParseStatus::Ok) << m;
+  EXPECT_EQ(o.threads, 3);
+  EXPECT_EQ(Parse({"--threads=1"}, &o, &m), ParseStatus::Ok) << m;
+  EXPECT_EQ(o.threads, 1);
+  EXPECT_EQ(Parse({"--threads", "9"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --threads: value 9 is out of range [0, 8]");
+  EXPECT_EQ(Parse({"--threads", "-1"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --threads: value -1 is out of range [0, 8]");
+  EXPECT_EQ(Parse({"--threads", "two"}, &o, &m), ParseStatus::Error);
+  EXPECT_NE(m.find("'two' is not a number"), std::string::npos) << m;
+  EXPECT_NE(OptionsToJson(o).find("\"threads\": 1"), std::string::npos);
+  EXPECT_NE(Usage().find("--threads N"), std::string::npos);
+}
