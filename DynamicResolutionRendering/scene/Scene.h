@@ -81,6 +81,10 @@ struct SceneStats {
   uint32_t recordingThreads = 1;
   std::vector<uint32_t> drawsPerThread;
   double recordMs = 0.0;
+  // Per thread, wall clock: from its first draw to the end of its chunk
+  // (workers: FinishCommandList included), and from the wake-up call to the
+  // worker running (0 for the caller's thread). Where the time goes.
+  std::vector<double> chunkMs, wakeMs;
   std::string ToString() const;
   // "recording threads 2: draws 30 + 29, 0.210 ms CPU" (the last Render).
   std::string RecordingString() const;

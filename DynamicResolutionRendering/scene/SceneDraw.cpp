@@ -246,9 +246,13 @@ void Scene::Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p) {
   if (!threaded || !s.RecordThreaded(ctx, p, f, prepare)) {
     prepare();
     SceneImpl::BeginDraws(ctx, f, false);
+    const auto drawing = std::chrono::steady_clock::now();
     const uint32_t issued = s.RecordDraws(ctx, f, s.drawList.data(), s.drawList.data() + s.drawList.size());
     s.stats.recordingThreads = 1;
     s.stats.drawsPerThread.assign(1, issued);
+    const auto drawn = std::chrono::steady_clock::now();
+    s.stats.chunkMs.assign(1, std::chrono::duration<double, std::milli>(drawn - drawing).count());
+    s.stats.wakeMs.assign(1, 0.0);
   }
   SceneImpl::EndDraws(ctx);
   ctx->EndEvent();

@@ -163,6 +163,8 @@ double Median(std::vector<double> v) {
 
 // Median Render time of the benchmark's frames; the mean goes to the counters.
 std::map<std::string, double> g_medianMs;
+// Every frame's per-thread chunk and wake-up times, by thread count.
+std::map<int, std::vector<std::vector<double>>> g_chunkMs, g_wakeMs;
 
 void RenderFrames(benchmark::State& state, int threads, const std::string& key) {
   std::vector<double> ms;
@@ -170,6 +172,13 @@ void RenderFrames(benchmark::State& state, int threads, const std::string& key) 
     const double t = g_frame->Render(threads);
     state.SetIterationTime(t * 1e-3);
     ms.push_back(t);
+    const drr::SceneStats st = g_frame->Stats();
+    for (size_t k = 0; k < st.chunkMs.size(); ++k) {
+      g_chunkMs[threads].resize(st.chunkMs.size());
+      g_wakeMs[threads].resize(st.chunkMs.size());
+      g_chunkMs[threads][k].push_back(st.chunkMs[k]);
+      g_wakeMs[threads][k].push_back(k < st.wakeMs.size() ? st.wakeMs[k] : 0.0);
+    }
     g_frame->Finish();
   }
   g_medianMs[key] = Median(ms);
@@ -206,6 +215,23 @@ int Smoke() {
   const bool ok = !images[0].empty() && lit > 0 && differing == 0 && messages == 0;
   std::printf("%d passed, %d failed\n", ok ? 1 : 0, ok ? 0 : 1);
   return ok ? 0 : 1;
+}
+
+// Where the time goes: each thread's chunk (first draw to the end of its
+// list) and each worker's wake-up delay, medians over every frame.
+void PrintThreadTimes() {
+  for (const auto& [threads, perThread] : g_chunkMs) {
+    std::string chunks, wakes;
+    for (size_t k = 0; k < perThread.size(); ++k) {
+      char b[64];
+      std::snprintf(b, sizeof b, "%s%.3f", k ? " / " : "", Median(perThread[k]));
+      chunks += b;
+      std::snprintf(b, sizeof b, "%s%.3f", k ? " / " : "", Median(g_wakeMs[threads][k]));
+      wakes += b;
+    }
+    std::printf("%d thread(s): chunk ms per thread (medians) %s; wake-up ms %s\n", threads, chunks.c_str(),
+                wakes.c_str());
+  }
 }
 
 void PrintPairs(int pairs, int threads) {
@@ -271,6 +297,7 @@ int main(int argc, char** argv) {
     benchmark::Initialize(&n, args.data());
     benchmark::RunSpecifiedBenchmarks();
     std::printf("draws per thread at %d threads: %s\n", threads, DrawsPerThread(g_frame->Stats()).c_str());
+    PrintThreadTimes();
     PrintPairs(pairs, threads);
     benchmark::Shutdown();
   }
