@@ -39,9 +39,11 @@ std::string SceneStats::ToString() const {
 std::string SceneStats::RecordingString() const {
   std::string draws;
   for (uint32_t n : drawsPerThread) draws += (draws.empty() ? "" : " + ") + std::to_string(n);
-  char b[64];
+  char b[96];
   snprintf(b, sizeof b, ", %.3f ms CPU", recordMs);
-  return "recording threads " + std::to_string(recordingThreads) + ": draws " + (draws.empty() ? "-" : draws) + b;
+  std::string taken;
+  if (callerChunks > 1) taken = " (the main thread drew " + std::to_string(callerChunks) + " chunks)";
+  return "recording threads " + std::to_string(recordingThreads) + ": draws " + (draws.empty() ? "-" : draws) + taken + b;
 }
 
 namespace {

@@ -69,6 +69,9 @@ struct SceneRenderParams {
   // the viewport must be given here (without it, one thread).
   int recordingThreads = 1;
   std::optional<d3dl::VIEWPORT> viewport;
+  // The caller's thread, done with its chunk, draws the next chunks itself
+  // while their workers have not started (false: always the workers; tests).
+  bool callerTakesLateChunks = true;
 };
 
 struct SceneStats {
@@ -85,6 +88,9 @@ struct SceneStats {
   // (workers: FinishCommandList included), and from the wake-up call to the
   // worker running (0 for the caller's thread). Where the time goes.
   std::vector<double> chunkMs, wakeMs;
+  // Chunks the caller's thread drew: 1, more when it took over the chunks of
+  // workers that had not started yet (their drawsPerThread are then 0).
+  uint32_t callerChunks = 1;
   std::string ToString() const;
   // "recording threads 2: draws 30 + 29, 0.210 ms CPU" (the last Render).
   std::string RecordingString() const;

@@ -253,6 +253,7 @@ void Scene::Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p) {
     const auto drawn = std::chrono::steady_clock::now();
     s.stats.chunkMs.assign(1, std::chrono::duration<double, std::milli>(drawn - drawing).count());
     s.stats.wakeMs.assign(1, 0.0);
+    s.stats.callerChunks = 1;
   }
   SceneImpl::EndDraws(ctx);
   ctx->EndEvent();

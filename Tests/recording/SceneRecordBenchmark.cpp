@@ -135,6 +135,7 @@ class SceneFrame {
     return pixels;
   }
   drr::SceneStats Stats() const { return scene_->Stats(); }
+  void SetWorkersAlways(bool on) { params_.callerTakesLateChunks = !on; }
   uint64_t Messages() const {
     d3dl::DEVICE_STATS stats;
     device_->GetStats(&stats);
@@ -195,6 +196,7 @@ std::string DrawsPerThread(const drr::SceneStats& s) {
 }
 
 int Smoke() {
+  g_frame->SetWorkersAlways(true);  // every chunk on its worker's deferred context
   std::vector<uint8_t> images[3];
   for (int t = 1; t <= 3; ++t) {
     g_frame->Render(t);

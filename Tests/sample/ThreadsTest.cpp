@@ -53,15 +53,24 @@ bool SamePixels(const Image& a, const Image& b) {
   return a.width == b.width && a.height == b.height && a.pixels == b.pixels;
 }
 
-// Every thread recorded a contiguous share: counts differ by at most one and
-// add up to the draws issued.
-void ExpectEvenSplit(const SceneStats& s, uint32_t threads) {
+// The per-thread counts add up to the draws issued. Each thread drew one
+// chunk (counts within one of each other), unless the main thread took over
+// the chunks of workers the scheduler had not run yet (a loaded machine):
+// then those workers drew nothing.
+void ExpectSplit(const SceneStats& s, uint32_t threads) {
   EXPECT_EQ(s.recordingThreads, threads);
   ASSERT_EQ(s.drawsPerThread.size(), threads);
   EXPECT_EQ(std::accumulate(s.drawsPerThread.begin(), s.drawsPerThread.end(), 0u), s.drawsIssued);
-  const auto [lo, hi] = std::minmax_element(s.drawsPerThread.begin(), s.drawsPerThread.end());
-  EXPECT_LE(*hi - *lo, 1u);
-  EXPECT_GT(*lo, 0u);
+  ASSERT_GE(s.callerChunks, 1u);
+  ASSERT_LE(s.callerChunks, threads);
+  for (uint32_t t = 1; t < s.callerChunks; ++t) EXPECT_EQ(s.drawsPerThread[t], 0u);
+  const auto from = s.drawsPerThread.begin() + (s.callerChunks > 1 ? s.callerChunks : 0);
+  const auto [lo, hi] = std::minmax_element(from, s.drawsPerThread.end());
+  if (lo != s.drawsPerThread.end()) {
+    EXPECT_LE(*hi - *lo, 1u);
+    EXPECT_GT(*lo, 0u);
+  }
+  if (s.callerChunks > 1) std::printf("[threads] the main thread drew %u chunks\n", s.callerChunks);
 }
 
 }  // namespace
@@ -103,8 +112,10 @@ TEST(RecordingThreads, ArenaIsBitIdenticalOnOneTwoAndThreeThreads) {
     }
     const Frame one = RenderArena(base);
     ASSERT_FALSE(one.colour.Empty());
-    if (fixes) EXPECT_GT(one.stats.drawsCulled, 0u);
-    ExpectEvenSplit(one.stats, 1);
+    if (fixes) {
+      EXPECT_GT(one.stats.drawsCulled, 0u);
+    }
+    ExpectSplit(one.stats, 1);
     for (int threads : {2, 3}) {
       Options o = base;
       o.threads = threads;
@@ -116,7 +127,7 @@ TEST(RecordingThreads, ArenaIsBitIdenticalOnOneTwoAndThreeThreads) {
       EXPECT_TRUE(SamePixels(one.velocity, many.velocity)) << threads << " threads, fixes " << fixes;
       EXPECT_EQ(many.stats.drawsIssued, one.stats.drawsIssued);
       EXPECT_EQ(many.stats.drawsCulled, one.stats.drawsCulled);
-      ExpectEvenSplit(many.stats, uint32_t(threads));
+      ExpectSplit(many.stats, uint32_t(threads));
     }
   }
 }
