@@ -186,6 +186,7 @@ struct SceneImpl {
   std::vector<DrawRecord> drawList;  // this frame's, rebuilt by Render
 
   // SceneRecordThreads.cpp: the split across deferred contexts.
+  bool EnsurePool(int threads);
   bool RecordThreaded(d3dl::DeviceContext* immediate, const SceneRenderParams& p, FrameDraw& f,
                       const std::function<void()>& prepare);
   std::unique_ptr<RecordingPool> pool;  // last member: joined before the device goes
