@@ -138,8 +138,8 @@ constexpr Spec kSpecs[] = {
         "rasterisers such as lavapipe), 1 trilinear, 2..16 (default 0)"),
     Int("--threads", "N", &Options::threads, 0, kMaxRecordingThreads,
         "scene recording threads ({range}): 0 auto (one per core, at\n"
-        "most 4), 1 the immediate context as the original, N: N deferred\n"
-        "contexts on persistent worker threads, same image (default 0)"),
+        "most 4), 1 the immediate context as the original, N: the main\n"
+        "thread and N-1 workers on deferred contexts, same image (default 0)"),
     Number("--time", "T", &Options::time, 0, 1e7, "fixed animation time in seconds (reproducible frames)"),
     Number("--fixed-dt", "DT", &Options::fixedDt, 0, 10, "animation advances DT seconds per frame ({range})"),
     Path("--shader-dir", "DIR", &Options::shaderDir, "compiled shaders (default: the build's, or DRR_SHADER_DIR)"),

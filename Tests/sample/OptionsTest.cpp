@@ -225,7 +225,7 @@ TEST(SampleOptions, HelpAndParserShareOneTable) {
       EXPECT_EQ(m.find("unknown option"), std::string::npos) << word << ": " << m;
     }
   }
-  EXPECT_EQ(shown, 44);  // every option of the sample once (-h is --help's other name)
+  EXPECT_EQ(shown, 45);  // every option of the sample once (-h is --help's other name)
   for (const FixInfo& f : FixTable()) EXPECT_NE(help.find(std::string("  ") + f.name + " "), std::string::npos);
   for (int f = 0; f < static_cast<int>(Filter::Count); ++f)
     EXPECT_NE(help.find(FilterOption(static_cast<Filter>(f))), std::string::npos);
