@@ -6,7 +6,8 @@
 // ExecuteCommandList calls; not timed: Flush and the wait for the GPU.
 //
 //   drr_scene_record_bench [--scene PATH] [--threads N] [--pairs K] [--frames F]
-//                          [--size WxH] [google benchmark flags]
+//                          [--size WxH] [--no-take-over] [google benchmark flags]
+// --no-take-over: every chunk on its worker, however late the worker starts.
 //   drr_scene_record_bench --smoke [--scene PATH]   1, 2 and 3 threads give the same
 //                                                  image, validation-clean
 #include <benchmark/benchmark.h>
@@ -258,11 +259,12 @@ int main(int argc, char** argv) {
   std::string scene = DRR_ARENA_LARGE_DIR "/scene_description.txt";
   int threads = 2, pairs = 10, frames = 30;
   uint32_t w = 320, h = 180;
-  bool smoke = false;
+  bool smoke = false, takeOver = true;
   std::vector<char*> args{argv[0]};
   for (int i = 1; i < argc; ++i) {
     const auto value = [&] { return i + 1 < argc ? argv[++i] : (char*)""; };
     if (std::strcmp(argv[i], "--smoke") == 0) smoke = true;
+    else if (std::strcmp(argv[i], "--no-take-over") == 0) takeOver = false;
     else if (std::strcmp(argv[i], "--scene") == 0) scene = value();
     else if (std::strcmp(argv[i], "--threads") == 0) threads = std::atoi(value());
     else if (std::strcmp(argv[i], "--pairs") == 0) pairs = std::atoi(value());
@@ -282,6 +284,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "scene record benchmark: %s\n", error.c_str());
     return 1;
   }
+  g_frame->SetWorkersAlways(!takeOver);
   int rc = 0;
   if (smoke) {
     rc = Smoke();
