@@ -86,8 +86,8 @@ bool SceneImpl::Culled(const Entry& e, const DrawItem& it, const glm::mat4& worl
   return ndc.x + r < -1.f || ndc.y + r < -1.f || ndc.x - r > 1.f || ndc.y - r > 1.f;
 }
 
-// Culled on the calling thread, so that the per-thread draw counts of the
-// split are the draws actually recorded.
+// The draw's shaders and sampler, created at first use: on the calling
+// thread, before the split (creation is not thread-safe, recording only reads).
 bool SceneImpl::Resolve(const SceneRenderParams& p, DrawRecord& r) {
   const int variant = VariantIndex(r.material->hasNormal, r.material->hasSpecular, p.writeVelocity);
   r.ps = Variant(variant);
@@ -96,7 +96,8 @@ bool SceneImpl::Resolve(const SceneRenderParams& p, DrawRecord& r) {
   return true;
 }
 
-// One entry's draws, appended to the draw list. A DECAL entry draws all its
+// One entry's draws, culled and appended to the draw list (culled here, so that
+// the chunks of the split hold draws that are recorded). A DECAL entry draws all its
 // meshes (blended, in the description's order, as the original); other
 // entries draw their opaque meshes, or with blendedOnly the alpha-blended
 // materials of model formats the original never loaded, after everything else.
