@@ -12,6 +12,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "scene/RecordingThreads.h"
 #include "scene/Scene.h"
 
 #ifndef DRR_DEFAULT_SCENE
@@ -405,6 +406,7 @@ SceneRenderParams Sample::SceneParams() const {
   p.tessellation.enabled = m_Options.tessellation;  // the viewport height is set per frame (OnFrameRender)
   p.tessellation.pixelsPerEdge = float(m_Options.tessPixelsPerEdge);
   p.tessellation.maxFactor = float(m_Options.maxTessFactor);
+  p.recordingThreads = RecordingThreadsFor(m_Options.threads);
   return p;
 }
 
@@ -426,6 +428,7 @@ void Sample::OnFrameRender(double elapsed) {
   SceneRenderParams params = SceneParams();
   params.writeVelocity = scene.count == 2;
   params.tessellation.viewportHeight = setup.sceneViewport.Height;  // the dynamic viewport: factors follow the scale
+  params.viewport = setup.sceneViewport;  // what FramePasses::Scene sets: deferred contexts set it too
 
   timers.frame.Start(ctx);
   m_Passes.Clear(ctx, setup, m_Targets, scene);
@@ -507,6 +510,10 @@ void Sample::RenderGui(double elapsed) {
   v.softwareAdapter = m_Device.Adapter().IsSoftware;
   v.adapter = m_Device.Adapter().Description;
   v.lastMessage = m_LastMessage;
+  if (m_Scene) {
+    const SceneStats st = m_Scene->Stats();
+    v.recording = {m_Options.threads, st.drawsPerThread, st.recordMs};
+  }
   v.apply = [this](const Options& o) { ApplySettings(o); };
   m_Gui.Build(v);
   if (m_Gui.Drawn()) m_Passes.CountPass("GUI");
@@ -612,7 +619,9 @@ int Sample::Run() {
   }
   if (!m_Options.report.empty()) written(WriteReport(m_Options.report, &err), "report", m_Options.report);
   if (m_Options.stats && m_Scene) {
-    std::printf("%s\n", m_Scene->Stats().ToString().c_str());
+    const SceneStats st = m_Scene->Stats();
+    std::printf("%s\n", st.ToString().c_str());
+    std::printf("%s\n", st.RecordingString().c_str());
     const uint64_t original = RenderTargetSet::OriginalBytes(m_Device.Width(), m_Device.Height(),
                                                              m_DynamicResolution.GetDynamicBufferWidth(),
                                                              m_DynamicResolution.GetDynamicBufferHeight());

@@ -193,7 +193,10 @@ bool FrameLog::WriteReport(const std::string& path, const ReportInfo& info, std:
     j.BeginObject("scene_stats").Inline().Value("draws_issued", st.drawsIssued).Value("draws_culled", st.drawsCulled);
     j.Value("triangles", st.triangles).Value("texture_bytes", st.textureBytes);
     if (st.tessellatedDraws) j.Value("tessellated_draws", st.tessellatedDraws).Value("patches_submitted", st.patchesSubmitted);
-    j.EndObject();
+    j.Value("recording_threads", st.recordingThreads).Value("record_ms", st.recordMs);
+    j.BeginArray("draws_per_thread").Inline();
+    for (uint32_t n : st.drawsPerThread) j.Value({}, n);
+    j.EndArray().EndObject();
   }
   j.BeginArray("warnings");
   if (info.warnings)

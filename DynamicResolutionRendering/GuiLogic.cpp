@@ -77,6 +77,16 @@ std::vector<std::string> StatusLines(const StatusInfo& s) {
   return {line, device};
 }
 
+std::vector<std::string> RecordingLines(const RecordingInfo& r) {
+  std::string draws;
+  for (uint32_t n : r.drawsPerThread) draws += (draws.empty() ? "" : " + ") + std::to_string(n);
+  const size_t threads = r.drawsPerThread.size();
+  return {"Threads: " + std::to_string(threads) + (r.requested == 0 ? " (auto)" : "") +
+              (threads == 1 ? ", immediate context" : ", deferred contexts"),
+          "Draws per thread: " + (draws.empty() ? std::string("-") : draws),
+          Format("Scene recording CPU: %.3f ms", r.recordMs)};
+}
+
 std::vector<std::string> HelpLines(const FixSet& fixes) {
   const bool fixed = fixes.Has(Fix::HelpText);
   std::vector<std::string> lines = {"Controls:", "Fullscreen: F2"};

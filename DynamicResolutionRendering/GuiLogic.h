@@ -70,6 +70,16 @@ constexpr const char* kHelpPrompt = "Press F1 For Help";
 // help-text lists the port's keys instead.
 std::vector<std::string> HelpLines(const FixSet& fixes);
 
+// The "Recording threads (port)" section (Docs/Threads.md): what --threads
+// asked for, the threads that recorded the last frame's scene and the draws
+// each recorded, and that recording's CPU time.
+struct RecordingInfo {
+  int requested = 0;  // Options::threads, 0 = automatic
+  std::vector<uint32_t> drawsPerThread;
+  double recordMs = 0.0;
+};
+std::vector<std::string> RecordingLines(const RecordingInfo& r);
+
 // The "Port fixes" section: one checkbox per row of FixTable(), in order.
 struct FixToggle {
   Fix fix;

@@ -1,4 +1,5 @@
 #include "GuiPanel.h"
+#include "scene/RecordingThreads.h"
 
 #include <imgui.h>
 
@@ -41,7 +42,9 @@ bool SettingsDiffer(const Options& a, const Options& b) {
          a.shadowLaw != b.shadowLaw ||
          // Tessellation (port addition)
          a.tessellation != b.tessellation || a.tessPixelsPerEdge != b.tessPixelsPerEdge ||
-         a.maxTessFactor != b.maxTessFactor;
+         a.maxTessFactor != b.maxTessFactor ||
+         // Recording threads (port addition)
+         a.threads != b.threads;
 }
 
 int OptionPercent(float scale) { return int(std::lround(100.0 * double(scale))); }
@@ -119,6 +122,7 @@ void GuiPanel::Panel(const GuiView& v) {
   for (const std::string& line : TimingLines(v.stats->timing))
     ImGui::TextUnformatted(line.c_str());
   PortSection(&o);
+  ThreadsSection(v, &o);
   ImGui::End();
   if (sliderMoved || SettingsDiffer(o, *v.options)) v.apply(o);
 }
@@ -174,6 +178,16 @@ void GuiPanel::TessellationSection(Options* o) {
   ImGui::SetNextItemWidth(kComboWidth);
   ImGui::SliderInt("Max factor", &o->maxTessFactor, 1, 64);
   ImGui::EndDisabled();
+}
+
+// Scene recording threads (Docs/Threads.md): --threads and what the last
+// frame used.
+void GuiPanel::ThreadsSection(const GuiView& v, Options* o) {
+  if (!ImGui::CollapsingHeader("Recording threads (port)")) return;
+  ImGui::SetNextItemWidth(kComboWidth);
+  ImGui::SliderInt("Threads (0 auto)", &o->threads, 0, kMaxRecordingThreads);
+  o->threads = std::clamp(o->threads, 0, kMaxRecordingThreads);
+  for (const std::string& line : RecordingLines(v.recording)) ImGui::TextUnformatted(line.c_str());
 }
 
 void GuiPanel::Buttons() {

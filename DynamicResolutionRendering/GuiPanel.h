@@ -36,6 +36,7 @@ struct GuiView {
   double dxutFps = 0.0;  // DXUT's one-second figure (the coordinator's DxutFpsCounter)
   bool vsync = true, softwareAdapter = false;
   std::string backBufferFormat, adapter, lastMessage;
+  RecordingInfo recording;  // port addition: the scene's recording threads (Docs/Threads.md)
   // Called inside Build when the user changed a setting (scales: the applied
   // ones unless a slider moved).
   std::function<void(const Options&)> apply;
@@ -79,6 +80,7 @@ class GuiPanel {
   void UpscaleSection(Options* o);  // port addition (Docs/Upscaling.md)
   void DeferredSection(Options* o);  // port addition (Docs/Deferred.md)
   void TessellationSection(Options* o);  // port addition (Docs/Tessellation.md)
+  void ThreadsSection(const GuiView& v, Options* o);  // port addition (Docs/Threads.md)
   void Text(const GuiView& view);
 
   ImGuiContext* m_ImGui = nullptr;

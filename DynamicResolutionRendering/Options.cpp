@@ -5,6 +5,7 @@
 // ControlModeOption and ControlLawOption in ResolutionController.cpp).
 #include "Options.h"
 #include "scene/ImportLimits.h"
+#include "scene/RecordingThreads.h"
 
 #include "Json.h"
 
@@ -135,6 +136,10 @@ constexpr Spec kSpecs[] = {
     Int("--anisotropy", "N", &Options::anisotropy, 0, 16,
         "scene sampler: 0 auto (x16 on GPUs, trilinear on CPU\n"
         "rasterisers such as lavapipe), 1 trilinear, 2..16 (default 0)"),
+    Int("--threads", "N", &Options::threads, 0, kMaxRecordingThreads,
+        "scene recording threads ({range}): 0 auto (one per core, at\n"
+        "most 4), 1 the immediate context as the original, N: the main\n"
+        "thread and N-1 workers on deferred contexts, same image (default 0)"),
     Number("--time", "T", &Options::time, 0, 1e7, "fixed animation time in seconds (reproducible frames)"),
     Number("--fixed-dt", "DT", &Options::fixedDt, 0, 10, "animation advances DT seconds per frame ({range})"),
     Path("--shader-dir", "DIR", &Options::shaderDir, "compiled shaders (default: the build's, or DRR_SHADER_DIR)"),
@@ -431,7 +436,7 @@ std::string OptionsToJson(const Options& o) {
     << ", \"ps_clear\": " << (o.psClear ? "true" : "false")
     << ", \"pause\": " << (o.pause ? "true" : "false")
     << ", \"zoom\": " << (o.zoom ? "true" : "false") << ", \"gui\": " << (o.gui ? "true" : "false")
-    << ", \"anisotropy\": " << o.anisotropy
+    << ", \"anisotropy\": " << o.anisotropy << ", \"threads\": " << o.threads
     << ", \"time\": " << o.time << ", \"fixed_dt\": " << o.fixedDt
     << ", \"validation\": " << (o.validation ? "true" : "false")
     << ", \"fixes\": " << JsonQuote(FixNames(o.fixes))

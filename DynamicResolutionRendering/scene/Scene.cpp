@@ -39,6 +39,16 @@ std::string SceneStats::ToString() const {
   return std::string(b) + t;
 }
 
+std::string SceneStats::RecordingString() const {
+  std::string draws;
+  for (uint32_t n : drawsPerThread) draws += (draws.empty() ? "" : " + ") + std::to_string(n);
+  char b[96];
+  snprintf(b, sizeof b, ", %.3f ms CPU", recordMs);
+  std::string taken;
+  if (callerChunks > 1) taken = " (the main thread drew " + std::to_string(callerChunks) + " chunks)";
+  return "recording threads " + std::to_string(recordingThreads) + ": draws " + (draws.empty() ? "-" : draws) + taken + b;
+}
+
 namespace {
 // Names of the compiled variants in Shaders/CMakeLists.txt.
 std::string VariantFile(int v) {

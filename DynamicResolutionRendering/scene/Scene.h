@@ -14,6 +14,7 @@
 
 #include "ShaderLibrary.h"
 #include "scene/SceneDescription.h"
+#include "d3dl/Types.h"
 #include "scene/SceneVertex.h"
 
 namespace d3dl {
@@ -75,6 +76,17 @@ struct SceneRenderParams {
   // colour (+ velocity); the materials are written, not lit.
   bool gbuffer = false;
   TessellationParams tessellation;
+  // Port addition (Docs/Threads.md): 1 records on the caller's context; N > 1
+  // splits the draws across N deferred contexts (the caller's thread and N - 1
+  // persistent workers) and executes the lists on the caller's context, which
+  // must then be the immediate one. The lists set the render targets and
+  // viewport themselves: the bound views are read back (OMGetRenderTargets),
+  // the viewport must be given here (without it, one thread).
+  int recordingThreads = 1;
+  std::optional<d3dl::VIEWPORT> viewport;
+  // The caller's thread, done with its chunk, draws the next chunks itself
+  // while their workers have not started (false: always the workers; tests).
+  bool callerTakesLateChunks = true;
 };
 
 // The original's lighting constants (its RenderScene values): LIT entries'
@@ -92,7 +104,22 @@ struct SceneStats {
   uint64_t triangles = 0;  // of the whole scene (drawn or not)
   uint32_t tessellatedDraws = 0;  // draws through the hull/domain shaders (--tessellation)
   uint64_t patchesSubmitted = 0;  // their input triangles (the hull shader culls some)
+  // The last Render: threads that recorded it (1: the caller's context) and
+  // the draws each recorded, and its wall-clock CPU time from entry to the
+  // last ExecuteCommandList (GPU execution not included).
+  uint32_t recordingThreads = 1;
+  std::vector<uint32_t> drawsPerThread;
+  double recordMs = 0.0;
+  // Per thread, wall clock: from its first draw to the end of its chunk
+  // (workers: FinishCommandList included), and from the wake-up call to the
+  // worker running (0 for the caller's thread). Where the time goes.
+  std::vector<double> chunkMs, wakeMs;
+  // Chunks the caller's thread drew: 1, more when it took over the chunks of
+  // workers that had not started yet (their drawsPerThread are then 0).
+  uint32_t callerChunks = 1;
   std::string ToString() const;
+  // "recording threads 2: draws 30 + 29, 0.210 ms CPU" (the last Render).
+  std::string RecordingString() const;
 };
 
 struct SceneImpl;

@@ -1,8 +1,11 @@
 // The scene's frame: the original's matrix ring (frame move, pause, resize
-// reset), its culling, and the draws in the description's order.
+// reset), its culling, the draw list in the description's order and its
+// recording.
 #include <algorithm>
 #include <cmath>
+#include <chrono>
 #include <cstring>
+#include <functional>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -83,68 +86,122 @@ bool SceneImpl::Culled(const Entry& e, const DrawItem& it, const glm::mat4& worl
   return ndc.x + r < -1.f || ndc.y + r < -1.f || ndc.x - r > 1.f || ndc.y - r > 1.f;
 }
 
-void SceneImpl::DrawItemNow(d3dl::DeviceContext* ctx, const SceneRenderParams& p, const Entry& e, const DrawItem& it,
-                            const glm::mat4& world, const glm::mat4& jitter, const glm::vec3& eye) {
-  const GpuMesh& m = e.meshes[it.mesh];
-  const GpuMaterial& mat = e.materials[m.material < e.materials.size() ? m.material : 0];
-  const int variant = VariantIndex(mat.hasNormal, mat.hasSpecular, p.writeVelocity);
-  d3dl::PixelShader* shader = p.gbuffer ? GBufferVariant(variant) : Variant(variant);
-  d3dl::VertexShader* vshader = nullptr;
-  d3dl::InputLayout* il = nullptr;
-  const TessMode tess = TessModeFor(p, e, m);  // None unless --tessellation and a rule (SceneTessellation.cpp)
-  if (!shader || (tess == TessMode::None && !VertexStage(variant, &vshader, &il))) return;
-  d3dl::MAPPED_SUBRESOURCE map;
-  if (FAILED(ctx->Map(objectCB.Get(), 0, d3dl::MAP_WRITE_DISCARD, 0, &map))) return;
-  // Both matrices jittered alike, so the jitter never shows as velocity.
-  const ObjectConstants oc{jitter * it.wvp[history.current], jitter * it.wvp[history.previous], world, mat.tint,
-                           glm::vec4(eye, 1.f)};
-  std::memcpy(map.pData, &oc, sizeof oc);
-  ctx->Unmap(objectCB.Get(), 0);
-  if (tess == TessMode::None) {
-    ctx->IASetInputLayout(il);
-    ctx->VSSetShader(vshader);
-  } else if (!BindTessellation(ctx, p, e, m, mat, tess)) {
-    return;
-  }
-  ctx->PSSetShader(shader);
-  d3dl::ShaderResourceView* views[3] = {mat.diffuse.Get(), mat.normal.Get(), mat.specular.Get()};
-  ctx->PSSetShaderResources(0, 3, views);
-  if (p.viewMipBias) {
-    d3dl::SamplerState* smp = MaterialSampler(p, mat);
-    ctx->PSSetSamplers(0, 1, &smp);
-  }
-  ctx->RSSetState(mat.twoSided ? rsNone.Get() : rsBack.Get());
-  d3dl::Buffer* vb = m.vb.Get();
-  UINT stride = sizeof(SceneVertex), offset = 0;
-  ctx->IASetVertexBuffers(0, 1, &vb, &stride, &offset);
-  ctx->IASetIndexBuffer(m.ib.Get(), m.indexFormat, 0);
-  ctx->DrawIndexed(m.indexCount, 0, 0);
-  if (tess != TessMode::None) UnbindTessellation(ctx);
-  ++stats.drawsIssued;
+// The draw's shaders and sampler, created at first use: on the calling
+// thread, before the split (creation is not thread-safe, recording only reads).
+// A tessellated draw's vertex stage is the tessellation's (BindTessellation).
+bool SceneImpl::Resolve(const SceneRenderParams& p, DrawRecord& r) {
+  const int variant = VariantIndex(r.material->hasNormal, r.material->hasSpecular, p.writeVelocity);
+  r.ps = p.gbuffer ? GBufferVariant(variant) : Variant(variant);
+  if (!r.ps || (r.tess == TessMode::None && !VertexStage(variant, &r.vs, &r.il))) return false;
+  r.sampler = p.viewMipBias ? MaterialSampler(p, *r.material) : nullptr;
+  return true;
 }
 
-// One entry's draws. A DECAL entry draws all its meshes (blended, in the
-// description's order, as the original); other entries draw their opaque
-// meshes, or with blendedOnly the alpha-blended materials of model formats the
-// original never loaded, after everything else.
-void SceneImpl::DrawEntry(d3dl::DeviceContext* ctx, const SceneRenderParams& p, Entry& e, bool blendedOnly,
-                          const glm::mat4& jitter, const glm::vec3& eye, const glm::vec4 planes[6]) {
+// One entry's draws, culled and appended to the draw list (culled here, so that
+// the chunks of the split hold draws that are recorded). A DECAL entry draws all its
+// meshes (blended, in the description's order, as the original); other
+// entries draw their opaque meshes, or with blendedOnly the alpha-blended
+// materials of model formats the original never loaded, after everything else.
+void SceneImpl::CollectEntry(const SceneRenderParams& p, const Entry& e, bool blendedOnly, const glm::vec4 planes[6]) {
   const bool decalEntry = e.desc.type == EntryType::Decal;
   if (e.desc.hidden || (blendedOnly && decalEntry)) return;
   if (e.desc.type == EntryType::Camera && !p.showCameras) return;
   d3dl::Buffer* light = e.desc.type == EntryType::Unlit ? unlitCB.Get() : litCB.Get();
-  ctx->PSSetConstantBuffers(1, 1, &light);
   for (const DrawItem& it : e.items) {
     const GpuMesh& m = e.meshes[it.mesh];
     const GpuMaterial& mat = e.materials[m.material < e.materials.size() ? m.material : 0];
     if (!decalEntry && mat.blend != blendedOnly) continue;
-    const glm::mat4 world = e.transform * e.globals[it.node];
-    if (Culled(e, it, world, planes, p.frustumCulling)) {
+    DrawRecord r{&m, &mat, &it, e.transform * e.globals[it.node]};
+    if (Culled(e, it, r.world, planes, p.frustumCulling)) {
       ++stats.drawsCulled;
       continue;
     }
-    DrawItemNow(ctx, p, e, it, world, jitter, eye);
+    r.lightCB = light;
+    r.decal = decalEntry || blendedOnly;
+    r.entry = &e;
+    r.tess = TessModeFor(p, e, m);  // None unless --tessellation and a rule (SceneTessellation.cpp)
+    if (!Resolve(p, r)) continue;
+    drawList.push_back(r);
+    if (r.tess != TessMode::None) {
+      ++stats.tessellatedDraws;
+      stats.patchesSubmitted += m.indexCount / 3;
+    }
   }
+}
+
+// The state every recording context starts with (a deferred context also
+// needs the caller's render targets and viewport: a list starts from the
+// default state, as in D3D11).
+void SceneImpl::BeginDraws(d3dl::DeviceContext* ctx, const FrameDraw& f, bool setTargets) {
+  if (setTargets) {
+    UINT count = 0;
+    while (count < std::size(f.rtv) && f.rtv[count]) ++count;
+    ctx->OMSetRenderTargets(count, f.rtv, f.dsv);
+    ctx->RSSetViewports(1, &f.viewport);
+  }
+  ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+  ctx->VSSetConstantBuffers(0, 1, &f.objectCB);
+  ctx->PSSetConstantBuffers(0, 1, &f.objectCB);
+  ctx->PSSetSamplers(0, 1, &f.sampler);
+}
+
+// Draws [first, last) of the draw list on ctx; the per-object constants are
+// a WRITE_DISCARD Map per draw on ctx. Reads only: safe on several threads at
+// once, each with its own context. Returns the draws issued.
+uint32_t SceneImpl::RecordDraws(d3dl::DeviceContext* ctx, const FrameDraw& f, const DrawRecord* first,
+                                const DrawRecord* last) const {
+  uint32_t issued = 0;
+  int decal = -1;
+  d3dl::Buffer* light = nullptr;
+  for (const DrawRecord* r = first; r != last; ++r) {
+    if (int(r->decal) != decal) {
+      decal = int(r->decal);
+      ctx->OMSetDepthStencilState(r->decal ? dsDecal.Get() : dsOpaque.Get(), 0);
+      ctx->OMSetBlendState(r->decal ? f.decalBlend : nullptr, nullptr, 0xffffffffu);
+    }
+    if (r->lightCB != light) {
+      light = r->lightCB;
+      ctx->PSSetConstantBuffers(1, 1, &light);
+    }
+    d3dl::MAPPED_SUBRESOURCE map;
+    if (FAILED(ctx->Map(f.objectCB, 0, d3dl::MAP_WRITE_DISCARD, 0, &map))) continue;
+    // Both matrices jittered alike, so the jitter never shows as velocity.
+    const ObjectConstants oc{f.jitter * r->item->wvp[f.current], f.jitter * r->item->wvp[f.previous], r->world,
+                             r->material->tint, glm::vec4(f.eye, 1.f)};
+    std::memcpy(map.pData, &oc, sizeof oc);
+    ctx->Unmap(f.objectCB, 0);
+    const GpuMaterial& mat = *r->material;
+    if (r->tess == TessMode::None) {
+      ctx->IASetInputLayout(r->il);
+      ctx->VSSetShader(r->vs);
+    } else if (!BindTessellation(ctx, *f.params, *r->entry, *r->mesh, mat, r->tess)) {
+      continue;
+    }
+    ctx->PSSetShader(r->ps);
+    d3dl::ShaderResourceView* views[3] = {mat.diffuse.Get(), mat.normal.Get(), mat.specular.Get()};
+    ctx->PSSetShaderResources(0, 3, views);
+    if (r->sampler) ctx->PSSetSamplers(0, 1, &r->sampler);
+    ctx->RSSetState(mat.twoSided ? rsNone.Get() : rsBack.Get());
+    const GpuMesh& m = *r->mesh;
+    d3dl::Buffer* vb = m.vb.Get();
+    UINT stride = sizeof(SceneVertex), offset = 0;
+    ctx->IASetVertexBuffers(0, 1, &vb, &stride, &offset);
+    ctx->IASetIndexBuffer(m.ib.Get(), m.indexFormat, 0);
+    ctx->DrawIndexed(m.indexCount, 0, 0);
+    if (r->tess != TessMode::None) UnbindTessellation(ctx);
+    ++issued;
+  }
+  return issued;
+}
+
+// The caller's context after the scene: default blend, depth and rasterizer
+// states, no scene textures bound.
+void SceneImpl::EndDraws(d3dl::DeviceContext* ctx) {
+  ctx->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
+  ctx->OMSetDepthStencilState(nullptr, 0);
+  ctx->RSSetState(nullptr);
+  d3dl::ShaderResourceView* none[3] = {};
+  ctx->PSSetShaderResources(0, 3, none);
 }
 
 // TAAU's view mip bias: the scene's sampler with MipLODBias = bias (1/16
@@ -171,46 +228,59 @@ d3dl::SamplerState* SceneImpl::MaterialSampler(const SceneRenderParams& p, const
   return ViewBiasSampler(*p.viewMipBias);
 }
 
+// The frame's draw list (matrix history, culling, shader resolution) is built
+// on the calling thread; the draws are recorded there too, or split across
+// the recording threads (SceneRecordThreads.cpp).
 void Scene::Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p) {
+  const auto start = std::chrono::steady_clock::now();
   SceneImpl& s = *impl_;
   s.stats.drawsIssued = s.stats.drawsCulled = 0;
   s.stats.tessellatedDraws = 0;
   s.stats.patchesSubmitted = 0;
   if (!ctx) return;
-  const glm::mat4 viewProj = p.proj * p.view;
-  if (p.paused && s.history.started) {
-    s.FramePaused(p.target);
-  } else {
-    if (p.resetHistory || !s.history.started) s.ResetHistory(p.view, viewProj);
-    s.FrameMove(p.view, viewProj, p.target);
-  }
-  const glm::mat4 jitter = glm::translate(glm::mat4(1.f), glm::vec3(p.jitterNdc, 0.f));
-  const glm::vec3 eye = p.shadingEye ? *p.shadingEye : glm::vec3(glm::inverse(s.history.view)[3]);
-  glm::vec4 planes[6];
-  FrustumPlanes(p.proj * s.history.view, planes);
-  s.PrepareTessellation(p, planes);
+  FrameDraw f;
+  f.params = &p;
+  f.objectCB = s.objectCB.Get();
+  f.sampler = p.mipBiasSampler ? s.samplerBias.Get() : s.samplerAniso.Get();
+  const std::function<void()> prepare = [&] {
+    const glm::mat4 viewProj = p.proj * p.view;
+    if (p.paused && s.history.started) {
+      s.FramePaused(p.target);
+    } else {
+      if (p.resetHistory || !s.history.started) s.ResetHistory(p.view, viewProj);
+      s.FrameMove(p.view, viewProj, p.target);
+    }
+    f.jitter = glm::translate(glm::mat4(1.f), glm::vec3(p.jitterNdc, 0.f));
+    f.eye = p.shadingEye ? *p.shadingEye : glm::vec3(glm::inverse(s.history.view)[3]);
+    f.current = s.history.current;
+    f.previous = s.history.previous;
+    glm::vec4 planes[6];
+    FrustumPlanes(p.proj * s.history.view, planes);
+    s.PrepareTessellation(p, planes);
+    f.decalBlend = s.DecalBlend(p.gbuffer);
+    s.drawList.clear();
+    for (const Entry& e : s.entries) s.CollectEntry(p, e, false, planes);
+    for (const Entry& e : s.entries) s.CollectEntry(p, e, true, planes);
+  };
   ctx->BeginEvent("Scene");
-  ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLELIST);
-  d3dl::Buffer* cb = s.objectCB.Get();
-  ctx->VSSetConstantBuffers(0, 1, &cb);
-  ctx->PSSetConstantBuffers(0, 1, &cb);
-  d3dl::SamplerState* smp = p.mipBiasSampler ? s.samplerBias.Get() : s.samplerAniso.Get();
-  ctx->PSSetSamplers(0, 1, &smp);
-  for (Entry& e : s.entries) {
-    const bool decal = e.desc.type == EntryType::Decal;
-    ctx->OMSetDepthStencilState(decal ? s.dsDecal.Get() : s.dsOpaque.Get(), 0);
-    ctx->OMSetBlendState(decal ? s.DecalBlend(p.gbuffer) : nullptr, nullptr, 0xffffffffu);
-    s.DrawEntry(ctx, p, e, false, jitter, eye, planes);
+  const bool threaded = p.recordingThreads > 1 && p.viewport && ctx->GetType() == d3dl::DEVICE_CONTEXT_IMMEDIATE;
+  if (!threaded || !s.RecordThreaded(ctx, p, f, prepare)) {
+    prepare();
+    SceneImpl::BeginDraws(ctx, f, false);
+    const auto drawing = std::chrono::steady_clock::now();
+    const uint32_t issued = s.RecordDraws(ctx, f, s.drawList.data(), s.drawList.data() + s.drawList.size());
+    s.stats.recordingThreads = 1;
+    s.stats.drawsPerThread.assign(1, issued);
+    const auto drawn = std::chrono::steady_clock::now();
+    s.stats.chunkMs.assign(1, std::chrono::duration<double, std::milli>(drawn - drawing).count());
+    s.stats.wakeMs.assign(1, 0.0);
+    s.stats.callerChunks = 1;
   }
-  ctx->OMSetDepthStencilState(s.dsDecal.Get(), 0);
-  ctx->OMSetBlendState(s.DecalBlend(p.gbuffer), nullptr, 0xffffffffu);
-  for (Entry& e : s.entries) s.DrawEntry(ctx, p, e, true, jitter, eye, planes);
-  ctx->OMSetBlendState(nullptr, nullptr, 0xffffffffu);
-  ctx->OMSetDepthStencilState(nullptr, 0);
-  ctx->RSSetState(nullptr);
-  d3dl::ShaderResourceView* none[3] = {};
-  ctx->PSSetShaderResources(0, 3, none);
+  SceneImpl::EndDraws(ctx);
   ctx->EndEvent();
+  s.stats.drawsIssued = 0;
+  for (uint32_t n : s.stats.drawsPerThread) s.stats.drawsIssued += n;
+  s.stats.recordMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace drr

@@ -15,6 +15,7 @@
 #include "scene/ModelLoader.h"
 #include "scene/Scene.h"
 #include "scene/SceneDescription.h"
+#include "scene/SceneThreads.h"
 
 namespace drr {
 
@@ -117,6 +118,38 @@ struct MatrixHistory {
   glm::mat4 view{1.f};            // the view of the last frame move (culling)
 };
 
+// One draw of the frame, culled and with its shaders and sampler resolved on
+// the calling thread before the split (their lazy creation is not
+// thread-safe): the recording threads only read it.
+struct DrawRecord {
+  const GpuMesh* mesh = nullptr;
+  const GpuMaterial* material = nullptr;
+  const DrawItem* item = nullptr;
+  glm::mat4 world{1.f};
+  d3dl::VertexShader* vs = nullptr;
+  d3dl::InputLayout* il = nullptr;
+  d3dl::PixelShader* ps = nullptr;
+  d3dl::SamplerState* sampler = nullptr;  // per-draw s0 (view mip bias); null: the frame's
+  d3dl::Buffer* lightCB = nullptr;        // b1 of the entry's type
+  bool decal = false;                     // decal depth and blend states
+  const Entry* entry = nullptr;           // tessellated draws: the entry's height map and relief
+  TessMode tess = TessMode::None;         // through the hull/domain stages (SceneTessellation.cpp)
+};
+
+// What every draw of a frame shares; each recording context starts from it.
+struct FrameDraw {
+  glm::mat4 jitter{1.f};
+  glm::vec3 eye{0.f};
+  int current = 0, previous = 0;  // MatrixHistory slots
+  d3dl::Buffer* objectCB = nullptr;       // b0, mapped per draw
+  d3dl::SamplerState* sampler = nullptr;  // s0
+  const SceneRenderParams* params = nullptr;
+  d3dl::BlendState* decalBlend = nullptr;  // the decals' (forward or G-buffer)
+  d3dl::RenderTargetView* rtv[d3dl::SIMULTANEOUS_RENDER_TARGET_COUNT] = {};  // deferred contexts: the caller's targets
+  d3dl::DepthStencilView* dsv = nullptr;
+  d3dl::VIEWPORT viewport{};
+};
+
 struct SceneImpl {
   ComPtr<d3dl::Device> device;
   SceneLoadOptions opts;
@@ -186,8 +219,8 @@ struct SceneImpl {
   bool PrepareTessellation(const SceneRenderParams& p, const glm::vec4 planes[6]);
   TessMode TessModeFor(const SceneRenderParams& p, const Entry& e, const GpuMesh& m) const;
   bool BindTessellation(d3dl::DeviceContext* ctx, const SceneRenderParams& p, const Entry& e, const GpuMesh& m,
-                        const GpuMaterial& mat, TessMode mode);
-  void UnbindTessellation(d3dl::DeviceContext* ctx);
+                        const GpuMaterial& mat, TessMode mode) const;
+  static void UnbindTessellation(d3dl::DeviceContext* ctx);
   bool ReloadTessellation(const ShaderLibrary& lib, bool fromSource, std::string* error);
   void ResetTessellationStages(bool fromSource);
 
@@ -197,10 +230,19 @@ struct SceneImpl {
   void FramePaused(int target);
   bool Culled(const Entry& e, const DrawItem& it, const glm::mat4& world, const glm::vec4 planes[6],
               bool frustum) const;
-  void DrawEntry(d3dl::DeviceContext* ctx, const SceneRenderParams& p, Entry& e, bool blendedOnly,
-                 const glm::mat4& jitter, const glm::vec3& eye, const glm::vec4 planes[6]);
-  void DrawItemNow(d3dl::DeviceContext* ctx, const SceneRenderParams& p, const Entry& e, const DrawItem& it,
-                   const glm::mat4& world, const glm::mat4& jitter, const glm::vec3& eye);
+  void CollectEntry(const SceneRenderParams& p, const Entry& e, bool blendedOnly, const glm::vec4 planes[6]);
+  bool Resolve(const SceneRenderParams& p, DrawRecord& r);
+  static void BeginDraws(d3dl::DeviceContext* ctx, const FrameDraw& f, bool setTargets);
+  uint32_t RecordDraws(d3dl::DeviceContext* ctx, const FrameDraw& f, const DrawRecord* first,
+                       const DrawRecord* last) const;
+  static void EndDraws(d3dl::DeviceContext* ctx);
+  std::vector<DrawRecord> drawList;  // this frame's, rebuilt by Render
+
+  // SceneRecordThreads.cpp: the split across deferred contexts.
+  bool EnsurePool(int threads);
+  bool RecordThreaded(d3dl::DeviceContext* immediate, const SceneRenderParams& p, FrameDraw& f,
+                      const std::function<void()>& prepare);
+  std::unique_ptr<RecordingPool> pool;  // last member: joined before the device goes
 };
 
 }  // namespace drr

@@ -148,8 +148,8 @@ TessMode SceneImpl::TessModeFor(const SceneRenderParams& p, const Entry& e, cons
 // The draw's input assembler and vertex, hull and domain stages; the caller
 // has filled b0 (ObjectConstants) and binds the pixel stage as for any draw.
 bool SceneImpl::BindTessellation(d3dl::DeviceContext* ctx, const SceneRenderParams& p, const Entry& e,
-                                 const GpuMesh& m, const GpuMaterial& mat, TessMode mode) {
-  TessellationStages& t = tessStages;
+                                 const GpuMesh& m, const GpuMaterial& mat, TessMode mode) const {
+  const TessellationStages& t = tessStages;
   const int n = mat.hasNormal ? 1 : 0;
   const bool displace = mode == TessMode::Displace && e.tess.displacement;
   TessConstants tc;
@@ -175,8 +175,6 @@ bool SceneImpl::BindTessellation(d3dl::DeviceContext* ctx, const SceneRenderPara
   ctx->DSSetConstantBuffers(0, 2, cbs);
   ctx->DSSetShaderResources(0, 1, &height);
   ctx->DSSetSamplers(0, 1, &smp);
-  ++stats.tessellatedDraws;
-  stats.patchesSubmitted += m.indexCount / 3;
   return true;
 }
 

@@ -225,3 +225,23 @@ TEST(ZoomBoxGeometryTest, MarkerFramesTheSourceRegion) {
     }
   }
 }
+
+// The recording-threads section: threads, auto or asked, which context, the
+// draws of each thread in order and the CPU time.
+TEST(GuiText, RecordingLines) {
+  RecordingInfo r;
+  r.requested = 0;
+  r.drawsPerThread = {30, 29};
+  r.recordMs = 0.25;
+  const std::vector<std::string> two = RecordingLines(r);
+  ASSERT_EQ(two.size(), 3u);
+  EXPECT_EQ(two[0], "Threads: 2 (auto), deferred contexts");
+  EXPECT_EQ(two[1], "Draws per thread: 30 + 29");
+  EXPECT_EQ(two[2], "Scene recording CPU: 0.250 ms");
+  r.requested = 1;
+  r.drawsPerThread = {59};
+  EXPECT_EQ(RecordingLines(r)[0], "Threads: 1, immediate context");
+  EXPECT_EQ(RecordingLines(r)[1], "Draws per thread: 59");
+  r.drawsPerThread.clear();  // before the first frame
+  EXPECT_EQ(RecordingLines(r)[1], "Draws per thread: -");
+}

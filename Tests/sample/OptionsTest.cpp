@@ -225,7 +225,7 @@ TEST(SampleOptions, HelpAndParserShareOneTable) {
       EXPECT_EQ(m.find("unknown option"), std::string::npos) << word << ": " << m;
     }
   }
-  EXPECT_EQ(shown, 54);  // every option of the sample once (-h is --help's other name)
+  EXPECT_EQ(shown, 55);  // every option of the sample once (-h is --help's other name)
   for (const FixInfo& f : FixTable()) EXPECT_NE(help.find(std::string("  ") + f.name + " "), std::string::npos);
   for (int f = 0; f < static_cast<int>(Filter::Count); ++f)
     EXPECT_NE(help.find(FilterOption(static_cast<Filter>(f))), std::string::npos);
@@ -405,4 +405,24 @@ TEST(SampleOptions, TessellationSettings) {
   EXPECT_NE(m.find("65"), std::string::npos) << m;
   EXPECT_EQ(Parse({"--tess-pixels-per-edge", "0"}, &o, &m), ParseStatus::Error);
   EXPECT_NE(m.find("--tess-pixels-per-edge"), std::string::npos) << m;
+}
+
+// --threads (Docs/Threads.md): 0 automatic (the default), 1 the immediate
+// context, up to 8; anything else is refused naming the value and the range.
+TEST(SampleOptions, RecordingThreads) {
+  Options o;
+  std::string m;
+  EXPECT_EQ(o.threads, 0);
+  EXPECT_EQ(Parse({"--threads", "3"}, &o, &m), ParseStatus::Ok) << m;
+  EXPECT_EQ(o.threads, 3);
+  EXPECT_EQ(Parse({"--threads=1"}, &o, &m), ParseStatus::Ok) << m;
+  EXPECT_EQ(o.threads, 1);
+  EXPECT_EQ(Parse({"--threads", "9"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --threads: value 9 is out of range [0, 8]");
+  EXPECT_EQ(Parse({"--threads", "-1"}, &o, &m), ParseStatus::Error);
+  EXPECT_EQ(m, "option --threads: value -1 is out of range [0, 8]");
+  EXPECT_EQ(Parse({"--threads", "two"}, &o, &m), ParseStatus::Error);
+  EXPECT_NE(m.find("'two' is not a number"), std::string::npos) << m;
+  EXPECT_NE(OptionsToJson(o).find("\"threads\": 1"), std::string::npos);
+  EXPECT_NE(Usage().find("--threads N"), std::string::npos);
 }

@@ -1,0 +1,180 @@
+// Multithreaded scene recording (Docs/Threads.md), in process under core +
+// synchronization validation: the Arena on 1 (the immediate context), 2 and
+// 3 threads gives the same pixels, bit for bit; the split is contiguous and
+// even; the thread count follows the GUI at run time.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+
+#include "DynamicResolutionRendering.h"
+#include "SampleTestKit.h"
+#include "scene/RecordingThreads.h"
+#include "scene/Scene.h"
+#include "scene/SceneThreads.h"
+
+using namespace drr;
+using namespace drr::testkit;
+
+namespace {
+
+Options ArenaOptions(int threads) {
+  Options o;
+  o.headless = true;
+  o.width = 160;
+  o.height = 90;
+  o.control = ControlMode::Manual;
+  o.gui = false;
+  o.time = 3.0;
+  o.threads = threads;
+  return o;
+}
+
+struct Frame {
+  Image colour, velocity;
+  SceneStats stats;
+};
+
+Frame RenderArena(const Options& o) {
+  Sample s;
+  std::string err;
+  EXPECT_EQ(s.Init(o, &err), 0) << err;
+  Frame f;
+  f.colour = RenderAndCapture(s, 3);
+  f.velocity = s.CapturedVelocity();
+  f.stats = s.GetScene()->Stats();
+  EXPECT_EQ(s.ValidationMessages(), 0u) << "validation messages were reported";
+  s.Shutdown();
+  return f;
+}
+
+bool SamePixels(const Image& a, const Image& b) {
+  return a.width == b.width && a.height == b.height && a.pixels == b.pixels;
+}
+
+// The per-thread counts add up to the draws issued. Each thread drew one
+// chunk (counts within one of each other), unless the main thread took over
+// the chunks of workers the scheduler had not run yet (a loaded machine):
+// then those workers drew nothing.
+void ExpectSplit(const SceneStats& s, uint32_t threads) {
+  EXPECT_EQ(s.recordingThreads, threads);
+  ASSERT_EQ(s.drawsPerThread.size(), threads);
+  EXPECT_EQ(std::accumulate(s.drawsPerThread.begin(), s.drawsPerThread.end(), 0u), s.drawsIssued);
+  ASSERT_GE(s.callerChunks, 1u);
+  ASSERT_LE(s.callerChunks, threads);
+  for (uint32_t t = 1; t < s.callerChunks; ++t) EXPECT_EQ(s.drawsPerThread[t], 0u);
+  const auto from = s.drawsPerThread.begin() + (s.callerChunks > 1 ? s.callerChunks : 0);
+  const auto [lo, hi] = std::minmax_element(from, s.drawsPerThread.end());
+  if (lo != s.drawsPerThread.end()) {
+    EXPECT_LE(*hi - *lo, 1u);
+    EXPECT_GT(*lo, 0u);
+  }
+  if (s.callerChunks > 1) std::printf("[threads] the main thread drew %u chunks\n", s.callerChunks);
+}
+
+}  // namespace
+
+TEST(RecordingSplit, ContiguousChunksDifferByAtMostOneDraw) {
+  for (uint32_t draws : {0u, 1u, 2u, 59u, 60u, 1000u}) {
+    for (uint32_t chunks : {1u, 2u, 3u, 8u}) {
+      uint32_t next = 0;
+      for (uint32_t c = 0; c < chunks; ++c) {
+        const ChunkRange r = SplitEvenly(draws, chunks, c);
+        EXPECT_EQ(r.first, next) << draws << " draws, chunk " << c << " of " << chunks;
+        EXPECT_GE(r.last, r.first);
+        EXPECT_LE(r.last - r.first, draws / chunks + 1);
+        EXPECT_GE(r.last - r.first, draws / chunks);
+        next = r.last;
+      }
+      EXPECT_EQ(next, draws);
+    }
+  }
+}
+
+TEST(RecordingSplit, AutomaticThreadsFollowTheCores) {
+  const int cores = int(std::thread::hardware_concurrency());
+  EXPECT_EQ(RecordingThreadsFor(0), std::clamp(cores, 1, kAutoRecordingThreads));
+  EXPECT_EQ(RecordingThreadsFor(1), 1);
+  EXPECT_EQ(RecordingThreadsFor(3), 3);
+  EXPECT_EQ(RecordingThreadsFor(100), kMaxRecordingThreads);
+}
+
+// The default view (TAA, motion blur: colour and velocity targets) and one
+// with every fix (sRGB targets, frustum culling) from the first-person
+// camera, where the culling leaves gaps in the draw list.
+TEST(RecordingThreads, ArenaIsBitIdenticalOnOneTwoAndThreeThreads) {
+  for (bool fixes : {false, true}) {
+    Options base = ArenaOptions(1);
+    if (fixes) {
+      base.fixes = FixSet::All();
+      base.camera = 0;
+    }
+    const Frame one = RenderArena(base);
+    ASSERT_FALSE(one.colour.Empty());
+    if (fixes) {
+      EXPECT_GT(one.stats.drawsCulled, 0u);
+    }
+    ExpectSplit(one.stats, 1);
+    for (int threads : {2, 3}) {
+      Options o = base;
+      o.threads = threads;
+      const Frame many = RenderArena(o);
+      const Diff d = Compare(one.colour, many.colour);
+      std::printf("[threads] fixes %d, %d threads: %llu px differ, draws %u (culled %u)\n", int(fixes), threads,
+                  (unsigned long long)d.differing, many.stats.drawsIssued, many.stats.drawsCulled);
+      EXPECT_TRUE(SamePixels(one.colour, many.colour)) << threads << " threads, fixes " << fixes;
+      EXPECT_TRUE(SamePixels(one.velocity, many.velocity)) << threads << " threads, fixes " << fixes;
+      EXPECT_EQ(many.stats.drawsIssued, one.stats.drawsIssued);
+      EXPECT_EQ(many.stats.drawsCulled, one.stats.drawsCulled);
+      ExpectSplit(many.stats, uint32_t(threads));
+    }
+  }
+}
+
+// The port's other scene paths on the recording threads: the G-buffer of
+// the deferred renderer (four targets read back for the lists) and the
+// adaptive tessellation (hull and domain stages, their constants mapped per
+// draw on each context) give the single-threaded pixels too.
+TEST(RecordingThreads, DeferredAndTessellatedArenaIsBitIdenticalOnTwoThreads) {
+  Options base = ArenaOptions(1);
+  base.renderer = Renderer::Deferred;
+  base.tessellation = true;
+  base.tessPixelsPerEdge = 4.0;
+  const Frame one = RenderArena(base);
+  ASSERT_FALSE(one.colour.Empty());
+  EXPECT_GT(one.stats.tessellatedDraws, 0u);
+  Options o = base;
+  o.threads = 2;
+  const Frame two = RenderArena(o);
+  const Diff d = Compare(one.colour, two.colour);
+  std::printf("[threads] deferred + tessellation, 2 threads: %llu px differ\n", (unsigned long long)d.differing);
+  EXPECT_TRUE(SamePixels(one.colour, two.colour));
+  EXPECT_TRUE(SamePixels(one.velocity, two.velocity));
+  EXPECT_EQ(two.stats.tessellatedDraws, one.stats.tessellatedDraws);
+  EXPECT_EQ(two.stats.patchesSubmitted, one.stats.patchesSubmitted);
+  ExpectSplit(two.stats, 2);
+}
+
+// By default the scene records on min(cores, 4) threads; the GUI's setting
+// (ApplySettings) changes the count from the next frame, the pool is rebuilt
+// and the paused frame stays the same.
+TEST(RecordingThreads, DefaultIsAutomaticAndTheCountChangesAtRunTime) {
+  Options o = ArenaOptions(0);
+  o.pause = true;
+  Sample s;
+  std::string err;
+  ASSERT_EQ(s.Init(o, &err), 0) << err;
+  const Image first = RenderAndCapture(s, 2);
+  EXPECT_EQ(s.GetScene()->Stats().recordingThreads, uint32_t(RecordingThreadsFor(0)));
+  for (int threads : {3, 1, 2}) {
+    Options next = s.Settings();
+    next.threads = threads;
+    s.ApplySettings(next);
+    const Image again = RenderAndCapture(s, 2);
+    EXPECT_TRUE(SamePixels(first, again)) << threads << " threads";
+    EXPECT_EQ(s.GetScene()->Stats().recordingThreads, uint32_t(threads));
+  }
+  EXPECT_EQ(s.ValidationMessages(), 0u) << "validation messages were reported";
+  s.Shutdown();
+}
