@@ -55,9 +55,7 @@ GBufferOut GBufferPS(VSOut i) {
   o.specular = float4(specularMap, alpha);
   o.normal = float4(lit ? bump * 0.5 + 0.5 : float3(0.0, 0.0, 0.0), alpha);
 #if WRITE_VELOCITY
-  float2 curr = i.currClip.xy / i.currClip.w;
-  float2 prev = i.prevClip.xy / i.prevClip.w;
-  o.velocity = (curr - prev) * float2(0.5, -0.5);
+  o.velocity = ScreenVelocity(i.currClip, i.prevClip);
 #endif
   return o;
 }

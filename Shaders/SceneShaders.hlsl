@@ -19,13 +19,7 @@
 #define WRITE_VELOCITY 1
 #endif
 
-cbuffer ObjectConstants : register(b0) {
-  float4x4 g_WorldViewProj;      // jittered: T(jitter) * proj * view * world
-  float4x4 g_PrevWorldViewProj;  // last frame's, with this frame's jitter
-  float4x4 g_World;
-  float4 g_DiffuseTint;          // material factor (rgb) and opacity (a)
-  float4 g_EyePosition;          // world space: the original's first-person eye (see Cameras.h)
-};
+#include "SceneCommon.hlsli"
 
 cbuffer LightingConstants : register(b1) {
   float4 g_LightDiffuse;   // the original's colours, alpha 1 (it reaches the output alpha)
@@ -39,30 +33,7 @@ Texture2D g_NormalMap : register(t1);
 Texture2D g_SpecularMap : register(t2);
 SamplerState g_Sampler : register(s0);
 
-struct VSIn {
-  float3 position : POSITION;
-  float3 normal : NORMAL;
-  float2 texcoord : TEXCOORD0;
-#if NORMAL_MAP
-  float3 tangent : TANGENT;
-  float3 binormal : BINORMAL;
-#endif
-};
 
-struct VSOut {
-  float4 position : SV_Position;
-  float3 worldPos : TEXCOORD0;
-  float2 texcoord : TEXCOORD1;
-  float3 normal : TEXCOORD2;
-#if NORMAL_MAP
-  float3 tangent : TEXCOORD3;
-  float3 binormal : TEXCOORD4;
-#endif
-#if WRITE_VELOCITY
-  float4 currClip : TEXCOORD5;
-  float4 prevClip : TEXCOORD6;
-#endif
-};
 
 VSOut SceneVS(VSIn v) {
   VSOut o;
@@ -121,9 +92,7 @@ PSOut ScenePS(VSOut i) {
   PSOut o;
   o.color = color;
 #if WRITE_VELOCITY
-  float2 curr = i.currClip.xy / i.currClip.w;
-  float2 prev = i.prevClip.xy / i.prevClip.w;
-  o.velocity = (curr - prev) * float2(0.5, -0.5);
+  o.velocity = ScreenVelocity(i.currClip, i.prevClip);
 #endif
   return o;
 }

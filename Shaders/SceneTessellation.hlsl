@@ -9,21 +9,9 @@
 // Variants (Shaders/CMakeLists.txt): NORMAL_MAP and WRITE_VELOCITY as the
 // scene's SceneVS, so that the domain shader's outputs are exactly what the
 // scene's pixel shader (SceneShaders.hlsl, ScenePS) reads.
-#ifndef NORMAL_MAP
-#define NORMAL_MAP 0
-#endif
-#ifndef WRITE_VELOCITY
-#define WRITE_VELOCITY 1
-#endif
-
-// The scene's per-object constants (SceneShaders.hlsl, b0), read by HS and DS.
-cbuffer ObjectConstants : register(b0) {
-  float4x4 g_WorldViewProj;      // jittered: T(jitter) * proj * view * world
-  float4x4 g_PrevWorldViewProj;  // last frame's, with this frame's jitter
-  float4x4 g_World;
-  float4 g_DiffuseTint;
-  float4 g_EyePosition;
-};
+// The scene's per-object constants (b0, read by HS and DS), vertex input and
+// interpolants (ScenePS reads them): SceneCommon.hlsli.
+#include "SceneCommon.hlsli"
 
 // Per-draw tessellation constants (TessConstants in SceneTessellation.cpp).
 cbuffer TessConstants : register(b1) {
@@ -36,42 +24,8 @@ cbuffer TessConstants : register(b1) {
 Texture2D<float4> g_Displacement : register(t0);
 SamplerState g_DisplacementSampler : register(s0);
 
-struct VSIn {
-  float3 position : POSITION;
-  float3 normal : NORMAL;
-  float2 texcoord : TEXCOORD0;
-#if NORMAL_MAP
-  float3 tangent : TANGENT;
-  float3 binormal : BINORMAL;
-#endif
-};
-
 // Object space: the vertex shader only hands the vertex on.
-struct ControlPoint {
-  float3 position : POSITION;
-  float3 normal : NORMAL;
-  float2 texcoord : TEXCOORD0;
-#if NORMAL_MAP
-  float3 tangent : TANGENT;
-  float3 binormal : BINORMAL;
-#endif
-};
-
-// Must match SceneShaders.hlsl's VSOut member for member (ScenePS reads it).
-struct VSOut {
-  float4 position : SV_Position;
-  float3 worldPos : TEXCOORD0;
-  float2 texcoord : TEXCOORD1;
-  float3 normal : TEXCOORD2;
-#if NORMAL_MAP
-  float3 tangent : TEXCOORD3;
-  float3 binormal : TEXCOORD4;
-#endif
-#if WRITE_VELOCITY
-  float4 currClip : TEXCOORD5;
-  float4 prevClip : TEXCOORD6;
-#endif
-};
+typedef VSIn ControlPoint;
 
 struct PatchFactors {
   float edges[3] : SV_TessFactor;

@@ -15,16 +15,17 @@
 namespace drr {
 namespace {
 
-std::string N(double v, int decimals) {
+std::string N(double v, int decimals) { return FormatCell(v, decimals); }
+bool Near(double a, double b) { return SameScale(a, b); }
+
+}  // namespace
+
+std::string FormatCell(double v, int decimals) {
   if (std::isnan(v)) return "-";
   char buf[64];
   std::snprintf(buf, sizeof(buf), "%.*f", decimals, v);
   return buf;
 }
-
-bool Near(double a, double b) { return std::abs(a - b) < 1e-4; }
-
-}  // namespace
 
 QualityPoint StillPoint(const BenchResults& res, const std::string& filter, double scale) {
   std::vector<double> psnr, flip, frame;

@@ -30,6 +30,11 @@ QualityPoint MovingPoint(const BenchResults& res, double speed, const std::strin
 std::vector<double> MovingSpeeds(const BenchResults& res);
 double ReportSpeed(const BenchResults& res);  // 1 if measured, else the first speed; NaN: none
 
+// A table cell: v with `decimals` decimals, "-" for NaN.
+std::string FormatCell(double v, int decimals);
+// Two scales of the plan are the same scale (they come from parsed decimals).
+inline bool SameScale(double a, double b) { return a - b < 1e-4 && b - a < 1e-4; }
+
 void WriteStillQuality(const BenchResults& res, std::ostringstream& md);
 void WriteMovingQuality(const BenchResults& res, std::ostringstream& md);
 void WriteAblations(const BenchResults& res, std::ostringstream& md);

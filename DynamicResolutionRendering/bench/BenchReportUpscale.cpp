@@ -14,14 +14,8 @@
 namespace drr {
 namespace {
 
-std::string N(double v, int decimals) {
-  if (std::isnan(v)) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*f", decimals, v);
-  return buf;
-}
-
-bool Near(double a, double b) { return std::abs(a - b) < 1e-4; }
+std::string N(double v, int decimals) { return FormatCell(v, decimals); }
+bool Near(double a, double b) { return SameScale(a, b); }
 
 // The goal for TAAU: at 0.71, moving, within this of native's PSNR
 // at under this fraction of native's frame time.

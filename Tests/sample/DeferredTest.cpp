@@ -29,17 +29,10 @@ constexpr int kFrames = 3;
 constexpr double kMinPsnrDb = 45.0;  // measured 49.0 dB at scale 1, 48.4 dB at 0.5 (lavapipe, 256x144)
 
 Options Base(Renderer r, float scale) {
-  Options o;
-  o.headless = true;
-  o.width = kW;
-  o.height = kH;
-  o.gui = false;
-  o.quiet = true;
+  Options o = testkit::HeadlessOptions(kW, kH, kTime);
   o.motionBlur = false;
   o.filter = Filter::Point;  // no history: each image is one frame's
-  o.time = kTime;
   o.scaleX = o.scaleY = scale;
-  o.control = ControlMode::Manual;
   o.renderer = r;
   return o;
 }

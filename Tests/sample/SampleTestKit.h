@@ -13,6 +13,20 @@
 
 namespace drr::testkit {
 
+// A headless sample for image tests: no GUI, no console output, manual
+// control (the scale stays where the test puts it), a fixed animation time.
+inline Options HeadlessOptions(uint32_t width, uint32_t height, double time) {
+  Options o;
+  o.headless = true;
+  o.width = width;
+  o.height = height;
+  o.gui = false;
+  o.quiet = true;
+  o.control = ControlMode::Manual;
+  o.time = time;
+  return o;
+}
+
 // Renders n frames and returns the back buffer of the last (with the GUI, if on).
 inline Image RenderAndCapture(Sample& s, int n) {
   for (int i = 0; i < n; ++i) {

@@ -17,14 +17,7 @@ using namespace drr::testkit;
 namespace {
 
 Options SmallOptions() {
-  Options o;
-  o.headless = true;
-  o.width = 160;
-  o.height = 90;
-  o.control = ControlMode::Manual;
-  o.gui = false;
-  o.time = 3.0;
-  return o;
+  return HeadlessOptions(160, 90, 3.0);
 }
 
 // Largest |velocity| (UV units) of a captured velocity target.

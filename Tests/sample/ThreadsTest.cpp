@@ -20,13 +20,7 @@ using namespace drr::testkit;
 namespace {
 
 Options ArenaOptions(int threads) {
-  Options o;
-  o.headless = true;
-  o.width = 160;
-  o.height = 90;
-  o.control = ControlMode::Manual;
-  o.gui = false;
-  o.time = 3.0;
+  Options o = HeadlessOptions(160, 90, 3.0);
   o.threads = threads;
   return o;
 }

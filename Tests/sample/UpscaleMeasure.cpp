@@ -30,16 +30,9 @@ constexpr double kCapture = 12.0, kStep = 1.0 / 30.0;
 ImageF ToF(const Image& img) { return ImageFromRGBA8(img.pixels.data(), img.width, img.height, img.width * 4); }
 
 Options Base(bool moving) {
-  Options o;
-  o.headless = true;
-  o.width = kW;
-  o.height = kH;
-  o.gui = false;
-  o.quiet = true;
+  Options o = testkit::HeadlessOptions(kW, kH, moving ? kCapture - (kFrames - 1) * kStep : kCapture);
   o.motionBlur = false;
   o.camera = 1;
-  o.control = ControlMode::Manual;
-  o.time = moving ? kCapture - (kFrames - 1) * kStep : kCapture;
   o.fixedDt = moving ? kStep : 0.0;
   return o;
 }

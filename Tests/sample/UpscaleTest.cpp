@@ -21,17 +21,10 @@ constexpr uint32_t kW = 256, kH = 144;
 constexpr double kTime = 3.0;  // a fixed animation time: the camera stands still
 
 Options Base(Filter f, float scale) {
-  Options o;
-  o.headless = true;
-  o.width = kW;
-  o.height = kH;
-  o.gui = false;
-  o.quiet = true;
+  Options o = testkit::HeadlessOptions(kW, kH, kTime);
   o.motionBlur = false;
-  o.time = kTime;
   o.filter = f;
   o.scaleX = o.scaleY = scale;
-  o.control = ControlMode::Manual;
   return o;
 }
 
