@@ -41,11 +41,16 @@ HRESULT ContextImpl::MapDiscardConstants(BufferImpl* b, MAPPED_SUBRESOURCE* mapp
 // Out of line so that MapDiscardConstants stays a leaf without spills.
 __attribute__((noinline)) void ContextImpl::ListDiscarded(BufferImpl* b) {
   b->MarkShadowStale();
+  if (b->discardListed()) return;
+  b->SetDiscardListed(true);
   discardedCBs_.push_back(b);
 }
 
 void ContextImpl::SaveDiscardedConstants() {
-  for (BufferImpl* b : discardedCBs_) b->SyncShadow();
+  for (BufferImpl* b : discardedCBs_) {
+    b->SyncShadow();
+    b->SetDiscardListed(false);
+  }
   discardedCBs_.clear();
 }
 

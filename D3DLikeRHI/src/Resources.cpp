@@ -24,7 +24,7 @@ Storage StorageOf(const BUFFER_DESC& d) {
 BufferImpl::BufferImpl(DeviceImpl* d, const BUFFER_DESC& desc) : Child(d), desc_(desc), storage_(StorageOf(desc)) {}
 
 BufferImpl::~BufferImpl() {
-  if (shadowStale_ && dev_->context()) dev_->context()->ForgetDiscardedConstants(this);
+  if (discardListed_ && dev_->context()) dev_->context()->ForgetDiscardedConstants(this);
   dev_->Defer(VK_OBJECT_TYPE_BUFFER, reinterpret_cast<uint64_t>(buffer_));
   dev_->Defer(VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<uint64_t>(memory_));
 }

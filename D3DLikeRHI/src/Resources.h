@@ -77,6 +77,11 @@ class BufferImpl final : public Child<Buffer> {
   // to die (frame end) or when a partial write needs the old contents.
   bool shadowStale() const { return shadowStale_; }
   void MarkShadowStale() { shadowStale_ = true; }
+  // In the immediate context's list of buffers discarded this frame (the
+  // shadow may be synced earlier, by a list's execution or a partial write,
+  // while the entry stays: the destructor must remove it then too).
+  bool discardListed() const { return discardListed_; }
+  void SetDiscardListed(bool listed) { discardListed_ = listed; }
   void SyncShadow() {
     if (!shadowStale_) return;
     std::memcpy(shadow_.data(), ring_.ptr, desc_.ByteWidth);
@@ -89,6 +94,7 @@ class BufferImpl final : public Child<Buffer> {
   BUFFER_DESC desc_;
   Storage storage_;
   bool shadowStale_ = false;  // `ring_` (this frame) is newer than `shadow_`
+  bool discardListed_ = false;
   std::vector<uint8_t> shadow_;
   RingAlloc ring_{};
   uint64_t ringSerial_ = 0;  // frame serial of `ring_` (0 = none)
