@@ -1,23 +1,35 @@
 // drr_rhi_bench --deferred: the frame of RhiRecorder (one Map(WRITE_DISCARD)
-// of a constant buffer + Draw per draw) recorded on deferred contexts, all
-// draws on one worker thread against half of them on each of two worker
-// threads at the same time. Timed (wall clock): waking the (persistent)
-// workers, their recording up to FinishCommandList, and the wait for both;
-// not timed: ExecuteCommandList, submission and the GPU wait. The two benchmarks run in alternating pairs so
-// that load from other processes hits both alike; the ratio of each pair and
-// their median are printed.
+// of a constant buffer + Draw per draw) recorded on deferred contexts: all
+// draws on one context by one recording thread, against half of them on each
+// of two contexts by two recording threads at the same time. Timed: from the
+// first thread's first call to the last thread's FinishCommandList, read by
+// the recording threads themselves (manual time). Not timed: waking the
+// threads, which happens before (they spin until the start; how long an OS
+// takes to give a sleeping thread a core is the scheduler's cost, not the
+// recording's, 0.1 to 0.4 ms on this project's 2-vCPU guest), and
+// ExecuteCommandList, submission and the GPU wait after. Both runs record on
+// threads other than main, so their heaps behave alike (glibc trims the main
+// thread's heap and faults it back in every iteration: 685 page faults per
+// 10,000 draws there, 17 on another thread). The two benchmarks run in
+// alternating pairs so that load from other processes hits both alike; the
+// ratio of each pair and their median are printed.
 //
 //   drr_rhi_bench --deferred [--draws N] [--pairs K] [google benchmark flags]
 //   drr_rhi_bench --deferred --smoke     the 1- and 2-thread images equal (recycled lists too), validation-clean
 #include <benchmark/benchmark.h>
+#include <pthread.h>
+#include <sched.h>
 #include <time.h>
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <cstring>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -37,45 +49,88 @@ double Seconds(clockid_t clock) {
   return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
 }
 
-// Two persistent worker threads, woken per iteration (no thread start-up in
-// the timed part); worker t always records on deferred context t.
+// A spin-wait hint: lets the sibling hardware thread run, costs no syscall.
+inline void CpuRelax() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#elif defined(__aarch64__)
+  asm volatile("yield");
+#endif
+}
+
+// Keeps the calling thread on CPU `cpu` (when the machine has it). Without
+// it Linux places a woken thread on its waker's CPU: two recording threads
+// then share one core for up to a scheduler slice while the other idles
+// (measured before pinning: the second thread started 0.32 to 0.44 ms after
+// the first, a quarter of a 10,000-draw recording).
+void PinTo(unsigned cpu) {
+  if (std::thread::hardware_concurrency() <= cpu) return;
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  CPU_SET(cpu, &set);
+  pthread_setaffinity_np(pthread_self(), sizeof(set), &set);
+}
+
+// Recording thread t (pinned to CPU t) records on deferred context t. The
+// threads a run uses are armed (woken, spinning) before the timed part.
 class DeferredRecorder {
  public:
-  ~DeferredRecorder() { StopWorkers(); }
+  ~DeferredRecorder() { StopThreads(); }
 
   bool Init(std::string* error) {
     if (!r_.Init("rhi-deferred-benchmark", error)) return false;
     bool ok = true;
     for (auto& c : deferred_) ok = ok && d3dl::SUCCEEDED(r_.device->CreateDeferredContext(0, c.GetAddressOf()));
-    if (!ok) *error = "CreateDeferredContext failed";
-    for (uint32_t t = 0; ok && t < kMaxThreads; ++t) workers_[t] = std::thread([this, t] { WorkerLoop(t); });
-    return ok;
+    if (!ok) {
+      *error = "CreateDeferredContext failed";
+      return false;
+    }
+    for (uint32_t t = 0; t < kMaxThreads; ++t)
+      threads_[t] = std::thread([this, t] {
+        PinTo(t);
+        ThreadLoop(t);
+      });
+    return true;
   }
 
-  // Timed part: draws [0, n) split into `threads` contiguous ranges, each
-  // recorded into its own list by its own worker thread. Returns the CPU
-  // seconds the workers spent (all together) and the longest worker's wall
-  // time from its wake-up to its FinishCommandList.
-  struct Cost {
-    double cpu, wall;
-  };
-  Cost Record(uint32_t n, uint32_t threads) {
-    // Only the workers that record are woken; job_ is read by them alone,
-    // and written again only after they are all done.
-    job_ = {n, threads};
-    done_.store(0);
+  // Not timed: wakes recording threads 0 .. threads-1 and returns once they
+  // all spin, ready for the next Record.
+  void Arm(uint32_t threads) {
+    const uint32_t g = ++generation_;
+    armed_ = threads;
     for (uint32_t t = 0; t < threads; ++t) {
-      go_[t].fetch_add(1, std::memory_order_release);
+      go_[t].store(g, std::memory_order_release);
       go_[t].notify_one();
     }
-    for (uint32_t d; (d = done_.load(std::memory_order_acquire)) < threads;) done_.wait(d);
-    listCount_ = threads;
+    for (uint32_t t = 0; t < threads; ++t)
+      while (ready_[t].load(std::memory_order_acquire) != g) std::this_thread::yield();
+  }
+
+  // Timed part: draws [0, n) split into the armed threads' contiguous ranges,
+  // range t recorded into list t on context t. Returns the CPU seconds the
+  // threads spent together and the span from the first start to the last end.
+  struct Cost {
+    double cpu, span;
+  };
+  Cost Record(uint32_t n) {
+    job_ = {n, armed_};
+    Release();
+    listCount_ = job_.threads;
     Cost c{0, 0};
-    for (uint32_t t = 0; t < threads; ++t) {
+    double first = begin_[0], last = end_[0];
+    for (uint32_t t = 0; t < job_.threads; ++t) {
       c.cpu += cpu_[t];
-      c.wall = std::max(c.wall, wall_[t]);
+      first = std::min(first, begin_[t]);
+      last = std::max(last, end_[t]);
     }
+    c.span = last - first;
     return c;
+  }
+
+  // Not timed: releases the armed threads without work (after the last Record).
+  void Disarm() {
+    job_ = {0, 0};
+    Release();
   }
 
   // Not timed: the lists in draw order after a clear, then the copy for ReadBack.
@@ -87,6 +142,11 @@ class DeferredRecorder {
     r_.context->Flush();
     r_.device->WaitIdle();
     for (auto& l : lists_) l = {};
+    // lavapipe's queue thread goes on after the fence (0.4 ms seen: releasing
+    // what the submission held); left running it takes a core from the next
+    // timed recording, which only the 2-thread run needs (medians 0.776-0.796
+    // without this pause, 0.736 with 1 ms, 0.724 with 3 ms).
+    std::this_thread::sleep_for(std::chrono::milliseconds(3));
   }
 
   std::vector<uint8_t> ReadBack() { return r_.ReadStaging(); }
@@ -97,49 +157,68 @@ class DeferredRecorder {
     uint32_t n, threads;
   };
 
-  void WorkerLoop(uint32_t t) {
+  // Starts the armed threads on job_ and sleeps until they are done. The
+  // wait is a condition variable, not a spinning atomic wait: a waiting
+  // thread that yields would share a core with a recording one.
+  void Release() {
+    start_.store(generation_, std::memory_order_release);
+    std::unique_lock<std::mutex> lock(doneMutex_);
+    doneCv_.wait(lock, [this] { return doneCount_ == armed_; });
+    doneCount_ = 0;
+    armed_ = 0;
+  }
+
+  // Context t's range of the current job, with its times.
+  void Measure(uint32_t t) {
+    const Job job = job_;
+    const double cpuStart = Seconds(CLOCK_THREAD_CPUTIME_ID);
+    begin_[t] = Seconds(CLOCK_MONOTONIC);
+    d3dl::DeviceContext* ctx = deferred_[t].Get();
+    r_.BindDrawState(ctx);
+    r_.RecordDraws(ctx, job.n * t / job.threads, job.n * (t + 1) / job.threads, job.n);
+    ctx->FinishCommandList(0, lists_[t].ReleaseAndGetAddressOf());
+    end_[t] = Seconds(CLOCK_MONOTONIC);
+    cpu_[t] = Seconds(CLOCK_THREAD_CPUTIME_ID) - cpuStart;
+  }
+
+  void ThreadLoop(uint32_t t) {
     uint32_t seen = 0;
     for (;;) {
       go_[t].wait(seen, std::memory_order_acquire);
       seen = go_[t].load(std::memory_order_acquire);
       if (stop_) return;
-      const Job job = job_;
-      const double start = Seconds(CLOCK_MONOTONIC), cpuStart = Seconds(CLOCK_THREAD_CPUTIME_ID);
-      RecordRange(t, job.n * t / job.threads, job.n * (t + 1) / job.threads, job.n);
-      wall_[t] = Seconds(CLOCK_MONOTONIC) - start;
-      cpu_[t] = Seconds(CLOCK_THREAD_CPUTIME_ID) - cpuStart;
-      done_.fetch_add(1, std::memory_order_release);
-      done_.notify_one();
+      ready_[t].store(seen, std::memory_order_release);
+      while (start_.load(std::memory_order_acquire) != seen) CpuRelax();
+      if (job_.threads > 0) Measure(t);
+      std::lock_guard<std::mutex> lock(doneMutex_);
+      ++doneCount_;
+      doneCv_.notify_one();
     }
   }
 
-  void StopWorkers() {
+  void StopThreads() {
     stop_ = true;
     for (auto& go : go_) {
       go.fetch_add(1, std::memory_order_release);
       go.notify_one();
     }
-    for (auto& w : workers_)
-      if (w.joinable()) w.join();
-  }
-
-  void RecordRange(uint32_t t, uint32_t first, uint32_t last, uint32_t n) {
-    d3dl::DeviceContext* ctx = deferred_[t].Get();
-    r_.BindDrawState(ctx);
-    r_.RecordDraws(ctx, first, last, n);
-    ctx->FinishCommandList(0, lists_[t].ReleaseAndGetAddressOf());
+    for (auto& t : threads_)
+      if (t.joinable()) t.join();
   }
 
   RhiDrawSetup r_;
   ComPtr<d3dl::DeviceContext> deferred_[kMaxThreads];
   ComPtr<d3dl::CommandList> lists_[kMaxThreads];
   uint32_t listCount_ = 0;
-  // Worker threads: job_ and stop_ are written before a worker's go_ is raised.
-  std::thread workers_[kMaxThreads];
+  // job_ and stop_ are written before go_ or start_ is raised.
+  std::thread threads_[kMaxThreads];
   Job job_{};
   bool stop_ = false;
-  std::atomic<uint32_t> go_[kMaxThreads] = {}, done_{0};
-  double cpu_[kMaxThreads] = {}, wall_[kMaxThreads] = {};
+  uint32_t armed_ = 0, generation_ = 0, doneCount_ = 0;
+  std::atomic<uint32_t> go_[kMaxThreads] = {}, ready_[kMaxThreads] = {}, start_{0};
+  std::mutex doneMutex_;
+  std::condition_variable doneCv_;
+  double cpu_[kMaxThreads] = {}, begin_[kMaxThreads] = {}, end_[kMaxThreads] = {};
 };
 
 std::unique_ptr<DeferredRecorder> g_recorder;  // reset before returning (see RecordBenchmark.cpp)
@@ -159,24 +238,23 @@ DeferredRecorder& Recorder() {
 
 void RecordOnThreads(benchmark::State& state, uint32_t n, uint32_t threads) {
   DeferredRecorder& rec = Recorder();
-  double workerCpu = 0, workerWall = 0;
+  double cpu = 0;
+  rec.Arm(threads);
   for (auto _ : state) {
-    const DeferredRecorder::Cost cost = rec.Record(n, threads);
-    workerCpu += cost.cpu;
-    workerWall += cost.wall;
-    state.PauseTiming();
+    const DeferredRecorder::Cost cost = rec.Record(n);
+    state.SetIterationTime(cost.span);
+    cpu += cost.cpu;
     rec.ExecuteAndWait();
-    state.ResumeTiming();
+    rec.Arm(threads);
   }
+  rec.Disarm();
   state.SetItemsProcessed(int64_t(state.iterations()) * n);
   // CPU time of the recording threads per iteration: equal for 1 and 2
   // threads when the contexts do not contend (whatever the wall clock says).
-  state.counters["worker_cpu_ms"] = 1e3 * workerCpu / double(state.iterations());
-  state.counters["worker_wall_ms"] = 1e3 * workerWall / double(state.iterations());
+  state.counters["thread_cpu_ms"] = 1e3 * cpu / double(state.iterations());
 }
 
-// Per registered run: real time per iteration (waking the workers, recording,
-// waiting for them) and the workers' own recording time (worker_wall_ms).
+// Per registered run: the recording time per iteration and the threads' CPU time.
 class PairReporter : public benchmark::ConsoleReporter {
  public:
   void ReportRuns(const std::vector<Run>& runs) override {
@@ -184,13 +262,11 @@ class PairReporter : public benchmark::ConsoleReporter {
     for (const Run& run : runs) {
       if (run.run_type != Run::RT_Iteration) continue;
       times[run.run_name.function_name] = run.GetAdjustedRealTime();
-      const auto w = run.counters.find("worker_wall_ms");
-      if (w != run.counters.end()) recording[run.run_name.function_name] = w->second.value;
-      const auto c = run.counters.find("worker_cpu_ms");
+      const auto c = run.counters.find("thread_cpu_ms");
       if (c != run.counters.end()) cpu[run.run_name.function_name] = c->second.value;
     }
   }
-  std::map<std::string, double> times, recording, cpu;
+  std::map<std::string, double> times, cpu;
 };
 
 struct RatioSummary {
@@ -212,7 +288,8 @@ int Smoke(uint32_t draws) {
   size_t differing = 0, lit = 0;
   bool sizesMatch = true;
   for (int round = 0; round < kRounds; ++round) {
-    rec.Record(draws, 1 + round % 2);
+    rec.Arm(1 + round % 2);
+    rec.Record(draws);
     rec.ExecuteAndWait();
     const auto image = rec.ReadBack();
     if (round == 0) {
@@ -232,23 +309,19 @@ int Smoke(uint32_t draws) {
 }
 
 void PrintPairs(const PairReporter& reporter, int pairs, int64_t draws) {
-  std::vector<double> ratios, recordingRatios, cpuRatios;
+  std::vector<double> ratios, cpuRatios;
   double sum1 = 0, sum2 = 0;
   for (int k = 0; k < pairs; ++k) {
     const std::string one = "BM_Deferred1Thread/pair:" + std::to_string(k);
     const std::string two = "BM_Deferred2Threads/pair:" + std::to_string(k);
     if (!reporter.times.count(one) || !reporter.times.count(two) || reporter.times.at(one) <= 0) continue;
     const double t1 = reporter.times.at(one), t2 = reporter.times.at(two);
-    const double r1 = reporter.recording.count(one) ? reporter.recording.at(one) : 0;
-    const double r2 = reporter.recording.count(two) ? reporter.recording.at(two) : 0;
     ratios.push_back(t2 / t1);
-    if (r1 > 0) recordingRatios.push_back(r2 / r1);
     if (reporter.cpu.count(one) && reporter.cpu.count(two) && reporter.cpu.at(one) > 0)
       cpuRatios.push_back(reporter.cpu.at(two) / reporter.cpu.at(one));
     sum1 += t1;
     sum2 += t2;
-    std::printf("pair %d: 1 thread %.3f ms, 2 threads %.3f ms, ratio %.3f; recording alone %.3f / %.3f ms, ratio %.3f\n",
-                k, t1, t2, t2 / t1, r1, r2, r1 > 0 ? r2 / r1 : 0.0);
+    std::printf("pair %d: 1 thread %.3f ms, 2 threads %.3f ms, ratio %.3f\n", k, t1, t2, t2 / t1);
   }
   if (ratios.empty()) return;
   const RatioSummary all = Summarise(ratios);
@@ -256,15 +329,11 @@ void PrintPairs(const PairReporter& reporter, int pairs, int64_t draws) {
               "median %.3f, min %.3f, max %.3f, of the totals %.3f\n",
               static_cast<long long>(draws), ratios.size(), std::thread::hardware_concurrency(), all.median,
               all.min, all.max, sum2 / sum1);
-  if (recordingRatios.empty()) return;
-  const RatioSummary rec = Summarise(recordingRatios);
-  std::printf("ratio of the workers' recording alone (from wake-up to FinishCommandList): median %.3f, "
-              "min %.3f, max %.3f\n", rec.median, rec.min, rec.max);
   if (cpuRatios.empty()) return;
   // Near 1 when two contexts do not slow each other down (locks, shared
   // cache lines, allocator); less sensitive to other processes than wall time.
   const RatioSummary cpu = Summarise(cpuRatios);
-  std::printf("ratio of the workers' CPU time, both threads together / one thread: median %.3f, min %.3f, "
+  std::printf("ratio of the recording CPU time, both threads together / one thread: median %.3f, min %.3f, "
               "max %.3f\n", cpu.median, cpu.min, cpu.max);
 }
 
@@ -296,16 +365,16 @@ int DeferredMain(int argc, char** argv) {
     g_recorder.reset();
     return rc;
   }
-  // Alternating pairs; wall-clock time, as the work runs on worker threads.
+  // Alternating pairs; wall-clock time, as the work runs on two threads.
   const auto count = static_cast<uint32_t>(draws);
   for (int k = 0; k < pairs; ++k) {
     const std::string suffix = "/pair:" + std::to_string(k);
     benchmark::RegisterBenchmark(("BM_Deferred1Thread" + suffix).c_str(),
                                  [count](benchmark::State& s) { RecordOnThreads(s, count, 1); })
-        ->Unit(benchmark::kMillisecond)->UseRealTime();
+        ->Unit(benchmark::kMillisecond)->UseManualTime();
     benchmark::RegisterBenchmark(("BM_Deferred2Threads" + suffix).c_str(),
                                  [count](benchmark::State& s) { RecordOnThreads(s, count, 2); })
-        ->Unit(benchmark::kMillisecond)->UseRealTime();
+        ->Unit(benchmark::kMillisecond)->UseManualTime();
   }
   int n = static_cast<int>(args.size());
   benchmark::Initialize(&n, args.data());
