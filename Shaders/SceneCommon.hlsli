@@ -42,6 +42,28 @@ struct VSOut {
 #endif
 };
 
+// An object-space vertex to the interpolants: clip position (and last
+// frame's, for velocity), world position and frame. The scene vertex shader
+// and the tessellation domain shader both end here.
+VSOut ToInterpolants(VSIn v) {
+  VSOut o;
+  const float4 p = float4(v.position, 1.0);
+  o.position = mul(g_WorldViewProj, p);
+#if WRITE_VELOCITY
+  o.currClip = o.position;
+  o.prevClip = mul(g_PrevWorldViewProj, p);
+#endif
+  o.worldPos = mul(g_World, p).xyz;
+  const float3x3 w = (float3x3)g_World;
+  o.normal = mul(w, v.normal);
+#if NORMAL_MAP
+  o.tangent = mul(w, v.tangent);
+  o.binormal = mul(w, v.binormal);
+#endif
+  o.texcoord = v.texcoord;
+  return o;
+}
+
 // Screen-space velocity (the velocity target's R16G16) of a pixel from its
 // current and previous clip positions: NDC difference to texture space.
 float2 ScreenVelocity(float4 currClip, float4 prevClip) {

@@ -36,22 +36,7 @@ SamplerState g_Sampler : register(s0);
 
 
 VSOut SceneVS(VSIn v) {
-  VSOut o;
-  float4 p = float4(v.position, 1.0);
-  o.position = mul(g_WorldViewProj, p);
-#if WRITE_VELOCITY
-  o.currClip = o.position;
-  o.prevClip = mul(g_PrevWorldViewProj, p);
-#endif
-  o.worldPos = mul(g_World, p).xyz;
-  float3x3 w = (float3x3)g_World;
-  o.normal = mul(w, v.normal);
-#if NORMAL_MAP
-  o.tangent = mul(w, v.tangent);
-  o.binormal = mul(w, v.binormal);
-#endif
-  o.texcoord = v.texcoord;
-  return o;
+  return ToInterpolants(v);
 }
 
 struct PSOut {

@@ -139,20 +139,13 @@ VSOut TessDS(PatchFactors factors, float3 uvw : SV_DomainLocation, const OutputP
   } else {
     pos = PhongPoint(uvw, q, patch);
   }
-  const float4 p = float4(pos, 1.0);
-  VSOut o;
-  o.position = mul(g_WorldViewProj, p);
-#if WRITE_VELOCITY
-  o.currClip = o.position;
-  o.prevClip = mul(g_PrevWorldViewProj, p);
-#endif
-  o.worldPos = mul(g_World, p).xyz;
-  const float3x3 w = (float3x3)g_World;
-  o.normal = mul(w, n);
+  VSIn v;
+  v.position = pos;
+  v.normal = n;
+  v.texcoord = uv;
 #if NORMAL_MAP
-  o.tangent = mul(w, uvw.x * patch[0].tangent + uvw.y * patch[1].tangent + uvw.z * patch[2].tangent);
-  o.binormal = mul(w, uvw.x * patch[0].binormal + uvw.y * patch[1].binormal + uvw.z * patch[2].binormal);
+  v.tangent = uvw.x * patch[0].tangent + uvw.y * patch[1].tangent + uvw.z * patch[2].tangent;
+  v.binormal = uvw.x * patch[0].binormal + uvw.y * patch[1].binormal + uvw.z * patch[2].binormal;
 #endif
-  o.texcoord = uv;
-  return o;
+  return ToInterpolants(v);
 }

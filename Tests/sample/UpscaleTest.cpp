@@ -262,11 +262,9 @@ TEST_F(UpscaleTaau, ScaleChangeKeepsTheHistory) {
 namespace drr {
 namespace {
 
-// The scene colour of TAAU's first frame (jitter 0 of its sequence).
-Image TaauSceneColour(float scale, bool autoBias, double userBias) {
-  Options o = Base(Filter::TAAU, scale);
-  o.autoMipBias = autoBias;
-  o.mipBias = userBias;
+// The scene colour of the first frame (for TAAU: jitter 0 of its sequence),
+// validation-clean.
+Image FirstSceneColour(const Options& o) {
   Sample s;
   std::string err;
   EXPECT_EQ(s.Init(o, &err), 0) << err;
@@ -275,6 +273,14 @@ Image TaauSceneColour(float scale, bool autoBias, double userBias) {
   EXPECT_EQ(s.ValidationMessages(), 0u);
   s.Shutdown();
   return img;
+}
+
+// TAAU's first scene colour with the automatic mip bias on or off.
+Image TaauSceneColour(float scale, bool autoBias, double userBias) {
+  Options o = Base(Filter::TAAU, scale);
+  o.autoMipBias = autoBias;
+  o.mipBias = userBias;
+  return FirstSceneColour(o);
 }
 
 // The automatic view mip bias is log2(screen percentage) + the user's: a user
@@ -386,14 +392,7 @@ Image TaauSceneColourOptOut(bool autoBias, const std::string& optOut) {
   Options o = Base(Filter::TAAU, 0.5f);
   o.autoMipBias = autoBias;
   o.mipBiasOptOut = optOut;
-  Sample s;
-  std::string err;
-  EXPECT_EQ(s.Init(o, &err), 0) << err;
-  testkit::RenderAndCapture(s, 1);
-  Image img = s.CapturedSceneColor();
-  EXPECT_EQ(s.ValidationMessages(), 0u);
-  s.Shutdown();
-  return img;
+  return FirstSceneColour(o);
 }
 
 // Per-material opt-out: with the Arena's floor opted out, every pixel the
