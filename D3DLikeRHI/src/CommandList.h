@@ -16,6 +16,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "CommandMemory.h"
 #include "Resources.h"
 
 namespace d3dl::impl {
@@ -38,7 +39,8 @@ struct ListImport {
   RingAlloc slot;
 };
 
-struct ListRecording {
+struct alignas(64) ListRecording {  // alone in its cache lines: two are recorded at once
+  std::unique_ptr<CommandMemory> memory;  // the pool's host memory, kept across recordings
   VkCommandPool pool = VK_NULL_HANDLE;
   VkCommandBuffer cmd = VK_NULL_HANDLE;  // secondary
   std::vector<VkDescriptorPool> descPools;

@@ -60,7 +60,7 @@ void DestroyRecording(DeviceImpl* dev, ListRecording& rec) {
   rec.ring.DeferDestroy();
   for (VkDescriptorPool p : rec.descPools) dev->Defer(VK_OBJECT_TYPE_DESCRIPTOR_POOL, reinterpret_cast<uint64_t>(p));
   rec.descPools.clear();
-  dev->Defer(VK_OBJECT_TYPE_COMMAND_POOL, reinterpret_cast<uint64_t>(rec.pool));  // frees rec.cmd
+  dev->Defer(VK_OBJECT_TYPE_COMMAND_POOL, reinterpret_cast<uint64_t>(rec.pool), rec.memory.release());  // frees rec.cmd
   rec.pool = VK_NULL_HANDLE;
 }
 

@@ -106,7 +106,8 @@ class DeviceImpl final : public Device {
   void CreateCommandBuffer(VkCommandPool* pool, VkCommandBuffer* cmd);
 
   // Deferred destruction: after the fence of the frame being recorded.
-  void Defer(VkObjectType type, uint64_t handle);
+  // `memory`: a command pool's allocator (CommandMemory.h), deleted after the pool.
+  void Defer(VkObjectType type, uint64_t handle, CommandMemory* memory = nullptr);
   void DestroyNow(const Garbage& g);
   void ChildCreated() { ++internalRefs_; }
   void ChildDestroyed();
@@ -132,6 +133,8 @@ class DeviceImpl final : public Device {
   const DummyResources& dummies() const { return dummies_; }
   const DebugUtils& debugUtils() const { return debugUtils_; }
   uint64_t NextUid() { return ++uidCounter_; }
+  // Deferred contexts in creation order: which twin pipeline layouts they bind with.
+  uint32_t NextDeferredContextIndex() { return deferredContexts_++; }
 
   DEVICE_STATS stats{};
 
@@ -175,6 +178,7 @@ class DeviceImpl final : public Device {
   PipelineCache pipelines_;
   std::unique_ptr<ContextImpl> context_;
   std::atomic<uint64_t> uidCounter_{0};
+  std::atomic<uint32_t> deferredContexts_{0};
 };
 
 // Hot-path helpers, inline because they run once per draw.

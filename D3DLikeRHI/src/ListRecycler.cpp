@@ -59,7 +59,8 @@ std::unique_ptr<ListRecording> ListRecycler::Create() {
   rec->ring.Init(dev_);
   VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   pci.queueFamilyIndex = dev_->queueFamily();
-  vkCreateCommandPool(dev_->vk(), &pci, nullptr, &rec->pool);
+  rec->memory = std::make_unique<CommandMemory>();
+  vkCreateCommandPool(dev_->vk(), &pci, rec->memory->callbacks(), &rec->pool);
   VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   ai.commandPool = rec->pool;
   ai.level = VK_COMMAND_BUFFER_LEVEL_SECONDARY;

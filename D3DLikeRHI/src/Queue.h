@@ -10,6 +10,7 @@
 #include <mutex>
 #include <vector>
 
+#include "CommandMemory.h"
 #include "Ring.h"
 
 namespace d3dl::impl {
@@ -17,6 +18,7 @@ namespace d3dl::impl {
 struct Garbage {
   VkObjectType type;
   uint64_t handle;
+  CommandMemory* memory = nullptr;  // a command pool's allocator, deleted after the pool
 };
 
 class FrameQueue {

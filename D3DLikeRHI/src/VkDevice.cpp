@@ -115,14 +115,17 @@ void DeviceImpl::CreateCommandBuffer(VkCommandPool* pool, VkCommandBuffer* cmd) 
 }
 
 // ---------------------------------------------------------------------------
-void DeviceImpl::Defer(VkObjectType type, uint64_t handle) {
-  if (!handle) return;
-  if (orphaned_ || shuttingDown_ || !queue_.Ready()) {
-    ++stats.ObjectsDestroyed;
-    DestroyNow({type, handle});
+void DeviceImpl::Defer(VkObjectType type, uint64_t handle, CommandMemory* memory) {
+  if (!handle) {
+    delete memory;
     return;
   }
-  queue_.Defer({type, handle});
+  if (orphaned_ || shuttingDown_ || !queue_.Ready()) {
+    ++stats.ObjectsDestroyed;
+    DestroyNow({type, handle, memory});
+    return;
+  }
+  queue_.Defer({type, handle, memory});
 }
 
 void DeviceImpl::DestroyNow(const Garbage& g) {
@@ -135,8 +138,9 @@ void DeviceImpl::DestroyNow(const Garbage& g) {
     case VK_OBJECT_TYPE_SHADER_MODULE:
       vkDestroyShaderModule(device_, reinterpret_cast<VkShaderModule>(g.handle), nullptr);
       break;
-    case VK_OBJECT_TYPE_COMMAND_POOL:  // a command list's (with its buffer)
-      vkDestroyCommandPool(device_, reinterpret_cast<VkCommandPool>(g.handle), nullptr);
+    case VK_OBJECT_TYPE_COMMAND_POOL:  // a command list's (with its buffer), then its allocator
+      vkDestroyCommandPool(device_, reinterpret_cast<VkCommandPool>(g.handle), g.memory ? g.memory->callbacks() : nullptr);
+      delete g.memory;
       break;
     case VK_OBJECT_TYPE_DESCRIPTOR_POOL:
       vkDestroyDescriptorPool(device_, reinterpret_cast<VkDescriptorPool>(g.handle), nullptr);

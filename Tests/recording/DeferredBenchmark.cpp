@@ -10,11 +10,13 @@
 // ExecuteCommandList, submission and the GPU wait after. Both runs record on
 // threads other than main, so their heaps behave alike (glibc trims the main
 // thread's heap and faults it back in every iteration: 685 page faults per
-// 10,000 draws there, 17 on another thread). The two benchmarks run in
-// alternating pairs so that load from other processes hits both alike; the
-// ratio of each pair and their median are printed.
+// 10,000 draws there, 17 on another thread). Every iteration records on 1
+// and on 2 threads back to back, in alternating order, so that load from
+// other processes hits both alike; K benchmarks ("pairs") of I iterations;
+// the ratio of each pair's totals, their median and the ratio of all totals
+// are printed.
 //
-//   drr_rhi_bench --deferred [--draws N] [--pairs K] [google benchmark flags]
+//   drr_rhi_bench --deferred [--draws N] [--pairs K] [--iterations I] [google benchmark flags]
 //   drr_rhi_bench --deferred --smoke     the 1- and 2-thread images equal (recycled lists too), validation-clean
 #include <benchmark/benchmark.h>
 #include <pthread.h>
@@ -27,7 +29,6 @@
 #include <condition_variable>
 #include <cstdio>
 #include <cstring>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -111,19 +112,22 @@ class DeferredRecorder {
   // threads spent together and the span from the first start to the last end.
   struct Cost {
     double cpu, span;
+    double skew;  // from the first thread's start to the last one's
   };
   Cost Record(uint32_t n) {
     job_ = {n, armed_};
     Release();
     listCount_ = job_.threads;
-    Cost c{0, 0};
-    double first = begin_[0], last = end_[0];
+    Cost c{0, 0, 0};
+    double first = begin_[0], lastBegin = begin_[0], last = end_[0];
     for (uint32_t t = 0; t < job_.threads; ++t) {
       c.cpu += cpu_[t];
       first = std::min(first, begin_[t]);
+      lastBegin = std::max(lastBegin, begin_[t]);
       last = std::max(last, end_[t]);
     }
     c.span = last - first;
+    c.skew = lastBegin - first;
     return c;
   }
 
@@ -161,6 +165,7 @@ class DeferredRecorder {
   // wait is a condition variable, not a spinning atomic wait: a waiting
   // thread that yields would share a core with a recording one.
   void Release() {
+    startAt_ = Seconds(CLOCK_MONOTONIC) + kStartDelay;
     start_.store(generation_, std::memory_order_release);
     std::unique_lock<std::mutex> lock(doneMutex_);
     doneCv_.wait(lock, [this] { return doneCount_ == armed_; });
@@ -173,7 +178,7 @@ class DeferredRecorder {
     const Job job = job_;
     const double cpuStart = Seconds(CLOCK_THREAD_CPUTIME_ID);
     begin_[t] = Seconds(CLOCK_MONOTONIC);
-    d3dl::DeviceContext* ctx = deferred_[t].Get();
+    d3dl::DeviceContext* ctx = deferred_[job.threads == 1 ? kMaxThreads : t].Get();
     r_.BindDrawState(ctx);
     r_.RecordDraws(ctx, job.n * t / job.threads, job.n * (t + 1) / job.threads, job.n);
     ctx->FinishCommandList(0, lists_[t].ReleaseAndGetAddressOf());
@@ -188,7 +193,10 @@ class DeferredRecorder {
       seen = go_[t].load(std::memory_order_acquire);
       if (stop_) return;
       ready_[t].store(seen, std::memory_order_release);
-      while (start_.load(std::memory_order_acquire) != seen) CpuRelax();
+      // Yielding: the main thread, which gives the start, may be queued on
+      // this core. Then all begin at startAt_, when it sleeps.
+      while (start_.load(std::memory_order_acquire) != seen) sched_yield();
+      while (Seconds(CLOCK_MONOTONIC) < startAt_) CpuRelax();
       if (job_.threads > 0) Measure(t);
       std::lock_guard<std::mutex> lock(doneMutex_);
       ++doneCount_;
@@ -208,7 +216,11 @@ class DeferredRecorder {
   }
 
   RhiDrawSetup r_;
-  ComPtr<d3dl::DeviceContext> deferred_[kMaxThreads];
+  // [t]: thread t of the 2-thread run; [kMaxThreads]: the 1-thread run's.
+  // Each context always records the same share of the draws, so the list it
+  // recycles (whose commands the driver frees inside FinishCommandList, in
+  // the timed part) is always as long as the one it records.
+  ComPtr<d3dl::DeviceContext> deferred_[kMaxThreads + 1];
   ComPtr<d3dl::CommandList> lists_[kMaxThreads];
   uint32_t listCount_ = 0;
   // job_ and stop_ are written before go_ or start_ is raised.
@@ -220,6 +232,11 @@ class DeferredRecorder {
   std::mutex doneMutex_;
   std::condition_variable doneCv_;
   double cpu_[kMaxThreads] = {}, begin_[kMaxThreads] = {}, end_[kMaxThreads] = {};
+  // The threads start recording this long after the main thread gives the
+  // start, time enough for it to fall asleep: with three runnable threads on
+  // two cores, one recording thread would otherwise wait for the main one.
+  static constexpr double kStartDelay = 200e-6;
+  double startAt_ = 0;  // written before start_ is raised
 };
 
 std::unique_ptr<DeferredRecorder> g_recorder;  // reset before returning (see RecordBenchmark.cpp)
@@ -237,38 +254,52 @@ DeferredRecorder& Recorder() {
   return *g_recorder;
 }
 
-void RecordOnThreads(benchmark::State& state, uint32_t n, uint32_t threads) {
+// Per pair: every iteration's 1- and 2-thread spans and CPU times.
+struct PairSamples {
+  std::vector<double> one, two, cpuOne, cpuTwo;
+};
+std::vector<PairSamples> g_pairs;
+
+// Each iteration records the same draws on 1 and on 2 threads back to back,
+// in alternating order, so that both meet the same machine (on this guest
+// the 1-thread time alone drifts by 20 % from one second to the next). The
+// manual time is the 2-thread span; the 1-thread span is a counter.
+void RecordPair(benchmark::State& state, uint32_t n, size_t pair) {
   DeferredRecorder& rec = Recorder();
-  double cpu = 0;
-  rec.Arm(threads);
+  PairSamples& s = g_pairs[pair];
+  s = {};
+  double skew = 0;
   for (auto _ : state) {
-    const DeferredRecorder::Cost cost = rec.Record(n);
-    state.SetIterationTime(cost.span);
-    cpu += cost.cpu;
-    rec.ExecuteAndWait();
-    rec.Arm(threads);
+    DeferredRecorder::Cost cost[2];  // [0]: 1 thread, [1]: 2 threads
+    const size_t first = s.one.size() % 2;
+    for (size_t k = 0; k < 2; ++k) {
+      const size_t t = (first + k) % 2;
+      rec.Arm(uint32_t(t + 1));
+      cost[t] = rec.Record(n);
+      rec.ExecuteAndWait();
+    }
+    state.SetIterationTime(cost[1].span);
+    s.one.push_back(cost[0].span);
+    s.two.push_back(cost[1].span);
+    s.cpuOne.push_back(cost[0].cpu);
+    s.cpuTwo.push_back(cost[1].cpu);
+    skew += cost[1].skew;
   }
-  rec.Disarm();
+  const double iters = double(state.iterations());
+  double one = 0, cpuOne = 0, cpuTwo = 0;
+  for (size_t i = 0; i < s.one.size(); ++i) {
+    one += s.one[i];
+    cpuOne += s.cpuOne[i];
+    cpuTwo += s.cpuTwo[i];
+  }
   state.SetItemsProcessed(int64_t(state.iterations()) * n);
+  state.counters["one_thread_ms"] = 1e3 * one / iters;
   // CPU time of the recording threads per iteration: equal for 1 and 2
   // threads when the contexts do not contend (whatever the wall clock says).
-  state.counters["thread_cpu_ms"] = 1e3 * cpu / double(state.iterations());
+  state.counters["cpu_one_ms"] = 1e3 * cpuOne / iters;
+  state.counters["cpu_two_ms"] = 1e3 * cpuTwo / iters;
+  state.counters["start_skew_us"] = 1e6 * skew / iters;
 }
-
-// Per registered run: the recording time per iteration and the threads' CPU time.
-class PairReporter : public benchmark::ConsoleReporter {
- public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& run : runs) {
-      if (run.run_type != Run::RT_Iteration) continue;
-      times[run.run_name.function_name] = run.GetAdjustedRealTime();
-      const auto c = run.counters.find("thread_cpu_ms");
-      if (c != run.counters.end()) cpu[run.run_name.function_name] = c->second.value;
-    }
-  }
-  std::map<std::string, double> times, cpu;
-};
 
 struct RatioSummary {
   double median, min, max;
@@ -309,28 +340,34 @@ int Smoke(uint32_t draws) {
   return ok ? 0 : 1;
 }
 
-void PrintPairs(const PairReporter& reporter, int pairs, int64_t draws) {
+double Sum(const std::vector<double>& v) {
+  double sum = 0;
+  for (double x : v) sum += x;
+  return sum;
+}
+
+void PrintPairs(int64_t draws) {
   std::vector<double> ratios, cpuRatios;
   double sum1 = 0, sum2 = 0;
-  for (int k = 0; k < pairs; ++k) {
-    const std::string one = "BM_Deferred1Thread/pair:" + std::to_string(k);
-    const std::string two = "BM_Deferred2Threads/pair:" + std::to_string(k);
-    if (!reporter.times.count(one) || !reporter.times.count(two) || reporter.times.at(one) <= 0) continue;
-    const double t1 = reporter.times.at(one), t2 = reporter.times.at(two);
+  size_t samples = 0;
+  for (size_t k = 0; k < g_pairs.size(); ++k) {
+    const PairSamples& p = g_pairs[k];
+    if (p.one.empty()) continue;
+    const double t1 = Sum(p.one), t2 = Sum(p.two), n = double(p.one.size());
     ratios.push_back(t2 / t1);
-    if (reporter.cpu.count(one) && reporter.cpu.count(two) && reporter.cpu.at(one) > 0)
-      cpuRatios.push_back(reporter.cpu.at(two) / reporter.cpu.at(one));
+    cpuRatios.push_back(Sum(p.cpuTwo) / Sum(p.cpuOne));
     sum1 += t1;
     sum2 += t2;
-    std::printf("pair %d: 1 thread %.3f ms, 2 threads %.3f ms, ratio %.3f\n", k, t1, t2, t2 / t1);
+    samples += p.one.size();
+    std::printf("pair %zu: 1 thread %.3f ms, 2 threads %.3f ms, ratio %.3f\n", k, 1e3 * t1 / n, 1e3 * t2 / n,
+                t2 / t1);
   }
   if (ratios.empty()) return;
   const RatioSummary all = Summarise(ratios);
-  std::printf("ratio 2-thread / 1-thread deferred recording (%lld draws, %zu pairs, hardware threads %u): "
-              "median %.3f, min %.3f, max %.3f, of the totals %.3f\n",
-              static_cast<long long>(draws), ratios.size(), std::thread::hardware_concurrency(), all.median,
-              all.min, all.max, sum2 / sum1);
-  if (cpuRatios.empty()) return;
+  std::printf("ratio 2-thread / 1-thread deferred recording (%lld draws, %zu pairs of %zu iterations in all, "
+              "hardware threads %u): median %.3f, min %.3f, max %.3f, of the totals %.3f\n",
+              static_cast<long long>(draws), ratios.size(), samples, std::thread::hardware_concurrency(),
+              all.median, all.min, all.max, sum2 / sum1);
   // Near 1 when two contexts do not slow each other down (locks, shared
   // cache lines, allocator); less sensitive to other processes than wall time.
   const RatioSummary cpu = Summarise(cpuRatios);
@@ -343,6 +380,7 @@ void PrintPairs(const PairReporter& reporter, int pairs, int64_t draws) {
 int DeferredMain(int argc, char** argv) {
   int64_t draws = 10000;
   int pairs = 10;
+  int64_t iterations = 100;
   bool smoke = false;
   std::vector<char*> args{argv[0]};
   for (int i = 1; i < argc; ++i) {
@@ -353,12 +391,14 @@ int DeferredMain(int argc, char** argv) {
       draws = std::strtoll(argv[++i], nullptr, 10);
     } else if (std::strcmp(argv[i], "--pairs") == 0 && i + 1 < argc) {
       pairs = std::atoi(argv[++i]);
+    } else if (std::strcmp(argv[i], "--iterations") == 0 && i + 1 < argc) {
+      iterations = std::strtoll(argv[++i], nullptr, 10);
     } else {
       args.push_back(argv[i]);
     }
   }
-  if (draws < 2 || draws > 1000000 || pairs < 1 || pairs > 1000) {
-    std::fprintf(stderr, "--draws expects [2, 1000000], --pairs [1, 1000]\n");
+  if (draws < 2 || draws > 1000000 || pairs < 1 || pairs > 1000 || iterations < 1 || iterations > 100000) {
+    std::fprintf(stderr, "--draws expects [2, 1000000], --pairs [1, 1000], --iterations [1, 100000]\n");
     return 2;
   }
   if (smoke) {
@@ -366,23 +406,21 @@ int DeferredMain(int argc, char** argv) {
     g_recorder.reset();
     return rc;
   }
-  // Alternating pairs; manual time: the span the recording threads measured.
+  // A fixed number of iterations: the untimed part of one (executing the
+  // draws on lavapipe, the pause) is ten times the timed part, so Google
+  // Benchmark's own choice, made from the timed part, would take minutes.
   const auto count = static_cast<uint32_t>(draws);
-  for (int k = 0; k < pairs; ++k) {
-    const std::string suffix = "/pair:" + std::to_string(k);
-    benchmark::RegisterBenchmark(("BM_Deferred1Thread" + suffix).c_str(),
-                                 [count](benchmark::State& s) { RecordOnThreads(s, count, 1); })
-        ->Unit(benchmark::kMillisecond)->UseManualTime();
-    benchmark::RegisterBenchmark(("BM_Deferred2Threads" + suffix).c_str(),
-                                 [count](benchmark::State& s) { RecordOnThreads(s, count, 2); })
-        ->Unit(benchmark::kMillisecond)->UseManualTime();
+  g_pairs.assign(size_t(pairs), {});
+  for (size_t k = 0; k < size_t(pairs); ++k) {
+    benchmark::RegisterBenchmark(("BM_DeferredPair/pair:" + std::to_string(k)).c_str(),
+                                 [count, k](benchmark::State& s) { RecordPair(s, count, k); })
+        ->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(iterations);
   }
   int n = static_cast<int>(args.size());
   benchmark::Initialize(&n, args.data());
-  PairReporter reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::RunSpecifiedBenchmarks();
   g_recorder.reset();
-  PrintPairs(reporter, pairs, draws);
+  PrintPairs(draws);
   benchmark::Shutdown();
   return 0;
 }
