@@ -39,7 +39,7 @@ struct ListImport {
   RingAlloc slot;
 };
 
-struct alignas(64) ListRecording {  // alone in its cache lines: two are recorded at once
+struct ListRecording {
   std::unique_ptr<CommandMemory> memory;  // the pool's host memory, kept across recordings
   VkCommandPool pool = VK_NULL_HANDLE;
   VkCommandBuffer cmd = VK_NULL_HANDLE;  // secondary

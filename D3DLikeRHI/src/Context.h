@@ -64,7 +64,7 @@ struct BoundDescriptors {
   VkPipelineLayout hotLayout = VK_NULL_HANDLE;
 };
 
-class alignas(64) ContextImpl final : public DeviceContext, public BlitExtension {
+class ContextImpl final : public DeviceContext, public BlitExtension {
  public:
   // deferred: a deferred context (CreateDeferredContext), counted on its own.
   explicit ContextImpl(DeviceImpl* dev, bool deferred = false);
@@ -355,10 +355,6 @@ class alignas(64) ContextImpl final : public DeviceContext, public BlitExtension
   bool RejectDeferred(const char* fn, bool portLimit = false);
 
   const bool deferred_;
-  // Deferred: binds descriptor sets with twin pipeline layout number this
-  // (ProgramLayout::listLayouts), so that contexts recording at once do not
-  // share one reference count in the driver.
-  const uint32_t listLayoutIndex_;
   std::atomic<UINT> deferredRefs_{1};
   std::unique_ptr<ListRecording> rec_;
   std::shared_ptr<ListRecycler> recycler_;  // this context's recordings for reuse (ListRecycler.cpp)

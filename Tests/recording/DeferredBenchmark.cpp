@@ -347,7 +347,7 @@ double Sum(const std::vector<double>& v) {
 }
 
 void PrintPairs(int64_t draws) {
-  std::vector<double> ratios, cpuRatios;
+  std::vector<double> ratios, cpuRatios, iterationRatios;
   double sum1 = 0, sum2 = 0;
   size_t samples = 0;
   for (size_t k = 0; k < g_pairs.size(); ++k) {
@@ -359,6 +359,7 @@ void PrintPairs(int64_t draws) {
     sum1 += t1;
     sum2 += t2;
     samples += p.one.size();
+    for (size_t i = 0; i < p.one.size(); ++i) iterationRatios.push_back(p.two[i] / p.one[i]);
     std::printf("pair %zu: 1 thread %.3f ms, 2 threads %.3f ms, ratio %.3f\n", k, 1e3 * t1 / n, 1e3 * t2 / n,
                 t2 / t1);
   }
@@ -368,6 +369,11 @@ void PrintPairs(int64_t draws) {
               "hardware threads %u): median %.3f, min %.3f, max %.3f, of the totals %.3f\n",
               static_cast<long long>(draws), ratios.size(), samples, std::thread::hardware_concurrency(),
               all.median, all.min, all.max, sum2 / sum1);
+  // Each iteration's own ratio: robust to a pair that other processes hit.
+  std::sort(iterationRatios.begin(), iterationRatios.end());
+  const auto quantile = [&](double q) { return iterationRatios[size_t(q * double(iterationRatios.size() - 1))]; };
+  std::printf("ratio per iteration: median %.3f, quartiles %.3f and %.3f\n", quantile(0.5), quantile(0.25),
+              quantile(0.75));
   // Near 1 when two contexts do not slow each other down (locks, shared
   // cache lines, allocator); less sensitive to other processes than wall time.
   const RatioSummary cpu = Summarise(cpuRatios);
