@@ -355,6 +355,10 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   bool RejectDeferred(const char* fn, bool portLimit = false);
 
   const bool deferred_;
+  // Deferred: binds descriptor sets with twin pipeline layout number this
+  // (ProgramLayout::listLayouts), so that contexts recording at once do not
+  // share one reference count in the driver.
+  const uint32_t listLayoutIndex_;
   std::atomic<UINT> deferredRefs_{1};
   std::unique_ptr<ListRecording> rec_;
   std::shared_ptr<ListRecycler> recycler_;  // this context's recordings for reuse (ListRecycler.cpp)

@@ -313,9 +313,9 @@ bool ContextImpl::BindSet(VkCommandBuffer cmd, VkPipelineBindPoint point, const 
     d.hotCbs[i] = b;
   }
   if (newSet && !WriteSet(p, d)) return false;
-  d.hotLayout = p.layout;
+  d.hotLayout = rec_ ? dev_->pipelines().ListLayout(p, listLayoutIndex_) : p.layout;
   d.nHotCbs = nCB;
-  vkCmdBindDescriptorSets(cmd, point, p.layout, 0, 1, &d.set, nCB, d.dynOffsets);
+  vkCmdBindDescriptorSets(cmd, point, d.hotLayout, 0, 1, &d.set, nCB, d.dynOffsets);
   return true;
 }
 

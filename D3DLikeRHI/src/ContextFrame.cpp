@@ -9,7 +9,8 @@ constexpr uint32_t kTimestampsPerFrame = 1024;
 constexpr uint32_t kSetsPerPool = 512;
 }  // namespace
 
-ContextImpl::ContextImpl(DeviceImpl* dev, bool deferred) : dev_(dev), deferred_(deferred) {
+ContextImpl::ContextImpl(DeviceImpl* dev, bool deferred)
+    : dev_(dev), deferred_(deferred), listLayoutIndex_(deferred ? dev->NextDeferredContextIndex() : 0) {
   CreateDefaultStates();
   if (deferred) {  // records into command lists (ContextDeferred.cpp)
     dev_->ChildCreated();

@@ -133,6 +133,8 @@ class DeviceImpl final : public Device {
   const DummyResources& dummies() const { return dummies_; }
   const DebugUtils& debugUtils() const { return debugUtils_; }
   uint64_t NextUid() { return ++uidCounter_; }
+  // Deferred contexts in creation order: which twin pipeline layouts they bind with.
+  uint32_t NextDeferredContextIndex() { return deferredContexts_++; }
 
   DEVICE_STATS stats{};
 
@@ -176,6 +178,7 @@ class DeviceImpl final : public Device {
   PipelineCache pipelines_;
   std::unique_ptr<ContextImpl> context_;
   std::atomic<uint64_t> uidCounter_{0};
+  std::atomic<uint32_t> deferredContexts_{0};
 };
 
 // Hot-path helpers, inline because they run once per draw.

@@ -95,6 +95,33 @@ bool PipelineCache::CreateLayout(const std::vector<VkDescriptorSetLayoutBinding>
   return true;
 }
 
+VkPipelineLayout PipelineCache::ListLayout(const ProgramLayout& prog, uint32_t index) {
+  std::atomic<VkPipelineLayout>& twin = prog.listLayouts[index % ProgramLayout::kListLayouts];
+  if (VkPipelineLayout l = twin.load(std::memory_order_acquire)) return l;
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (VkPipelineLayout l = twin.load(std::memory_order_relaxed)) return l;
+  VkPipelineLayoutCreateInfo lci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  lci.setLayoutCount = 1;
+  lci.pSetLayouts = &prog.setLayout;
+  VkPipelineLayout l = VK_NULL_HANDLE;
+  if (vkCreatePipelineLayout(dev_->vk(), &lci, nullptr, &l) != VK_SUCCESS) return prog.layout;
+  twin.store(l, std::memory_order_release);
+  return l;
+}
+
+void PipelineCache::DeferLayouts(const ProgramLayout& prog) {
+  dev_->Defer(VK_OBJECT_TYPE_PIPELINE_LAYOUT, reinterpret_cast<uint64_t>(prog.layout));
+  for (const auto& twin : prog.listLayouts)
+    dev_->Defer(VK_OBJECT_TYPE_PIPELINE_LAYOUT, reinterpret_cast<uint64_t>(twin.load()));
+  dev_->Defer(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, reinterpret_cast<uint64_t>(prog.setLayout));
+}
+
+void PipelineCache::DestroyLayouts(const ProgramLayout& prog) {
+  vkDestroyPipelineLayout(dev_->vk(), prog.layout, nullptr);
+  for (const auto& twin : prog.listLayouts) vkDestroyPipelineLayout(dev_->vk(), twin.load(), nullptr);
+  vkDestroyDescriptorSetLayout(dev_->vk(), prog.setLayout, nullptr);
+}
+
 // ---------------------------------------------------------------------------
 // Compute and unordered access: layouts and pipelines keyed by the shader.
 ProgramLayout* PipelineCache::GetComputeProgram(ShaderBase* cs) {
@@ -255,8 +282,7 @@ void PipelineCache::ForgetShader(uint64_t cacheId) {
     computePipelines_.erase(it);
   }
   if (auto it = computePrograms_.find(cacheId); it != computePrograms_.end()) {
-    dev_->Defer(VK_OBJECT_TYPE_PIPELINE_LAYOUT, reinterpret_cast<uint64_t>(it->second->layout));
-    dev_->Defer(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, reinterpret_cast<uint64_t>(it->second->setLayout));
+    DeferLayouts(*it->second);
     computePrograms_.erase(it);
   }
   for (auto it = pipelines_.begin(); it != pipelines_.end();) {
@@ -269,8 +295,7 @@ void PipelineCache::ForgetShader(uint64_t cacheId) {
   }
   for (auto it = programs_.begin(); it != programs_.end();) {
     if (it->first.Uses(cacheId)) {
-      dev_->Defer(VK_OBJECT_TYPE_PIPELINE_LAYOUT, reinterpret_cast<uint64_t>(it->second->layout));
-      dev_->Defer(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, reinterpret_cast<uint64_t>(it->second->setLayout));
+      DeferLayouts(*it->second);
       it = programs_.erase(it);
     } else {
       ++it;
@@ -281,17 +306,11 @@ void PipelineCache::ForgetShader(uint64_t cacheId) {
 void PipelineCache::Destroy() {
   for (auto& [k, p] : pipelines_) vkDestroyPipeline(dev_->vk(), p, nullptr);
   pipelines_.clear();
-  for (auto& [k, p] : programs_) {
-    vkDestroyPipelineLayout(dev_->vk(), p->layout, nullptr);
-    vkDestroyDescriptorSetLayout(dev_->vk(), p->setLayout, nullptr);
-  }
+  for (auto& [k, p] : programs_) DestroyLayouts(*p);
   programs_.clear();
   for (auto& [k, p] : computePipelines_) vkDestroyPipeline(dev_->vk(), p, nullptr);
   computePipelines_.clear();
-  for (auto& [k, p] : computePrograms_) {
-    vkDestroyPipelineLayout(dev_->vk(), p->layout, nullptr);
-    vkDestroyDescriptorSetLayout(dev_->vk(), p->setLayout, nullptr);
-  }
+  for (auto& [k, p] : computePrograms_) DestroyLayouts(*p);
   computePrograms_.clear();
 }
 

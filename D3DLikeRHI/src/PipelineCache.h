@@ -2,6 +2,7 @@
 // graphics pipelines keyed by a packed state key (PipelineCache.cpp).
 #pragma once
 
+#include <atomic>
 #include <cstring>
 #include <memory>
 #include <mutex>
@@ -15,6 +16,14 @@ namespace d3dl::impl {
 struct ProgramLayout {
   VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
   VkPipelineLayout layout = VK_NULL_HANDLE;
+  // Twins of `layout` (the same set layout, so compatible with it) that
+  // deferred contexts bind descriptor sets with, made on first use
+  // (PipelineCache::ListLayout). Mesa's command queue (lavapipe) takes a
+  // reference on the pipeline layout at every vkCmdBindDescriptorSets and
+  // drops it at reset: with one shared layout, two recording threads
+  // increment one counter, the cache line moving between cores at every draw.
+  static constexpr uint32_t kListLayouts = 4;
+  mutable std::atomic<VkPipelineLayout> listLayouts[kListLayouts] = {};
   struct Slot {
     uint16_t binding;
     ShaderStage stage;
@@ -78,8 +87,13 @@ class PipelineCache {
   // Compute: one layout and one pipeline per compute shader (its cache id).
   ProgramLayout* GetComputeProgram(ShaderBase* cs);
   VkPipeline GetComputePipeline(ShaderBase* cs, ProgramLayout* prog);
+  // The pipeline layout deferred context `index` binds `prog`'s sets with
+  // (`prog.layout` itself if its twin cannot be made).
+  VkPipelineLayout ListLayout(const ProgramLayout& prog, uint32_t index);
 
  private:
+  void DeferLayouts(const ProgramLayout& prog);
+  void DestroyLayouts(const ProgramLayout& prog);
   bool CreateLayout(const std::vector<VkDescriptorSetLayoutBinding>& bindings, ProgramLayout* prog);
   DeviceImpl* dev_ = nullptr;
   std::unordered_map<uint64_t, std::unique_ptr<ProgramLayout>> computePrograms_;
