@@ -108,7 +108,8 @@ class DeferredRecorder {
   }
 
   // Timed part: draws [0, n) split into the armed threads' contiguous ranges,
-  // range t recorded into list t on context t. Returns the CPU seconds the
+  // range t recorded into list t (on context t, or on the 1-thread run's own
+  // context when one thread is armed). Returns the CPU seconds the
   // threads spent together and the span from the first start to the last end.
   struct Cost {
     double cpu, span;
@@ -254,6 +255,12 @@ DeferredRecorder& Recorder() {
   return *g_recorder;
 }
 
+double Sum(const std::vector<double>& v) {
+  double sum = 0;
+  for (double x : v) sum += x;
+  return sum;
+}
+
 // Per pair: every iteration's 1- and 2-thread spans and CPU times.
 struct PairSamples {
   std::vector<double> one, two, cpuOne, cpuTwo;
@@ -262,7 +269,7 @@ std::vector<PairSamples> g_pairs;
 
 // Each iteration records the same draws on 1 and on 2 threads back to back,
 // in alternating order, so that both meet the same machine (on this guest
-// the 1-thread time alone drifts by 20 % from one second to the next). The
+// the 1-thread time alone drifts by up to 2x within a second). The
 // manual time is the 2-thread span; the 1-thread span is a counter.
 void RecordPair(benchmark::State& state, uint32_t n, size_t pair) {
   DeferredRecorder& rec = Recorder();
@@ -286,18 +293,12 @@ void RecordPair(benchmark::State& state, uint32_t n, size_t pair) {
     skew += cost[1].skew;
   }
   const double iters = double(state.iterations());
-  double one = 0, cpuOne = 0, cpuTwo = 0;
-  for (size_t i = 0; i < s.one.size(); ++i) {
-    one += s.one[i];
-    cpuOne += s.cpuOne[i];
-    cpuTwo += s.cpuTwo[i];
-  }
   state.SetItemsProcessed(int64_t(state.iterations()) * n);
-  state.counters["one_thread_ms"] = 1e3 * one / iters;
+  state.counters["one_thread_ms"] = 1e3 * Sum(s.one) / iters;
   // CPU time of the recording threads per iteration: equal for 1 and 2
   // threads when the contexts do not contend (whatever the wall clock says).
-  state.counters["cpu_one_ms"] = 1e3 * cpuOne / iters;
-  state.counters["cpu_two_ms"] = 1e3 * cpuTwo / iters;
+  state.counters["cpu_one_ms"] = 1e3 * Sum(s.cpuOne) / iters;
+  state.counters["cpu_two_ms"] = 1e3 * Sum(s.cpuTwo) / iters;
   state.counters["start_skew_us"] = 1e6 * skew / iters;
 }
 
@@ -338,12 +339,6 @@ int Smoke(uint32_t draws) {
   const bool ok = !first.empty() && sizesMatch && differing == 0 && lit > 0 && messages == 0;
   std::printf("%d passed, %d failed\n", ok ? 1 : 0, ok ? 0 : 1);
   return ok ? 0 : 1;
-}
-
-double Sum(const std::vector<double>& v) {
-  double sum = 0;
-  for (double x : v) sum += x;
-  return sum;
 }
 
 void PrintPairs(int64_t draws) {
