@@ -255,25 +255,33 @@ void ContextImpl::Retain(T* object) {
 void ContextImpl::RetainInList(Unknown* object) { Retain(object); }
 
 // Every object a draw reads, referenced by the list (D3D11 lists keep them).
+// Only the groups whose dirty bits are set can bring objects the list does
+// not hold yet (every setter that binds a new object raises its group's bit,
+// and a new list starts with every bit set), so the others are skipped.
 void ContextImpl::RetainDrawState(bool indexed) {
-  for (ShaderStage s : kStages) Retain(state_.stages[s].shader.Get());
+  if (dirty_ & (kPipeline | kProgram)) {  // shaders, input layout, fixed-function states, targets
+    for (ShaderStage s : kStages) Retain(state_.stages[s].shader.Get());
+    Retain(state_.ia.layout.Get());
+    Retain(state_.rs.state.Get());
+    const OutputMergerState& om = state_.om;
+    for (uint32_t i = 0; i < om.numRenderTargets; ++i) Retain(om.renderTargets[i].Get());
+    Retain(om.depthStencilView.Get());
+    Retain(om.blend.Get());
+    Retain(om.depthStencil.Get());
+  }
   const InputAssemblerState& ia = state_.ia;
-  Retain(ia.layout.Get());
-  for (uint32_t m = ia.layout ? ia.layout->slotMask : 0; m; m &= m - 1)
-    Retain(ia.vertexBuffers[__builtin_ctz(m)].buffer.Get());
-  if (indexed) Retain(ia.indexBuffer.Get());
-  for (const auto& s : program_->cbs) Retain(state_.stages[s.stage].constantBuffers[s.slot].Get());
-  for (const auto& s : program_->srvs) Retain(state_.stages[s.stage].shaderResources[s.slot].Get());
-  for (const auto& s : program_->bufferSrvs) Retain(state_.stages[s.stage].shaderResources[s.slot].Get());
-  for (const auto& s : program_->samplers) Retain(state_.stages[s.stage].samplers[s.slot].Get());
-  Retain(state_.rs.state.Get());
-  const OutputMergerState& om = state_.om;
-  for (uint32_t i = 0; i < om.numRenderTargets; ++i) Retain(om.renderTargets[i].Get());
-  Retain(om.depthStencilView.Get());
-  Retain(om.blend.Get());
-  Retain(om.depthStencil.Get());
-  for (const auto& s : program_->uavImages) Retain(state_.psUavs.uavs[s.slot].Get());
-  for (const auto& s : program_->uavBuffers) Retain(state_.psUavs.uavs[s.slot].Get());
+  if (dirty_ & kVertexBuffers)
+    for (uint32_t m = ia.layout ? ia.layout->slotMask : 0; m; m &= m - 1)
+      Retain(ia.vertexBuffers[__builtin_ctz(m)].buffer.Get());
+  if (indexed && (dirty_ & kIndexBuffer)) Retain(ia.indexBuffer.Get());
+  if (dirty_ & (kDescriptors | kCbSlots | kProgram | kUavs)) {  // what the descriptor set points at
+    for (const auto& s : program_->cbs) Retain(state_.stages[s.stage].constantBuffers[s.slot].Get());
+    for (const auto& s : program_->srvs) Retain(state_.stages[s.stage].shaderResources[s.slot].Get());
+    for (const auto& s : program_->bufferSrvs) Retain(state_.stages[s.stage].shaderResources[s.slot].Get());
+    for (const auto& s : program_->samplers) Retain(state_.stages[s.stage].samplers[s.slot].Get());
+    for (const auto& s : program_->uavImages) Retain(state_.psUavs.uavs[s.slot].Get());
+    for (const auto& s : program_->uavBuffers) Retain(state_.psUavs.uavs[s.slot].Get());
+  }
 }
 
 // Every object a dispatch reads or writes (compute on a deferred context).

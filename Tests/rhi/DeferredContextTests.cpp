@@ -395,6 +395,43 @@ TEST_F(RhiDeferred, ListKeepsItsObjectsAlive) {
   EXPECT_EQ(after.LiveObjects, before.LiveObjects);
 }
 
+// What a later draw of the list binds anew (a constant buffer, a rasterizer
+// state, a render-target view) is kept too, although the context has let go
+// of it and the application released it before the execution.
+TEST_F(RhiDeferred, ListKeepsWhatItsLaterDrawsBound) {
+  auto rt = MakeRenderTarget(kW, kH);
+  const Quad first{4, 4, 20, 20, {1, 0, 0, 1}}, second{30, 30, 60, 50, {0, 0.6f, 1, 1}};
+  auto ctx = MakeDeferred();
+  const QuadConstants c1 = ToConstants(first);
+  auto cb1 = MakeCB(sizeof(c1), USAGE_DEFAULT, &c1);
+  BindQuadState(ctx.Get(), rt.rtv.Get(), cb1.Get());
+  ctx->Draw(6, 0);
+  DEVICE_STATS before;
+  device()->GetStats(&before);
+  {
+    const QuadConstants c2 = ToConstants(second);
+    auto cb2 = MakeCB(sizeof(c2), USAGE_DEFAULT, &c2);
+    ComPtr<RenderTargetView> rtv2;
+    ASSERT_EQ(device()->CreateRenderTargetView(rt.texture.Get(), nullptr, rtv2.GetAddressOf()), S_OK);
+    RASTERIZER_DESC rd;
+    rd.CullMode = CULL_NONE;
+    ComPtr<RasterizerState> rs2;
+    ASSERT_EQ(device()->CreateRasterizerState(&rd, rs2.GetAddressOf()), S_OK);
+    ctx->OMSetRenderTargets(1, rtv2.GetAddressOf(), nullptr);
+    ctx->RSSetState(rs2.Get());
+    ctx->VSSetConstantBuffers(0, 1, cb2.GetAddressOf());
+    ctx->Draw(6, 0);
+    BindQuadState(ctx.Get(), rt.rtv.Get(), cb1.Get());  // the context lets go of them
+  }
+  DEVICE_STATS held;
+  device()->GetStats(&held);
+  EXPECT_GE(held.LiveObjects, before.LiveObjects + 3) << "the list being recorded holds the three";
+  auto list = Finish(ctx.Get());
+  context()->ClearRenderTargetView(rt.rtv.Get(), kBlack);
+  context()->ExecuteCommandList(list.Get(), 0);
+  EXPECT_EQ(CountDifferences(ReadBack(rt.texture.Get()), Rasterise({first, second}), 1, "after release"), 0);
+}
+
 TEST_F(RhiDeferred, BadUsesAreRejected) {
   auto ctx = MakeDeferred();
   auto expectError = [this](const char* what) {
