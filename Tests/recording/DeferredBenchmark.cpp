@@ -1,245 +1,32 @@
-// drr_rhi_bench --deferred: the frame of RhiRecorder (one Map(WRITE_DISCARD)
-// of a constant buffer + Draw per draw) recorded on deferred contexts: all
-// draws on one context by one recording thread, against half of them on each
-// of two contexts by two recording threads at the same time. Timed: from the
-// first thread's first call to the last thread's FinishCommandList, read by
-// the recording threads themselves (manual time). Not timed: waking the
-// threads, which happens before (they spin until the start; how long an OS
-// takes to give a sleeping thread a core is the scheduler's cost, not the
-// recording's, 0.1 to 0.4 ms on this project's 2-vCPU guest), and
-// ExecuteCommandList, submission and the GPU wait after. Both runs record on
-// threads other than main, so their heaps behave alike (glibc trims the main
-// thread's heap and faults it back in every iteration: 685 page faults per
-// 10,000 draws there, 17 on another thread). Every iteration records on 1
-// and on 2 threads back to back, in alternating order, so that load from
-// other processes hits both alike; K benchmarks ("pairs") of I iterations;
-// the ratio of each pair's totals, their median and the ratio of all totals
-// are printed.
+// drr_rhi_bench --deferred: 10,000 draws recorded on deferred contexts by
+// one thread against two threads at the same time (DeferredRecorder.h says
+// what is timed). Every iteration records on 1 and on 2 threads back to
+// back, in alternating order, so that load from other processes hits both
+// alike; K benchmarks ("pairs") of I iterations; the ratio of each pair's
+// totals, their median and the ratio of all totals are printed. --floor adds,
+// in every iteration, the same 1- and 2-thread runs of the RHI's Vulkan
+// commands written by hand, one device per thread so that nothing is shared:
+// what lavapipe and this machine give any recorder, beside the RHI's ratio.
 //
-//   drr_rhi_bench --deferred [--draws N] [--pairs K] [--iterations I] [google benchmark flags]
-//   drr_rhi_bench --deferred --smoke     the 1- and 2-thread images equal (recycled lists too), validation-clean
+//   drr_rhi_bench --deferred [--draws N] [--pairs K] [--iterations I] [--floor] [google benchmark flags]
+//   drr_rhi_bench --deferred --smoke     the 1- and 2-thread images equal (recycled lists too), the
+//                                        floor's recorders too, all validation-clean
 #include <benchmark/benchmark.h>
-#include <pthread.h>
-#include <sched.h>
-#include <time.h>
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
-#include <condition_variable>
 #include <cstdio>
 #include <cstring>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
 
-#include "Recorder.h"
-#include "RhiDrawSetup.h"
+#include "DeferredRecorder.h"
 
 namespace drrbench {
 namespace {
 
-using d3dl::ComPtr;
-constexpr uint32_t kMaxThreads = 2;
-
-double Seconds(clockid_t clock) {
-  timespec ts;
-  clock_gettime(clock, &ts);
-  return double(ts.tv_sec) + double(ts.tv_nsec) * 1e-9;
-}
-
-// A spin-wait hint: lets the sibling hardware thread run, costs no syscall.
-inline void CpuRelax() {
-#if defined(__x86_64__) || defined(__i386__)
-  __builtin_ia32_pause();
-#elif defined(__aarch64__)
-  asm volatile("yield");
-#endif
-}
-
-// Keeps the calling thread on CPU `cpu` (when the machine has it). Without
-// it Linux places a woken thread on its waker's CPU: two recording threads
-// then share one core for up to a scheduler slice while the other idles
-// (measured before pinning: the second thread started 0.32 to 0.44 ms after
-// the first, a quarter of a 10,000-draw recording).
-void PinTo(unsigned cpu) {
-  if (std::thread::hardware_concurrency() <= cpu) return;
-  cpu_set_t set;
-  CPU_ZERO(&set);
-  CPU_SET(cpu, &set);
-  pthread_setaffinity_np(pthread_self(), sizeof(set), &set);
-}
-
-// Recording thread t (pinned to CPU t) records on deferred context t. The
-// threads a run uses are armed (woken, spinning) before the timed part.
-class DeferredRecorder {
- public:
-  ~DeferredRecorder() { StopThreads(); }
-
-  bool Init(std::string* error) {
-    if (!r_.Init("rhi-deferred-benchmark", error)) return false;
-    bool ok = true;
-    for (auto& c : deferred_) ok = ok && d3dl::SUCCEEDED(r_.device->CreateDeferredContext(0, c.GetAddressOf()));
-    if (!ok) {
-      *error = "CreateDeferredContext failed";
-      return false;
-    }
-    for (uint32_t t = 0; t < kMaxThreads; ++t)
-      threads_[t] = std::thread([this, t] {
-        PinTo(t);
-        ThreadLoop(t);
-      });
-    return true;
-  }
-
-  // Not timed: wakes recording threads 0 .. threads-1 and returns once they
-  // all spin, ready for the next Record.
-  void Arm(uint32_t threads) {
-    const uint32_t g = ++generation_;
-    armed_ = threads;
-    for (uint32_t t = 0; t < threads; ++t) {
-      go_[t].store(g, std::memory_order_release);
-      go_[t].notify_one();
-    }
-    for (uint32_t t = 0; t < threads; ++t)
-      while (ready_[t].load(std::memory_order_acquire) != g) std::this_thread::yield();
-  }
-
-  // Timed part: draws [0, n) split into the armed threads' contiguous ranges,
-  // range t recorded into list t (on context t, or on the 1-thread run's own
-  // context when one thread is armed). Returns the CPU seconds the
-  // threads spent together and the span from the first start to the last end.
-  struct Cost {
-    double cpu, span;
-    double skew;  // from the first thread's start to the last one's
-  };
-  Cost Record(uint32_t n) {
-    job_ = {n, armed_};
-    Release();
-    listCount_ = job_.threads;
-    Cost c{0, 0, 0};
-    double first = begin_[0], lastBegin = begin_[0], last = end_[0];
-    for (uint32_t t = 0; t < job_.threads; ++t) {
-      c.cpu += cpu_[t];
-      first = std::min(first, begin_[t]);
-      lastBegin = std::max(lastBegin, begin_[t]);
-      last = std::max(last, end_[t]);
-    }
-    c.span = last - first;
-    c.skew = lastBegin - first;
-    return c;
-  }
-
-  // Not timed: releases the armed threads without work (after the last Record).
-  void Disarm() {
-    job_ = {0, 0};
-    Release();
-  }
-
-  // Not timed: the lists in draw order after a clear, then the copy for ReadBack.
-  void ExecuteAndWait() {
-    const float black[4] = {0, 0, 0, 0};
-    r_.context->ClearRenderTargetView(r_.rtv.Get(), black);
-    for (uint32_t t = 0; t < listCount_; ++t) r_.context->ExecuteCommandList(lists_[t].Get(), 0);
-    r_.context->CopyResource(r_.staging.Get(), r_.target.Get());
-    r_.context->Flush();
-    r_.device->WaitIdle();
-    for (auto& l : lists_) l = {};
-    // lavapipe's queue thread goes on after the fence (0.4 ms seen: releasing
-    // what the submission held); left running it takes a core from the next
-    // timed recording, which only the 2-thread run needs (medians 0.776-0.796
-    // without this pause, 0.736 with 1 ms, 0.724 with 3 ms).
-    std::this_thread::sleep_for(std::chrono::milliseconds(3));
-  }
-
-  std::vector<uint8_t> ReadBack() { return r_.ReadStaging(); }
-  uint64_t Messages() const { return r_.Messages(); }
-
- private:
-  struct Job {
-    uint32_t n, threads;
-  };
-
-  // Starts the armed threads on job_ and sleeps until they are done. The
-  // wait is a condition variable, not a spinning atomic wait: a waiting
-  // thread that yields would share a core with a recording one.
-  void Release() {
-    startAt_ = Seconds(CLOCK_MONOTONIC) + kStartDelay;
-    start_.store(generation_, std::memory_order_release);
-    std::unique_lock<std::mutex> lock(doneMutex_);
-    doneCv_.wait(lock, [this] { return doneCount_ == armed_; });
-    doneCount_ = 0;
-    armed_ = 0;
-  }
-
-  // Context t's range of the current job, with its times.
-  void Measure(uint32_t t) {
-    const Job job = job_;
-    const double cpuStart = Seconds(CLOCK_THREAD_CPUTIME_ID);
-    begin_[t] = Seconds(CLOCK_MONOTONIC);
-    d3dl::DeviceContext* ctx = deferred_[job.threads == 1 ? kMaxThreads : t].Get();
-    r_.BindDrawState(ctx);
-    r_.RecordDraws(ctx, job.n * t / job.threads, job.n * (t + 1) / job.threads, job.n);
-    ctx->FinishCommandList(0, lists_[t].ReleaseAndGetAddressOf());
-    end_[t] = Seconds(CLOCK_MONOTONIC);
-    cpu_[t] = Seconds(CLOCK_THREAD_CPUTIME_ID) - cpuStart;
-  }
-
-  void ThreadLoop(uint32_t t) {
-    uint32_t seen = 0;
-    for (;;) {
-      go_[t].wait(seen, std::memory_order_acquire);
-      seen = go_[t].load(std::memory_order_acquire);
-      if (stop_) return;
-      ready_[t].store(seen, std::memory_order_release);
-      // Yielding: the main thread, which gives the start, may be queued on
-      // this core. Then all begin at startAt_, when it sleeps.
-      while (start_.load(std::memory_order_acquire) != seen) sched_yield();
-      while (Seconds(CLOCK_MONOTONIC) < startAt_) CpuRelax();
-      if (job_.threads > 0) Measure(t);
-      std::lock_guard<std::mutex> lock(doneMutex_);
-      ++doneCount_;
-      doneCv_.notify_one();
-    }
-  }
-
-  void StopThreads() {
-    if (armed_) Disarm();  // an armed thread spins until released
-    stop_ = true;
-    for (auto& go : go_) {
-      go.fetch_add(1, std::memory_order_release);
-      go.notify_one();
-    }
-    for (auto& t : threads_)
-      if (t.joinable()) t.join();
-  }
-
-  RhiDrawSetup r_;
-  // [t]: thread t of the 2-thread run; [kMaxThreads]: the 1-thread run's.
-  // Each context always records the same share of the draws, so the list it
-  // recycles (whose commands the driver frees inside FinishCommandList, in
-  // the timed part) is always as long as the one it records.
-  ComPtr<d3dl::DeviceContext> deferred_[kMaxThreads + 1];
-  ComPtr<d3dl::CommandList> lists_[kMaxThreads];
-  uint32_t listCount_ = 0;
-  // job_ and stop_ are written before go_ or start_ is raised.
-  std::thread threads_[kMaxThreads];
-  Job job_{};
-  bool stop_ = false;
-  uint32_t armed_ = 0, generation_ = 0, doneCount_ = 0;
-  std::atomic<uint32_t> go_[kMaxThreads] = {}, ready_[kMaxThreads] = {}, start_{0};
-  std::mutex doneMutex_;
-  std::condition_variable doneCv_;
-  double cpu_[kMaxThreads] = {}, begin_[kMaxThreads] = {}, end_[kMaxThreads] = {};
-  // The threads start recording this long after the main thread gives the
-  // start, time enough for it to fall asleep: with three runnable threads on
-  // two cores, one recording thread would otherwise wait for the main one.
-  static constexpr double kStartDelay = 200e-6;
-  double startAt_ = 0;  // written before start_ is raised
-};
-
+bool g_floor = false;  // --floor
 std::unique_ptr<DeferredRecorder> g_recorder;  // reset before returning (see RecordBenchmark.cpp)
 
 DeferredRecorder& Recorder() {
@@ -255,6 +42,13 @@ DeferredRecorder& Recorder() {
   return *g_recorder;
 }
 
+bool InitFloor() {
+  std::string error;
+  if (Recorder().InitFloor(&error)) return true;
+  std::fprintf(stderr, "deferred benchmark --floor: %s\n", error.c_str());
+  return false;
+}
+
 double Sum(const std::vector<double>& v) {
   double sum = 0;
   for (double x : v) sum += x;
@@ -264,8 +58,10 @@ double Sum(const std::vector<double>& v) {
 // Per pair: every iteration's 1- and 2-thread spans and CPU times.
 struct PairSamples {
   std::vector<double> one, two, cpuOne, cpuTwo;
+  std::vector<double> floorOne, floorTwo;  // --floor: the hand-written recording's spans
 };
 std::vector<PairSamples> g_pairs;
+
 
 // Each iteration records the same draws on 1 and on 2 threads back to back,
 // in alternating order, so that both meet the same machine (on this guest
@@ -286,6 +82,17 @@ void RecordPair(benchmark::State& state, uint32_t n, size_t pair) {
       rec.ExecuteAndWait();
     }
     state.SetIterationTime(cost[1].span);
+    if (g_floor) {
+      DeferredRecorder::Cost floor[2];
+      for (size_t k = 0; k < 2; ++k) {
+        const size_t t = (first + k) % 2;
+        rec.Arm(uint32_t(t + 1));
+        floor[t] = rec.Record(n, Work::kRawVulkan);
+        rec.Settle(Work::kRawVulkan);
+      }
+      s.floorOne.push_back(floor[0].span);
+      s.floorTwo.push_back(floor[1].span);
+    }
     s.one.push_back(cost[0].span);
     s.two.push_back(cost[1].span);
     s.cpuOne.push_back(cost[0].cpu);
@@ -333,12 +140,42 @@ int Smoke(uint32_t draws) {
     sizesMatch = sizesMatch && image.size() == first.size();
     for (size_t i = 0; i + 3 < image.size() && sizesMatch; i += 4) differing += std::memcmp(&first[i], &image[i], 4) != 0;
   }
-  const uint64_t messages = rec.Messages();
-  std::printf("deferred smoke: %u draws, %d rounds on 1 and 2 threads, %zu lit pixels, %zu differing pixels, "
-              "%llu messages\n", draws, kRounds, lit, differing, static_cast<unsigned long long>(messages));
-  const bool ok = !first.empty() && sizesMatch && differing == 0 && lit > 0 && messages == 0;
+  // The --floor recorders, once on 1 and 2 threads: validation-clean too.
+  std::string error;
+  const bool floorReady = rec.InitFloor(&error);
+  if (!floorReady) std::printf("deferred smoke: --floor: %s\n", error.c_str());
+  for (uint32_t threads = 1; floorReady && threads <= 2; ++threads) {
+    rec.Arm(threads);
+    rec.Record(draws, Work::kRawVulkan);
+    rec.Settle(Work::kRawVulkan);
+  }
+  const uint64_t messages = rec.Messages() + rec.RawMessages();
+  std::printf("deferred smoke: %u draws, %d rounds on 1 and 2 threads (and the floor's), %zu lit pixels, "
+              "%zu differing pixels, %llu messages\n", draws, kRounds, lit, differing,
+              static_cast<unsigned long long>(messages));
+  const bool ok = !first.empty() && sizesMatch && differing == 0 && lit > 0 && messages == 0 && floorReady;
   std::printf("%d passed, %d failed\n", ok ? 1 : 0, ok ? 0 : 1);
   return ok ? 0 : 1;
+}
+
+// The hand-written recording's ratio in the same pairs and iterations.
+void PrintFloor(double rhiTotals) {
+  std::vector<double> ratios;
+  double sum1 = 0, sum2 = 0;
+  size_t samples = 0;
+  for (const PairSamples& p : g_pairs) {
+    if (p.floorOne.empty()) continue;
+    ratios.push_back(Sum(p.floorTwo) / Sum(p.floorOne));
+    sum1 += Sum(p.floorOne);
+    sum2 += Sum(p.floorTwo);
+    samples += p.floorOne.size();
+  }
+  if (ratios.empty()) return;
+  const RatioSummary r = Summarise(ratios);
+  std::printf("floor, hand-written Vulkan (the same commands, one device per thread, nothing shared): 1 thread "
+              "%.3f ms; ratio 2-thread / 1-thread: median %.3f, min %.3f, max %.3f, of the totals %.3f; the "
+              "RHI's ratio of the totals minus this: %+.3f\n", 1e3 * sum1 / double(samples), r.median, r.min,
+              r.max, sum2 / sum1, rhiTotals - sum2 / sum1);
 }
 
 void PrintPairs(int64_t draws) {
@@ -374,6 +211,7 @@ void PrintPairs(int64_t draws) {
   const RatioSummary cpu = Summarise(cpuRatios);
   std::printf("ratio of the recording CPU time, both threads together / one thread: median %.3f, min %.3f, "
               "max %.3f\n", cpu.median, cpu.min, cpu.max);
+  PrintFloor(sum2 / sum1);
 }
 
 }  // namespace
@@ -392,6 +230,8 @@ int DeferredMain(int argc, char** argv) {
       draws = std::strtoll(argv[++i], nullptr, 10);
     } else if (std::strcmp(argv[i], "--pairs") == 0 && i + 1 < argc) {
       pairs = std::atoi(argv[++i]);
+    } else if (std::strcmp(argv[i], "--floor") == 0) {
+      g_floor = true;
     } else if (std::strcmp(argv[i], "--iterations") == 0 && i + 1 < argc) {
       iterations = std::strtoll(argv[++i], nullptr, 10);
     } else {
@@ -416,6 +256,10 @@ int DeferredMain(int argc, char** argv) {
     benchmark::RegisterBenchmark(("BM_DeferredPair/pair:" + std::to_string(k)).c_str(),
                                  [count, k](benchmark::State& s) { RecordPair(s, count, k); })
         ->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(iterations);
+  }
+  if (g_floor && !InitFloor()) {
+    g_recorder.reset();
+    return 1;
   }
   int n = static_cast<int>(args.size());
   benchmark::Initialize(&n, args.data());

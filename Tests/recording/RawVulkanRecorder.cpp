@@ -40,6 +40,7 @@ VKAPI_ATTR VkBool32 VKAPI_CALL OnDebugMessage(VkDebugUtilsMessageSeverityFlagBit
 
 class RawVulkanRecorder final : public Recorder {
  public:
+  explicit RawVulkanRecorder(const VkAllocationCallbacks* poolAllocator) : poolAllocator_(poolAllocator) {}
   ~RawVulkanRecorder() override { Destroy(); }
 
   bool Init(std::string* error) override {
@@ -133,7 +134,7 @@ class RawVulkanRecorder final : public Recorder {
 
     VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pci.queueFamilyIndex = queueFamily_;
-    VK_TRY(vkCreateCommandPool(device_, &pci, nullptr, &pool_));
+    VK_TRY(vkCreateCommandPool(device_, &pci, poolAllocator_, &pool_));
     VkCommandBufferAllocateInfo cai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     cai.commandPool = pool_;
     cai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
@@ -431,7 +432,7 @@ class RawVulkanRecorder final : public Recorder {
       dispatch_.Destroy();
       DestroyRing();
       vkDestroyFence(device_, fence_, nullptr);
-      vkDestroyCommandPool(device_, pool_, nullptr);
+      vkDestroyCommandPool(device_, pool_, poolAllocator_);
       vkDestroyPipeline(device_, pipeline_, nullptr);
       vkDestroyDescriptorPool(device_, descriptorPool_, nullptr);
       vkDestroyPipelineLayout(device_, layout_, nullptr);
@@ -478,6 +479,7 @@ class RawVulkanRecorder final : public Recorder {
   VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
+  const VkAllocationCallbacks* poolAllocator_;  // the command pool's host memory (null: the driver's)
   VkCommandPool pool_ = VK_NULL_HANDLE;
   VkCommandBuffer cmd_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
@@ -486,6 +488,8 @@ class RawVulkanRecorder final : public Recorder {
 
 }  // namespace
 
-Recorder* CreateRawVulkanRecorder() { return new RawVulkanRecorder(); }
+Recorder* CreateRawVulkanRecorder(const VkAllocationCallbacks* poolAllocator) {
+  return new RawVulkanRecorder(poolAllocator);
+}
 
 }  // namespace drrbench

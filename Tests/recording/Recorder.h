@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <vulkan/vulkan.h>
+
 namespace drrbench {
 
 inline constexpr uint32_t kTargetSize = 64;
@@ -47,7 +49,8 @@ class Recorder {
   virtual std::vector<uint32_t> ReadBackWords() = 0;
 };
 
-Recorder* CreateRawVulkanRecorder();
+// poolAllocator: host memory of the command pool (null: the driver's own).
+Recorder* CreateRawVulkanRecorder(const VkAllocationCallbacks* poolAllocator = nullptr);
 Recorder* CreateRhiRecorder();
 
 // drr_rhi_bench --deferred (DeferredBenchmark.cpp): 1 against 2 recording threads.
