@@ -24,13 +24,13 @@ build="$root/build-bundle"
 "$root/scripts/setup.sh"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DDRR_IMAGE_IO=STB >/dev/null
 cmake --build "$build" --parallel "$(nproc)" \
-  --target DynamicResolutionRendering drr_import_worker drr_rhi_bench drr_arena drr_arena_large
+  --target DynamicResolutionRendering drr_import_worker drr_rhi_bench drr_scene_record_bench drr_arena drr_arena_large
 
 rm -rf "$out"
 mkdir -p "$out/bin" "$out/lib" "$out/media"
 # drr_import_worker decodes model and texture files; the sample looks for it beside itself.
 cp "$build/DynamicResolutionRendering/DynamicResolutionRendering" "$build/DynamicResolutionRendering/drr_import_worker" \
-   "$build/Tests/recording/drr_rhi_bench" "$out/bin/"
+   "$build/Tests/recording/drr_rhi_bench" "$build/Tests/recording/drr_scene_record_bench" "$out/bin/"
 strip "$out"/bin/*
 cp -r "$build/shaders" "$out/shaders"
 mkdir -p "$out/bench-shaders" && cp "$build"/Tests/recording/shaders/*.spv "$out/bench-shaders/"

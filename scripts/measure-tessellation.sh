@@ -13,10 +13,10 @@
 # (Controller.md), without the controller's own noise.
 #
 # usage: scripts/measure-tessellation.sh [build dir]
-#        (env: W H PPE MAXF NATIVE_FRAMES CTL_FRAMES REPEAT SCENE SWEEP SWEEP_FRAMES ROUNDS)
+#        (env: W H PPE MAXF NATIVE_FRAMES CTL_FRAMES REPEAT SCENE SWEEP SWEEP_FRAMES ROUNDS EXE)
 set -euo pipefail
 BUILD=${1:-build}
-EXE=$BUILD/DynamicResolutionRendering/DynamicResolutionRendering
+EXE=${EXE:-$BUILD/DynamicResolutionRendering/DynamicResolutionRendering}  # or a bundle's run.sh
 W=${W:-320} H=${H:-180} PPE=${PPE:-2} MAXF=${MAXF:-64}
 NATIVE_FRAMES=${NATIVE_FRAMES:-30} CTL_FRAMES=${CTL_FRAMES:-240} REPEAT=${REPEAT:-1}
 SCENE_ARG=${SCENE:+--scene $SCENE}
@@ -42,7 +42,7 @@ print("settled scale %.3f (range %.3f-%.3f), GPU frame %.1f ms against the budge
 PY
 }
 
-echo "lavapipe ${W}x${H}, small Arena, camera 1, article law; tessellation: pixels per edge $PPE, max factor $MAXF"
+echo "${W}x${H}, ${SCENE:-the ${DRR_ARENA:-small} Arena}, camera 1, article law; tessellation: pixels per edge $PPE, max factor $MAXF"
 if [ -n "${SWEEP:-}" ]; then
   for r in $(seq "${ROUNDS:-2}"); do
     for s in $SWEEP; do
