@@ -78,7 +78,9 @@ TEST_F(SceneFrame, FrustumCullFixDrawsLessAndChangesNoPixel) {
     const SceneStats after = s.GetScene()->Stats();
     std::printf("[frustum-cull] camera %d: draws %u (culled %u) -> %u (culled %u)\n", camera, before.drawsIssued,
                 before.drawsCulled, after.drawsIssued, after.drawsCulled);
-    if (camera == 1) EXPECT_LT(after.drawsIssued, before.drawsIssued);  // t=3: meshes beside the view
+    if (camera == 1) {
+      EXPECT_LT(after.drawsIssued, before.drawsIssued);  // t=3: meshes beside the view
+    }
     EXPECT_LE(after.drawsIssued, before.drawsIssued);
     EXPECT_EQ(after.drawsIssued + after.drawsCulled, before.drawsIssued + before.drawsCulled);
     EXPECT_EQ(Compare(original, fixed).differing, 0u);
