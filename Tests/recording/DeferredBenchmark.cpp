@@ -62,7 +62,6 @@ struct PairSamples {
 };
 std::vector<PairSamples> g_pairs;
 
-
 // Each iteration records the same draws on 1 and on 2 threads back to back,
 // in alternating order, so that both meet the same machine (on this guest
 // the 1-thread time alone drifts by up to 2x within a second). The

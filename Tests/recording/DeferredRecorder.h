@@ -118,7 +118,6 @@ class DeferredRecorder {
     job_ = {n, armed_, work};
     Release();
     if (work == Work::kRhi) listCount_ = job_.threads;
-    else rawUsed_ = job_.threads == 1 ? 1u << kMaxThreads : (1u << job_.threads) - 1;
     Cost c{0, 0, 0};
     double first = begin_[0], lastBegin = begin_[0], last = end_[0];
     for (uint32_t t = 0; t < job_.threads; ++t) {
@@ -147,20 +146,15 @@ class DeferredRecorder {
     r_.context->Flush();
     r_.device->WaitIdle();
     for (auto& l : lists_) l = {};
-    // lavapipe's queue thread goes on after the fence (0.4 ms seen: releasing
-    // what the submission held); left running it takes a core from the next
-    // timed recording, which only the 2-thread run needs (medians 0.776-0.796
-    // without this pause, 0.736 with 1 ms, 0.724 with 3 ms).
-    std::this_thread::sleep_for(std::chrono::milliseconds(3));
+    Pause();
   }
 
   // Not timed: what follows a run: the lists executed, or the hand-written
   // command buffers submitted, waited for and begun again; then a pause.
   void Settle(Work work) {
     if (work == Work::kRhi) return ExecuteAndWait();
-    for (uint32_t k = 0; k <= kMaxThreads; ++k)
-      if (rawUsed_ & (1u << k)) raw_[k]->SubmitAndWait();
-    std::this_thread::sleep_for(std::chrono::milliseconds(3));
+    for (uint32_t t = 0; t < job_.threads; ++t) raw_[Slot(t, job_.threads)]->SubmitAndWait();
+    Pause();
   }
 
   // The hand-written recorders of --floor, one device each.
@@ -171,6 +165,7 @@ class DeferredRecorder {
     }
     return true;
   }
+  // The hand-written recorders' messages (one counter for all of them).
   uint64_t RawMessages() const { return raw_[0] ? raw_[0]->ValidationMessages() : 0; }
 
   std::vector<uint8_t> ReadBack() { return r_.ReadStaging(); }
@@ -181,6 +176,16 @@ class DeferredRecorder {
     uint32_t n, threads;
     Work work;
   };
+
+  // The context (or hand-written recorder) thread t uses in a run of
+  // `threads`: its own in the 2-thread run, the 1-thread run's own otherwise.
+  static uint32_t Slot(uint32_t t, uint32_t threads) { return threads == 1 ? kMaxThreads : t; }
+
+  // lavapipe's queue thread goes on after the fence (0.4 ms seen: releasing
+  // what the submission held); left running it takes a core from the next
+  // timed recording, which only the 2-thread run needs (medians 0.776-0.796
+  // without this pause, 0.736 with 1 ms, 0.724 with 3 ms).
+  static void Pause() { std::this_thread::sleep_for(std::chrono::milliseconds(3)); }
 
   // Starts the armed threads on job_ and sleeps until they are done. The
   // wait is a condition variable, not a spinning atomic wait: a waiting
@@ -199,7 +204,7 @@ class DeferredRecorder {
     const Job job = job_;
     const double cpuStart = Seconds(CLOCK_THREAD_CPUTIME_ID);
     begin_[t] = Seconds(CLOCK_MONOTONIC);
-    const uint32_t slot = job.threads == 1 ? kMaxThreads : t;
+    const uint32_t slot = Slot(t, job.threads);
     const uint32_t first = job.n * t / job.threads, last = job.n * (t + 1) / job.threads;
     if (job.work == Work::kRawVulkan) {
       raw_[slot]->Record(last - first);
@@ -268,8 +273,6 @@ class DeferredRecorder {
   // command, which the RHI's deferred lists do not use either).
   d3dl::impl::CommandMemory rawMemory_[kMaxThreads + 1];
   std::unique_ptr<Recorder> raw_[kMaxThreads + 1];
-  uint32_t rawUsed_ = 0;  // bit k: raw_[k] recorded in the last run
-
 };
 
 }  // namespace drrbench
