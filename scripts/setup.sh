@@ -9,7 +9,7 @@ PACKAGES=(
   glslang-tools glslang-dev spirv-tools
   libglfw3-dev libglm-dev libassimp-dev assimp-testmodels
   libopenimageio-dev openimageio-tools libimgui-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev
   xvfb xauth xdotool openbox matchbox-window-manager
 )
 
