@@ -1,8 +1,10 @@
 // CPU reference encodings of render-target formats (FormatTests.cpp): what a
 // float written by a pixel shader becomes in each format, computed here
-// independently of the GPU. Rounding is to nearest, ties to even; the small
-// unsigned floats of R11G11B10_FLOAT may also round toward zero, which the
-// Vulkan specification allows (lavapipe does).
+// independently of the GPU. Where the Vulkan specification leaves the rounding
+// to the implementation, the reference gives the range of allowed codes:
+// float to UNORM may return either integer next to f * (2^b - 1) (exactly
+// that integer when it is one), and a float that falls between two values of a
+// smaller float format may become either of them.
 #pragma once
 
 #include <algorithm>
@@ -18,10 +20,18 @@ inline float Value(uint32_t x, uint32_t y, uint32_t target, uint32_t channel) {
   return float(h & 255u) / 256.0f;
 }
 
-// UNORM with `bits` bits: round(saturate(v) * (2^bits - 1)).
-inline uint32_t Unorm(float v, int bits) {
-  const double max = double((1u << bits) - 1);
-  return uint32_t(std::nearbyint(std::clamp(double(v), 0.0, 1.0) * max));
+// Codes lo..hi of an encoding that any conformant implementation may produce.
+struct CodeRange {
+  uint32_t lo, hi;
+  bool Holds(uint32_t code) const { return code >= lo && code <= hi; }
+};
+
+// The UNORM codes the specification allows for v: the integers next to
+// saturate(v) * (2^bits - 1), one code when that product is an integer. The
+// product is exact in double for the tests' values (k / 256 times < 2^16).
+inline CodeRange UnormAllowed(float v, int bits) {
+  const double r = std::clamp(double(v), 0.0, 1.0) * double((1u << bits) - 1);
+  return {uint32_t(std::floor(r)), uint32_t(std::ceil(r))};
 }
 
 // The sRGB transfer function applied before 8-bit quantisation.
@@ -35,7 +45,8 @@ inline uint32_t Srgb8(float v) {
 // signed: half (10 bits, signed), the 11-bit (6) and 10-bit (5) unsigned
 // floats of R11G11B10_FLOAT. Unsigned ones clamp negatives to 0. Finite
 // inputs in range only (the tests stay far below the maximum).
-inline uint32_t SmallFloat(float v, int mantBits, bool isSigned, bool towardZero = false) {
+enum class Rounding { Nearest, Down, Up };  // Down and Up in magnitude
+inline uint32_t SmallFloat(float v, int mantBits, bool isSigned, Rounding rounding = Rounding::Nearest) {
   uint32_t sign = 0;
   if (v < 0) {
     if (!isSigned) return 0;
@@ -53,7 +64,10 @@ inline uint32_t SmallFloat(float v, int mantBits, bool isSigned, bool towardZero
   } else {
     scaled = (m * 2.0 - 1.0) * double(1u << mantBits);
   }
-  uint32_t mant = uint32_t(towardZero ? std::floor(scaled) : std::nearbyint(scaled));
+  const double rounded = rounding == Rounding::Down ? std::floor(scaled)
+                         : rounding == Rounding::Up ? std::ceil(scaled)
+                                                    : std::nearbyint(scaled);
+  uint32_t mant = uint32_t(rounded);
   if (exp > 0 && mant == (1u << mantBits)) {  // rounded up into the next exponent
     mant = 0;
     ++exp;
@@ -64,8 +78,14 @@ inline uint32_t SmallFloat(float v, int mantBits, bool isSigned, bool towardZero
   return sign | (uint32_t(exp) << mantBits) | mant;
 }
 inline uint32_t Half(float v) { return SmallFloat(v, 10, true); }
-inline uint32_t Float11(float v, bool towardZero = false) { return SmallFloat(v, 6, false, towardZero); }
-inline uint32_t Float10(float v, bool towardZero = false) { return SmallFloat(v, 5, false, towardZero); }
+// The unsigned 11- and 10-bit floats of R11G11B10_FLOAT: the two values next
+// to v are allowed (the bits of same-signed floats are ordered as the values).
+inline CodeRange Float11Allowed(float v) {
+  return {SmallFloat(v, 6, false, Rounding::Down), SmallFloat(v, 6, false, Rounding::Up)};
+}
+inline CodeRange Float10Allowed(float v) {
+  return {SmallFloat(v, 5, false, Rounding::Down), SmallFloat(v, 5, false, Rounding::Up)};
+}
 
 // Whether GPU encoding `got` is `want` or one step away (an integer-ordered
 // encoding: UNORM codes, or the bits of a same-signed small float).

@@ -13,11 +13,13 @@ namespace ref = fmtref;
 // G-buffer: 8 targets, each format's codes against the CPU encoding.
 struct GBufferTarget {
   DXGI_FORMAT texture, view;  // view UNKNOWN: the texture's format
-  // The GPU codes of pixel (x, y) and the CPU-expected ones, per channel;
-  // `alt` is a second acceptable code (R11G11B10 rounded toward zero), or `want`.
-  void (*codes)(const Image&, uint32_t x, uint32_t y, uint32_t* got, uint32_t* want, uint32_t* alt, uint32_t* n);
+  // The GPU codes of pixel (x, y) and, per channel, the codes the Vulkan
+  // specification allows for the shader's value (one code where it fixes it).
+  void (*codes)(const Image&, uint32_t x, uint32_t y, uint32_t* got, ref::CodeRange* want, uint32_t* n);
   bool srgb;  // sRGB colour channels may differ by one code (approximate transfer function)
 };
+
+ref::CodeRange Exact(uint32_t code) { return {code, code}; }
 
 float Scaled(uint32_t x, uint32_t y, uint32_t t, uint32_t c, float mul, float add) {
   return ref::Value(x, y, t, c) * mul + add;  // exact in float32, as on the GPU
@@ -25,79 +27,79 @@ float Scaled(uint32_t x, uint32_t y, uint32_t t, uint32_t c, float mul, float ad
 
 const GBufferTarget kGBuffer[8] = {
     {DXGI_FORMAT_R10G10B10A2_UNORM, DXGI_FORMAT_UNKNOWN,
-     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, uint32_t* w, uint32_t* a, uint32_t* n) {
+     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, ref::CodeRange* w, uint32_t* n) {
        const uint32_t p = U32(i, x, y);
        *n = 4;
        for (uint32_t c = 0; c < 3; ++c) {
          g[c] = (p >> (10 * c)) & 1023;
-         w[c] = ref::Unorm(ref::Value(x, y, 0, c), 10);
+         w[c] = ref::UnormAllowed(ref::Value(x, y, 0, c), 10);
        }
        g[3] = p >> 30;
-       w[3] = ref::Unorm(ref::Value(x, y, 0, 3), 2);
+       w[3] = ref::UnormAllowed(ref::Value(x, y, 0, 3), 2);
      },
      false},
     {DXGI_FORMAT_R8_UNORM, DXGI_FORMAT_UNKNOWN,
-     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, uint32_t* w, uint32_t* a, uint32_t* n) {
+     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, ref::CodeRange* w, uint32_t* n) {
        *n = 1;
        g[0] = *i.At(x, y);
-       w[0] = ref::Unorm(ref::Value(x, y, 1, 0), 8);
+       w[0] = ref::UnormAllowed(ref::Value(x, y, 1, 0), 8);
      },
      false},
     {DXGI_FORMAT_R11G11B10_FLOAT, DXGI_FORMAT_UNKNOWN,
-     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, uint32_t* w, uint32_t* a, uint32_t* n) {
+     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, ref::CodeRange* w, uint32_t* n) {
        const uint32_t p = U32(i, x, y);
        *n = 3;
        g[0] = p & 2047, g[1] = (p >> 11) & 2047, g[2] = p >> 22;
        for (uint32_t c = 0; c < 3; ++c) {
          const float v = Scaled(x, y, 2, c, 40, -4);  // negatives clamp to 0
-         w[c] = c < 2 ? ref::Float11(v) : ref::Float10(v);
-         a[c] = c < 2 ? ref::Float11(v, true) : ref::Float10(v, true);
+         w[c] = c < 2 ? ref::Float11Allowed(v) : ref::Float10Allowed(v);
        }
      },
      false},
     {DXGI_FORMAT_R16G16B16A16_FLOAT, DXGI_FORMAT_UNKNOWN,
-     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, uint32_t* w, uint32_t* a, uint32_t* n) {
+     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, ref::CodeRange* w, uint32_t* n) {
        *n = 4;
        for (uint32_t c = 0; c < 4; ++c) {
          g[c] = U16(i, x, y, c);
-         w[c] = ref::Half(Scaled(x, y, 3, c, 64, -16));
+         w[c] = Exact(ref::Half(Scaled(x, y, 3, c, 64, -16)));  // exact in half
        }
      },
      false},
     {DXGI_FORMAT_R8G8B8A8_UNORM_SRGB, DXGI_FORMAT_UNKNOWN,
-     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, uint32_t* w, uint32_t* a, uint32_t* n) {
+     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, ref::CodeRange* w, uint32_t* n) {
        *n = 4;
        for (uint32_t c = 0; c < 4; ++c) {
          g[c] = i.At(x, y)[c];
          const float v = ref::Value(x, y, 4, c);
-         w[c] = c < 3 ? ref::Srgb8(v) : ref::Unorm(v, 8);  // alpha stays linear
+         w[c] = c < 3 ? Exact(ref::Srgb8(v)) : ref::UnormAllowed(v, 8);  // alpha stays linear
        }
      },
      true},
     {DXGI_FORMAT_R8G8B8A8_UNORM, DXGI_FORMAT_UNKNOWN,
-     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, uint32_t* w, uint32_t* a, uint32_t* n) {
+     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, ref::CodeRange* w, uint32_t* n) {
        *n = 4;
        for (uint32_t c = 0; c < 4; ++c) {
          g[c] = i.At(x, y)[c];
-         w[c] = ref::Unorm(ref::Value(x, y, 5, c), 8);
+         w[c] = ref::UnormAllowed(ref::Value(x, y, 5, c), 8);
        }
      },
      false},
     {DXGI_FORMAT_R16G16_FLOAT, DXGI_FORMAT_UNKNOWN,
-     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, uint32_t* w, uint32_t* a, uint32_t* n) {
+     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, ref::CodeRange* w, uint32_t* n) {
        *n = 2;
        for (uint32_t c = 0; c < 2; ++c) {
          g[c] = U16(i, x, y, c);
-         w[c] = ref::Half(Scaled(x, y, 6, c, 1024, -100));
+         w[c] = Exact(ref::Half(Scaled(x, y, 6, c, 1024, -100)));  // integers below 2^11
        }
      },
      false},
     {DXGI_FORMAT_R32_TYPELESS, DXGI_FORMAT_R32_FLOAT,
-     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, uint32_t* w, uint32_t* a, uint32_t* n) {
+     [](const Image& i, uint32_t x, uint32_t y, uint32_t* g, ref::CodeRange* w, uint32_t* n) {
        *n = 1;
        g[0] = U32(i, x, y);
        const float v = Scaled(x, y, 7, 0, 3, -1);
-       std::memcpy(&w[0], &v, 4);
+       std::memcpy(&w[0].lo, &v, 4);
+       w[0].hi = w[0].lo;
      },
      false},
 };
@@ -124,16 +126,18 @@ TEST_F(RhiFormats, GBufferRoundTripThroughEightFormats) {
     std::string first;
     for (uint32_t y = 0; y < H; ++y)
       for (uint32_t x = 0; x < W; ++x) {
-        uint32_t got[4], want[4], alt[4] = {~0u, ~0u, ~0u, ~0u}, n;
-        kGBuffer[t].codes(img, x, y, got, want, alt, &n);
+        uint32_t got[4], n;
+        ref::CodeRange want[4];
+        kGBuffer[t].codes(img, x, y, got, want, &n);
         for (uint32_t c = 0; c < n; ++c) {
-          if (got[c] == want[c] || got[c] == alt[c]) {
+          if (want[c].Holds(got[c])) {
             ++exact;
-          } else if (kGBuffer[t].srgb && c < 3 && ref::WithinOneStep(got[c], want[c])) {
+          } else if (kGBuffer[t].srgb && c < 3 && ref::WithinOneStep(got[c], want[c].lo)) {
             ++near;
           } else {
             if (!wrong++) first = "(" + std::to_string(x) + "," + std::to_string(y) + ") channel " + std::to_string(c) +
-                                  ": got " + std::to_string(got[c]) + ", want " + std::to_string(want[c]);
+                                  ": got " + std::to_string(got[c]) + ", want " + std::to_string(want[c].lo) +
+                                  (want[c].hi != want[c].lo ? ".." + std::to_string(want[c].hi) : "");
           }
         }
       }
@@ -175,9 +179,10 @@ TEST_F(RhiFormats, EightTargetsHonourPerTargetWriteMasks) {
         for (uint32_t c = 0; c < 4; ++c) {
           const bool masked5 = independent && (c == 1 || c == 2);
           const float v2 = std::clamp(Scaled(x, y, 2, c, 40, -4), 0.0f, 1.0f);
-          wrong += t0.RGBA8(x, y)[c] != ref::Unorm(ref::Value(x, y, 0, c), 8);
-          wrong += t2.RGBA8(x, y)[c] != (independent ? 255u : ref::Unorm(v2, 8));
-          wrong += t5.RGBA8(x, y)[c] != (masked5 ? 255u : ref::Unorm(ref::Value(x, y, 5, c), 8));
+          const ref::CodeRange kept{255u, 255u};
+          wrong += !ref::UnormAllowed(ref::Value(x, y, 0, c), 8).Holds(t0.RGBA8(x, y)[c]);
+          wrong += !(independent ? kept : ref::UnormAllowed(v2, 8)).Holds(t2.RGBA8(x, y)[c]);
+          wrong += !(masked5 ? kept : ref::UnormAllowed(ref::Value(x, y, 5, c), 8)).Holds(t5.RGBA8(x, y)[c]);
         }
     EXPECT_EQ(wrong, 0) << "IndependentBlendEnable " << independent;
   }

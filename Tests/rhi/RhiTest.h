@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <string>
 
 #include "RenderTest.h"
 
@@ -13,6 +15,14 @@ struct ColorVertex {
   float pos[4];
   float color[4];
 };
+
+// A source file the build copied into rhi-test-sources/ beside the test
+// binary (Tests/rhi/CMakeLists.txt): found from the running executable, so the
+// suite reads it wherever the binary and that folder are carried together.
+inline std::string TestSourcePath(const char* name) {
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe");
+  return (exe.parent_path() / "rhi-test-sources" / name).string();
+}
 
 class RhiTest : public drrtest::RenderTest {
  protected:

@@ -144,7 +144,9 @@ TEST_F(RhiTessellation, QuadPatchCountsMatchTheTessellatorFormula) {
     EXPECT_EQ(s.IAPrimitives, 1u);
     EXPECT_EQ(s.HSInvocations, 1u) << "patches";
     EXPECT_EQ(s.CInvocations, want.triangles) << "tessellated triangles reaching the clipper";
-    EXPECT_EQ(s.DSInvocations, want.vertices) << "one domain shader invocation per domain point";
+    // The specification invokes the domain shader at least once per domain
+    // point; a driver may shade a shared point once per batch it falls in.
+    EXPECT_GE(s.DSInvocations, want.vertices) << "at least one domain shader invocation per domain point";
     EXPECT_EQ(s.GSInvocations, 0u);
   }
   ExpectNoErrors();
@@ -195,7 +197,7 @@ TEST_F(RhiTessellation, OutputTopologyWindingDecidesCulling) {
   auto colour = Texels({0xffffffffu});
   auto smp = MakeSampler(FILTER_MIN_MAG_MIP_POINT);
   ShaderCompileDesc cd;
-  cd.SourcePath = std::string(DRR_RHI_TEST_SHADER_SOURCE_DIR) + "/tess_quad_hs.hlsl";
+  cd.SourcePath = TestSourcePath("tess_quad_hs.hlsl");
   cd.Stage = ShaderStage::Hull;
   cd.Defines = {{"OUTPUT_TOPOLOGY", "\"triangle_ccw\""}};
   std::vector<uint32_t> code;
@@ -297,7 +299,7 @@ TEST_F(RhiTessellation, PatchListsOf1To32ControlPointsDrawAnd0And33AreRejected) 
   for (uint32_t n = 1; n <= 32; ++n) {
     SCOPED_TRACE(::testing::Message() << n << " control points");
     ShaderCompileDesc cd;
-    cd.SourcePath = std::string(DRR_RHI_TEST_SHADER_SOURCE_DIR) + "/tess_sized_hs.hlsl";
+    cd.SourcePath = TestSourcePath("tess_sized_hs.hlsl");
     cd.Stage = ShaderStage::Hull;
     cd.Defines = {{"CONTROL_POINTS", std::to_string(n)}};
     std::vector<uint32_t> code;

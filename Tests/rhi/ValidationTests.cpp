@@ -197,8 +197,9 @@ std::map<std::string, uint32_t> ReflectBindings(const std::vector<uint32_t>& w) 
 
 TEST_F(RhiValidation, BindingFormulaMatchesHeaderCMakeAndSpirv) {
   // 1. cmake/HLSL.cmake, parsed at test time.
-  std::ifstream in(DRR_HLSL_CMAKE);
-  ASSERT_TRUE(in) << DRR_HLSL_CMAKE;
+  const std::string hlslCmake = TestSourcePath("HLSL.cmake");
+  std::ifstream in(hlslCmake);
+  ASSERT_TRUE(in) << hlslCmake;
   std::stringstream ss;
   ss << in.rdbuf();
   std::string text = ss.str();
