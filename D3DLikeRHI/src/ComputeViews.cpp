@@ -1,4 +1,4 @@
-// Compute and unordered access views: UAVs of 2-D textures (a VkImageView
+// Views for compute and pixel-shader stores: UAVs of 2-D textures (a VkImageView
 // used as a storage image) and of structured/raw buffers, and SRVs of
 // structured/raw buffers (storage-buffer descriptors over a byte range).
 // The arguments are checked by ValidateBufferView / ValidateTextureUav first.

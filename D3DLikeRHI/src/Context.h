@@ -52,7 +52,7 @@ struct CommandFrame {
 // The descriptor set of the last commit, and what the constants-only path
 // needs to rebind it with new dynamic offsets.
 struct BoundDescriptors {
-  static constexpr uint32_t kMaxCbs = kStageCount * kMaxConstantBufferSlots;
+  static constexpr uint32_t kMaxCbs = kGraphicsStageCount * kMaxConstantBufferSlots;
   VkDescriptorSet set = VK_NULL_HANDLE;
   VkBuffer cbBuffers[kMaxCbs] = {};  // written into `set`
   uint32_t cbRanges[kMaxCbs] = {};
@@ -85,7 +85,7 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void PSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) override;
   void PSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) override;
   void PSSetSamplers(UINT startSlot, UINT num, SamplerState* const* samplers) override;
-  // Tessellation and geometry stages (ContextStages.cpp)
+  // Hull, domain and geometry stages (ContextStages.cpp)
   void HSSetShader(HullShader* shader) override;
   void HSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) override;
   void HSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) override;
@@ -132,14 +132,14 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void ClearState() override;
   void Flush() override;
 
-  // Formats, views, MSAA (ContextCopy.cpp)
+  // Multisample resolve (ContextCopy.cpp)
   void ResolveSubresource(Resource* dst, UINT dstSubresource, Resource* src, UINT srcSubresource,
                           DXGI_FORMAT format) override;
   // Deferred contexts (ContextDeferred.cpp)
   DEVICE_CONTEXT_TYPE GetType() override;
   HRESULT FinishCommandList(BOOL restoreDeferredContextState, CommandList** commandList) override;
   void ExecuteCommandList(CommandList* commandList, BOOL restoreContextState) override;
-  // Compute and unordered access (ContextCompute.cpp)
+  // Compute shaders and UAVs (ContextCompute.cpp)
   void CSSetShader(ComputeShader* shader) override;
   void CSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) override;
   void CSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) override;
@@ -190,19 +190,18 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void UnbindAliasedSRVs();
   bool BoundForOutput(const ViewCore& v) const;
   void CreateDefaultStates();
-  // Compute and unordered access: the state block of any stage, and its dirty
-  // bits (the compute stage has its own).
-  ShaderStageState& Stage(ShaderStage s) { return s == ShaderStage::Compute ? state_.cs.stage : state_.stages[s]; }
-  void MarkDirty(ShaderStage s, uint32_t bits) { (s == ShaderStage::Compute ? computeDirty_ : dirty_) |= bits; }
+  ShaderStageState& Stage(ShaderStage s) { return state_.stages[s]; }
+  const ShaderStageState& Stage(ShaderStage s) const { return state_.stages[s]; }
+  // Sets the dirty bits of a change to `s`'s state (graphics bits, or their
+  // compute counterparts for the compute stage).
+  void MarkDirty(ShaderStage s, uint32_t graphicsBits) { dirty_ |= DirtyBits(s, graphicsBits); }
 
   // ContextCompute.cpp
   void SetUavs(ComPtr<UAVImpl>* slots, const char* fn, UINT start, UINT num, UnorderedAccessView* const* views);
   bool CommitCompute();
   bool UavsBound(const ProgramLayout& p, ShaderStage stage);
   void UseShaderViews(const ProgramLayout& p, ShaderStage stage);
-  UAVImpl* UavAt(ShaderStage s, uint32_t slot) const {
-    return (s == ShaderStage::Compute ? state_.cs.uavs : state_.psUavs.uavs)[slot].Get();
-  }
+  UAVImpl* UavAt(ShaderStage s, uint32_t slot) const { return Stage(s).uavs[slot].Get(); }
   void ClearUav(UAVImpl* v, const VkClearColorValue& value, uint32_t fill);
 
   // ContextStages.cpp: the bound HS/DS/GS fit each other and the topology.
@@ -288,12 +287,12 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   uint32_t renderLayers_ = 1;  // array slices of the rendering scope (the bound views' fewest)
   ProgramLayout* program_ = nullptr;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
-  PipelineKey key_{};
+  PipelineKey key_{};      // the bound pipeline's
+  PipelineKey nextKey_{};  // built by BindPipeline, compared with key_
   int labelDepth_ = 0;
   uint32_t errorsLogged_ = 0;  // bits of OnceError
 
-  // Compute and unordered access: the compute bind point's committed state.
-  uint32_t computeDirty_ = kAll;
+  // The compute bind point's committed state (its dirty bits are in dirty_).
   ProgramLayout* computeProgram_ = nullptr;
   VkPipeline computePipeline_ = VK_NULL_HANDLE;
   BoundDescriptors computeDesc_;
@@ -333,8 +332,9 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void RetainInList(Unknown* object);
   void CopyImports(CommandListImpl& list);
   void ExportConstants(ListRecording& rec);
-  // A CPU-visible use of a resource (GpuUse): now on the immediate context,
-  // at ExecuteCommandList for a list.
+  // A CPU-visible use of a resource (GpuUse): recorded at the call on the
+  // immediate context, at ExecuteCommandList for a list (its frame is known
+  // only then).
   void NoteUse(GpuUse& u, bool write) {
     if (rec_) return NoteUseInList(u, write);
     write ? u.Write(dev_->CurrentSerial()) : u.Read(dev_->CurrentSerial());
@@ -386,9 +386,9 @@ inline VkRenderingAttachmentInfo LoadStoreAttachment(VkImageView view, VkImageLa
 // dirty bit (kIndexBuffer matters only to indexed draws).
 inline bool ContextImpl::Commit(bool indexed) {
   const uint32_t ignored = indexed ? uint32_t(kConstants) : uint32_t(kConstants | kIndexBuffer);
-  if ((dirty_ & ~ignored) != 0 || !rendering_ || HasPendingBarriers()) return CommitSlow(indexed);
+  if ((dirty_ & kGraphicsDirty & ~ignored) != 0 || !rendering_ || HasPendingBarriers()) return CommitSlow(indexed);
   if ((dirty_ & kConstants) && !BindConstantsHot(cmd_)) return false;
-  dirty_ &= indexed ? 0u : uint32_t(kIndexBuffer);
+  dirty_ &= indexed ? uint32_t(kComputeDirty) : uint32_t(kComputeDirty | kIndexBuffer);
   return true;
 }
 

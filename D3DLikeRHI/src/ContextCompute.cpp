@@ -1,4 +1,4 @@
-// Compute and unordered access: the CS setters, UAV bindings (compute and
+// Compute shaders and UAVs: the CS setters, UAV bindings (compute and
 // pixel stage), Dispatch/DispatchIndirect with their commit on the compute
 // bind point, and the UAV clears. Barriers come from the same per-resource
 // layout/access tracking as draws (Barriers.cpp): every UAV use counts as a
@@ -32,8 +32,8 @@ void ContextImpl::SetUavs(ComPtr<UAVImpl>* slots, const char* fn, UINT start, UI
 
 void ContextImpl::CSSetUnorderedAccessViews(UINT start, UINT num, UnorderedAccessView* const* views, const UINT*) {
   if (!ValidateSlots(*dev_, "CS", "SetUnorderedAccessViews", start, num, kMaxUnorderedAccessSlots)) return;
-  SetUavs(state_.cs.uavs, "CSSetUnorderedAccessViews", start, num, views);
-  computeDirty_ |= kDescriptors;
+  SetUavs(Stage(ShaderStage::Compute).uavs, "CSSetUnorderedAccessViews", start, num, views);
+  dirty_ |= kComputeDescriptors;
 }
 
 void ContextImpl::OMSetRenderTargetsAndUnorderedAccessViews(UINT numRTVs, RenderTargetView* const* rtvs,
@@ -45,7 +45,7 @@ void ContextImpl::OMSetRenderTargetsAndUnorderedAccessViews(UINT numRTVs, Render
   // Slots outside [uavStart, uavStart + numUAVs) are unbound, as in D3D11.
   UnorderedAccessView* all[kMaxUnorderedAccessSlots] = {};
   for (UINT i = 0; i < numUAVs && uavs; ++i) all[uavStart + i] = uavs[i];
-  SetUavs(state_.psUavs.uavs, "OMSetRenderTargetsAndUnorderedAccessViews", 0, kMaxUnorderedAccessSlots, all);
+  SetUavs(Stage(ShaderStage::Pixel).uavs, "OMSetRenderTargetsAndUnorderedAccessViews", 0, kMaxUnorderedAccessSlots, all);
   dirty_ |= kDescriptors | kUavs;
 }
 
@@ -90,33 +90,33 @@ void ContextImpl::UseShaderViews(const ProgramLayout& p, ShaderStage stage) {
 // Dispatch-time commit: program, barriers (outside any rendering scope),
 // pipeline and descriptor set on the compute bind point.
 bool ContextImpl::CommitCompute() {
-  ShaderBase* cs = state_.cs.stage.shader.Get();
+  ShaderBase* cs = Stage(ShaderStage::Compute).shader.Get();
   if (!cs) return ErrorOnce(OnceError::NoComputeShader), false;
-  if (computeDirty_ & kProgram) {
+  if (dirty_ & kComputeProgram) {
     computeProgram_ = dev_->pipelines().GetComputeProgram(cs);
     if (!computeProgram_) return ErrorOnce(OnceError::ProgramLayoutFailed), false;
-    computeDirty_ |= kDescriptors | kPipeline;
+    dirty_ |= kComputeDescriptors | kComputePipeline;
   }
   const ProgramLayout& p = *computeProgram_;
-  // UAV slots change only with kDescriptors (a failed check leaves it set).
-  if ((computeDirty_ & kDescriptors) && !UavsBound(p, ShaderStage::Compute))
+  // UAV slots change only with kComputeDescriptors (a failed check leaves it set).
+  if ((dirty_ & kComputeDescriptors) && !UavsBound(p, ShaderStage::Compute))
     return ErrorOnce(OnceError::UnboundUav), false;
   UseShaderViews(p, ShaderStage::Compute);
   if (rec_) RetainComputeState();
   EndRendering();
   FlushBarriers();
-  if (computeDirty_ & kPipeline) {
+  if (dirty_ & kComputePipeline) {
     VkPipeline pipeline = dev_->pipelines().GetComputePipeline(cs, computeProgram_);
     if (!pipeline) return ErrorOnce(OnceError::PipelineFailed), false;
     if (pipeline != computePipeline_) vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
     computePipeline_ = pipeline;
   }
   // Only constant data changed since the last dispatch: the same set, new offsets.
-  const bool sameSet = !(computeDirty_ & (kDescriptors | kCbSlots)) && computeDesc_.hotLayout;
+  const bool sameSet = !(dirty_ & (kComputeDescriptors | kComputeCbSlots)) && computeDesc_.hotLayout;
   if (!(sameSet && RebindWithNewOffsets(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, computeDesc_)) &&
-      !BindSet(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, p, computeDesc_, (computeDirty_ & kDescriptors) != 0))
+      !BindSet(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, p, computeDesc_, (dirty_ & kComputeDescriptors) != 0))
     return false;
-  computeDirty_ = 0;
+  dirty_ &= ~uint32_t(kComputeDirty);
   return true;
 }
 

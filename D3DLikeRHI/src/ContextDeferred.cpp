@@ -42,7 +42,7 @@ CommandListImpl::CommandListImpl(DeviceImpl* d, std::unique_ptr<ListRecording> r
                                  std::shared_ptr<ListRecycler> recycler)
     : Child<CommandList>(d), rec_(std::move(rec)), recycler_(std::move(recycler)) {}
 
-// The references go now; the Vulkan objects serve a later list of the same
+// Destruction releases the references at once; the Vulkan objects serve a later list of the same
 // context once the frame that last executed this one has completed.
 CommandListImpl::~CommandListImpl() {
   ReleaseListReferences(*rec_);
@@ -260,7 +260,7 @@ void ContextImpl::RetainInList(Unknown* object) { Retain(object); }
 // and a new list starts with every bit set), so the others are skipped.
 void ContextImpl::RetainDrawState(bool indexed) {
   if (dirty_ & (kPipeline | kProgram)) {  // shaders, input layout, fixed-function states, targets
-    for (ShaderStage s : kStages) Retain(state_.stages[s].shader.Get());
+    for (ShaderStage s : kGraphicsStages) Retain(state_.stages[s].shader.Get());
     Retain(state_.ia.layout.Get());
     Retain(state_.rs.state.Get());
     const OutputMergerState& om = state_.om;
@@ -279,22 +279,22 @@ void ContextImpl::RetainDrawState(bool indexed) {
     for (const auto& s : program_->srvs) Retain(state_.stages[s.stage].shaderResources[s.slot].Get());
     for (const auto& s : program_->bufferSrvs) Retain(state_.stages[s.stage].shaderResources[s.slot].Get());
     for (const auto& s : program_->samplers) Retain(state_.stages[s.stage].samplers[s.slot].Get());
-    for (const auto& s : program_->uavImages) Retain(state_.psUavs.uavs[s.slot].Get());
-    for (const auto& s : program_->uavBuffers) Retain(state_.psUavs.uavs[s.slot].Get());
+    for (const auto& s : program_->uavImages) Retain(state_.stages[ShaderStage::Pixel].uavs[s.slot].Get());
+    for (const auto& s : program_->uavBuffers) Retain(state_.stages[ShaderStage::Pixel].uavs[s.slot].Get());
   }
 }
 
 // Every object a dispatch reads or writes (compute on a deferred context).
 void ContextImpl::RetainComputeState() {
   const ProgramLayout& p = *computeProgram_;
-  const ShaderStageState& cs = state_.cs.stage;
+  const ShaderStageState& cs = state_.stages[ShaderStage::Compute];
   Retain(cs.shader.Get());
   for (const auto& s : p.cbs) Retain(cs.constantBuffers[s.slot].Get());
   for (const auto& s : p.srvs) Retain(cs.shaderResources[s.slot].Get());
   for (const auto& s : p.bufferSrvs) Retain(cs.shaderResources[s.slot].Get());
   for (const auto& s : p.samplers) Retain(cs.samplers[s.slot].Get());
-  for (const auto& s : p.uavImages) Retain(state_.cs.uavs[s.slot].Get());
-  for (const auto& s : p.uavBuffers) Retain(state_.cs.uavs[s.slot].Get());
+  for (const auto& s : p.uavImages) Retain(cs.uavs[s.slot].Get());
+  for (const auto& s : p.uavBuffers) Retain(cs.uavs[s.slot].Get());
 }
 
 // ---------------------------------------------------------------------------

@@ -134,7 +134,7 @@ bool ContextImpl::CheckDrawState(bool indexed) {
 
 PerStage<ShaderBase*> ContextImpl::BoundShaders() const {
   PerStage<ShaderBase*> shaders;
-  for (ShaderStage s : kStages) shaders[s] = state_.stages[s].shader.Get();
+  for (ShaderStage s : kGraphicsStages) shaders[s] = state_.stages[s].shader.Get();
   return shaders;
 }
 
@@ -145,7 +145,7 @@ void ContextImpl::UseDrawResources(bool indexed) {
       if (SRVImpl* v = state_.stages[s.stage].shaderResources[s.slot].Get(); v && v->v.tex)
         UseTexture(v->v.tex, v->v.range(), usage::ShaderRead);
   }
-  // Buffer SRVs and pixel-shader UAVs (compute and unordered access); a buffer
+  // Buffer SRVs and pixel-shader UAVs; a buffer
   // written since the last draw raises kVertexBuffers.
   if ((dirty_ & (kDescriptors | kSrvLayouts | kVertexBuffers | kUavs)) || program_->HasUavs())
     UseShaderViews(*program_, ShaderStage::Pixel);
@@ -179,7 +179,7 @@ bool ContextImpl::CommitSlow(bool indexed) {
   if (dirty_ & kVertexBuffers) BindVertexBuffers(cmd);
   if (indexed && (dirty_ & kIndexBuffer) && !BindIndexBuffer(cmd)) return false;
   if ((dirty_ & (kDescriptors | kConstants)) && !BindDescriptors(cmd)) return false;
-  dirty_ = indexed ? 0u : (dirty_ & kIndexBuffer);
+  dirty_ &= indexed ? uint32_t(kComputeDirty) : uint32_t(kComputeDirty | kIndexBuffer);
   if (program_->HasUavs()) dirty_ |= kUavs;  // D3D11 orders UAV writes of consecutive draws
   return true;
 }
@@ -188,9 +188,11 @@ bool ContextImpl::BindPipeline(VkCommandBuffer cmd) {
   const OutputMergerState& om = state_.om;
   PipelineInputs in{BoundShaders(), state_.ia.layout.Get(), om.blend ? om.blend.Get() : defaults_.blend.Get(),
                     om.depthStencil ? om.depthStencil.Get() : defaults_.depth.Get(), Rasterizer()};
-  PipelineKey k;
-  std::memset(&k, 0, sizeof(k));
-  for (ShaderStage s : kStages) k.shaders.ids[StageIndex(s)] = in.shaders[s] ? in.shaders[s]->cacheId : 0;
+  // Every field is written (rt[] up to its end), so the key held from the
+  // last build needs no clearing; it has no padding (PipelineCache.h), so the
+  // byte comparison and hash see only these values.
+  PipelineKey& k = nextKey_;
+  for (ShaderStage s : kGraphicsStages) k.shaders.ids[StageIndex(s)] = in.shaders[s] ? in.shaders[s]->cacheId : 0;
   k.il = in.il ? in.il->uid() : 0;
   k.blend = in.blend->uid();
   k.depth = in.depth->uid();
@@ -198,8 +200,8 @@ bool ContextImpl::BindPipeline(VkCommandBuffer cmd) {
   k.topologyClass = TopologyClass(state_.ia.topology);
   k.patchControlPoints = PatchControlPoints(state_.ia.topology);
   k.numRT = om.numRenderTargets;
-  for (uint32_t i = 0; i < om.numRenderTargets; ++i)
-    k.rt[i] = om.renderTargets[i] ? om.renderTargets[i]->v.format : VK_FORMAT_UNDEFINED;
+  for (uint32_t i = 0; i < SIMULTANEOUS_RENDER_TARGET_COUNT; ++i)
+    k.rt[i] = i < om.numRenderTargets && om.renderTargets[i] ? om.renderTargets[i]->v.format : VK_FORMAT_UNDEFINED;
   k.ds = om.depthStencilView ? om.depthStencilView->v.format : VK_FORMAT_UNDEFINED;
   k.samples = TargetSamples();
   k.sampleMask = k.samples >= 32 ? om.sampleMask : om.sampleMask & ((1u << k.samples) - 1);
@@ -329,7 +331,7 @@ VkWriteDescriptorSet WriteOf(VkDescriptorSet set, uint32_t binding, VkDescriptor
   return w;
 }
 // At most every binding of every graphics stage in one set.
-constexpr uint32_t kMaxWrites = kStageCount * kStageBindingStride;
+constexpr uint32_t kMaxWrites = kGraphicsStageCount * kStageBindingStride;
 }  // namespace
 
 bool ContextImpl::WriteSet(const ProgramLayout& p, BoundDescriptors& d) {
@@ -363,7 +365,7 @@ bool ContextImpl::WriteSet(const ProgramLayout& p, BoundDescriptors& d) {
     writes[nw] = WriteOf(set, s.binding, VK_DESCRIPTOR_TYPE_SAMPLER);
     writes[nw++].pImageInfo = &imgInfo[ni++];
   }
-  // Compute and unordered access: buffer SRVs (dummy when unbound) and UAVs
+  // Buffer SRVs (dummy when unbound) and UAVs
   // (bound with the right kind: UavsBound checked it).
   for (const auto& s : p.bufferSrvs) {
     const SRVImpl* v = Stage(s.stage).shaderResources[s.slot].Get();

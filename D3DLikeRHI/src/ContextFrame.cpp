@@ -142,7 +142,7 @@ VkDescriptorSet ContextImpl::AllocateSet(VkDescriptorSetLayout layout) {
           {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kSetsPerPool * 8},
           {VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, kSetsPerPool * 16},
           {VK_DESCRIPTOR_TYPE_SAMPLER, kSetsPerPool * 8},
-          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kSetsPerPool * 4},  // compute and unordered access
+          {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kSetsPerPool * 4},  // buffer SRVs and UAVs
           {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kSetsPerPool * 2},
       };
       VkDescriptorPoolCreateInfo ci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};

@@ -1,4 +1,4 @@
-// Tessellation and geometry stages: the HS/DS/GS setters (the same per-stage
+// Hull, domain and geometry stages: the HS/DS/GS setters (the same per-stage
 // state as VS/PS) and the draw-time check that the bound stages fit each
 // other and the primitive topology (what Vulkan pipeline creation requires).
 #include "Context.h"

@@ -26,7 +26,6 @@ void ContextImpl::MarkDirtyAll() {
   pipeline_ = VK_NULL_HANDLE;
   desc_.set = VK_NULL_HANDLE;
   std::fill(std::begin(desc_.cbBuffers), std::end(desc_.cbBuffers), VK_NULL_HANDLE);
-  computeDirty_ = kAll;
   computePipeline_ = VK_NULL_HANDLE;
   computeDesc_ = BoundDescriptors{};
 }
@@ -210,17 +209,12 @@ void ContextImpl::OMSetRenderTargets(UINT num, RenderTargetView* const* rtvs, De
 
 // D3D11 hazard rule: shader inputs that alias an output are unbound.
 void ContextImpl::UnbindAliasedSRVs() {
-  for (auto& stage : state_.stages)
-    for (auto& srv : stage.shaderResources)
+  for (ShaderStage s : kAllStages)
+    for (auto& srv : Stage(s).shaderResources)
       if (srv && BoundForOutput(srv->v)) {
         srv = nullptr;
-        dirty_ |= kDescriptors;
+        MarkDirty(s, kDescriptors);
       }
-  for (auto& srv : state_.cs.stage.shaderResources)  // compute and unordered access
-    if (srv && BoundForOutput(srv->v)) {
-      srv = nullptr;
-      computeDirty_ |= kDescriptors;
-    }
 }
 
 // Whether this context writes the viewed resource: a render target, the depth
@@ -233,7 +227,7 @@ bool ContextImpl::BoundForOutput(const ViewCore& v) const {
       if (om.renderTargets[i] && om.renderTargets[i]->v.tex == v.tex) return true;
     if (om.depthStencilView && om.depthStencilView->v.tex == v.tex) return true;
   }
-  for (const ComPtr<UAVImpl>* slots : {state_.cs.uavs, state_.psUavs.uavs})
+  for (const ComPtr<UAVImpl>* slots : {Stage(ShaderStage::Compute).uavs, Stage(ShaderStage::Pixel).uavs})
     for (uint32_t i = 0; i < kMaxUnorderedAccessSlots; ++i)
       if (slots[i] && (v.tex ? slots[i]->v.tex == v.tex : slots[i]->v.buf == v.buf)) return true;
   return false;
@@ -259,7 +253,6 @@ void ContextImpl::ClearState() {
                                             kMaxUnorderedAccessSlots, nullptr, nullptr);
   state_ = ContextState{};
   dirty_ = kAll;
-  computeDirty_ = kAll;
 }
 
 }  // namespace d3dl::impl

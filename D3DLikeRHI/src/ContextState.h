@@ -27,6 +27,9 @@ struct ShaderStageState {
   ComPtr<BufferImpl> constantBuffers[kMaxConstantBufferSlots];
   ComPtr<SRVImpl> shaderResources[kMaxTextureSlots];
   ComPtr<SamplerImpl> samplers[kMaxSamplerSlots];
+  // u# slots: bound only for the compute stage (CSSetUnorderedAccessViews)
+  // and the pixel stage (OMSetRenderTargetsAndUnorderedAccessViews).
+  ComPtr<UAVImpl> uavs[kMaxUnorderedAccessSlots];
 };
 
 struct RasterizerStageState {
@@ -48,28 +51,17 @@ struct OutputMergerState {
   UINT sampleMask = 0xffffffffu;  // OMSetBlendState's: which samples of MSAA targets are written
 };
 
-// Compute and unordered access: the compute stage is not a graphics stage
-// (not in kStages) and keeps its own block with its UAV slots; the pixel
-// shader's UAVs (OMSetRenderTargetsAndUnorderedAccessViews) sit beside the OM.
-struct ComputeState {
-  ShaderStageState stage;
-  ComPtr<UAVImpl> uavs[kMaxUnorderedAccessSlots];
-};
-struct PixelUavState {
-  ComPtr<UAVImpl> uavs[kMaxUnorderedAccessSlots];
-};
-
 struct ContextState {
   InputAssemblerState ia;
-  PerStage<ShaderStageState> stages;
+  PerStage<ShaderStageState> stages;  // compute included (ShaderStage::Compute)
   RasterizerStageState rs;
   OutputMergerState om;
-  ComputeState cs;        // compute and unordered access
-  PixelUavState psUavs;   // compute and unordered access
 };
 
-// What changed since the last commit: Commit re-records only that.
+// What changed since the last commit, in one mask: Commit re-records only
+// the graphics bits that are set, CommitCompute only the compute ones.
 enum Dirty : uint32_t {
+  // Graphics bind point.
   kPipeline = 1u << 0,
   kVertexBuffers = 1u << 1,
   kIndexBuffer = 1u << 2,
@@ -77,15 +69,28 @@ enum Dirty : uint32_t {
   kScissor = 1u << 4,
   kBlendConst = 1u << 5,
   kStencilRef = 1u << 6,
-  kDescriptors = 1u << 7,  // SRV/sampler/CB identity
+  kDescriptors = 1u << 7,  // SRV/sampler/CB/UAV identity
   kConstants = 1u << 8,    // only constant data changed
   kSrvLayouts = 1u << 9,   // some texture changed layout: re-check SRVs
   kProgram = 1u << 10,
   kTopology = 1u << 11,
   kCbSlots = 1u << 12,     // a CB slot was (re)bound: the hot CB list is out of date
-  kUavs = 1u << 20,        // pixel-shader UAVs: barriers before the next draw (compute and unordered access)
-  kAll = 0xffffffffu,
+  kUavs = 1u << 13,        // pixel-shader UAVs: barriers before the next draw
+  kGraphicsDirty = (1u << 14) - 1,
+  // Compute bind point: the graphics bit of the same meaning, shifted.
+  kComputeShift = 14,
+  kComputeProgram = kProgram << kComputeShift,
+  kComputePipeline = kPipeline << kComputeShift,
+  kComputeDescriptors = kDescriptors << kComputeShift,
+  kComputeCbSlots = kCbSlots << kComputeShift,
+  kComputeDirty = kGraphicsDirty << kComputeShift,
+  kAll = kGraphicsDirty | kComputeDirty,
 };
+// The bits a change to `stage`'s state sets: the graphics ones, or for the
+// compute stage their compute counterparts.
+constexpr uint32_t DirtyBits(ShaderStage stage, uint32_t graphicsBits) {
+  return stage == ShaderStage::Compute ? graphicsBits << kComputeShift : graphicsBits;
+}
 
 // Errors a context logs only once (draws that keep failing the same way).
 enum class OnceError : uint32_t {
@@ -99,13 +104,13 @@ enum class OnceError : uint32_t {
   IndexBufferNeverMapped,
   DescriptorSetFailed,
   TooManyTimestamps,
-  // Tessellation and geometry stages (CheckStageTopology)
+  // Hull, domain and geometry stages that do not fit (CheckStageTopology)
   HullWithoutDomain,
   DomainWithoutHull,
   PatchListWithoutHull,
   HullWithoutPatchList,
   GeometryInputMismatch,
-  // Compute and unordered access
+  // Dispatches, UAVs
   NoComputeShader,
   UnboundUav,
   NoFragmentStores,

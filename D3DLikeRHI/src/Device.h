@@ -15,9 +15,9 @@ struct DeviceFeatures {
   bool debugUtils = false, minmax = false, depthClamp = false, swapchain = false;
   bool surface = false;  // VK_KHR_surface enabled on the instance
   bool anisotropy = false, bc = false, fillNonSolid = false, mirrorOnce = false;
-  // Tessellation and geometry stages, pipeline statistics queries.
+  // Optional stages and pipeline statistics queries.
   bool tessellation = false, geometry = false, pipelineStatistics = false;
-  bool cubeArray = false, independentBlend = false;  // formats, views, MSAA
+  bool cubeArray = false, independentBlend = false;  // cube-array views, per-target blend
   bool fragmentStores = false;  // pixel-shader UAVs (fragmentStoresAndAtomics)
 };
 
@@ -27,7 +27,7 @@ struct DummyResources {
   VkDeviceSize uniformSize = 0;
   VkImageView view2D = VK_NULL_HANDLE, view1D = VK_NULL_HANDLE;
   VkSampler sampler = VK_NULL_HANDLE;
-  // Formats, views, MSAA: a zero view per declared image shape (1-D/2-D,
+  // A zero view per declared image shape (1-D/2-D,
   // arrays, cubes, multisampled), indexed by DummyViewIndex; null where the
   // adapter cannot make it (then view1D/view2D are bound).
   VkImageView views[9] = {};
@@ -89,7 +89,7 @@ class DeviceImpl final : public Device {
   void GetStats(DEVICE_STATS* stats) const override;
   bool CheckFormatSupport(DXGI_FORMAT format, UINT bindFlags) const override;
   void WaitIdle() override;
-  // Formats, views, MSAA (Textures.cpp)
+  // Multisampling support (Textures.cpp)
   HRESULT CheckMultisampleQualityLevels(DXGI_FORMAT format, UINT sampleCount, UINT* numQualityLevels) const override;
 
   // Logging

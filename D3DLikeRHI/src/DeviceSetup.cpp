@@ -195,7 +195,7 @@ bool DeviceImpl::EnableFeatures(VkPhysicalDeviceFeatures2* e2, VkPhysicalDeviceV
   features_.bc = f.textureCompressionBC;
   features_.fillNonSolid = f.fillModeNonSolid;
   features_.depthClamp = f.depthClamp;
-  // Tessellation and geometry stages, pipeline statistics: only when reported.
+  // Optional stages and pipeline statistics: enabled only when reported.
   e.tessellationShader = f.tessellationShader;
   e.geometryShader = f.geometryShader;
   e.pipelineStatisticsQuery = f.pipelineStatisticsQuery;

@@ -25,7 +25,7 @@ template size_t WordHash::operator()(const PipelineKey&) const;
 namespace {
 ShaderIds IdsOf(const PerStage<ShaderBase*>& shaders) {
   ShaderIds ids{};
-  for (ShaderStage s : kStages) ids.ids[StageIndex(s)] = shaders[s] ? shaders[s]->cacheId : 0;
+  for (ShaderStage s : kGraphicsStages) ids.ids[StageIndex(s)] = shaders[s] ? shaders[s]->cacheId : 0;
   return ids;
 }
 
@@ -72,7 +72,7 @@ ProgramLayout* PipelineCache::GetProgram(const PerStage<ShaderBase*>& shaders) {
 
   auto prog = std::make_unique<ProgramLayout>();
   std::vector<VkDescriptorSetLayoutBinding> bindings;
-  for (ShaderStage s : kStages)
+  for (ShaderStage s : kGraphicsStages)
     if (shaders[s]) AddStageBindings(shaders[s]->refl, s, prog.get(), &bindings);
   if (!CreateLayout(bindings, prog.get())) return nullptr;
   ProgramLayout* p = prog.get();
@@ -123,7 +123,8 @@ void PipelineCache::DestroyLayouts(const ProgramLayout& prog) {
 }
 
 // ---------------------------------------------------------------------------
-// Compute and unordered access: layouts and pipelines keyed by the shader.
+// Compute layouts and pipelines, keyed by the shader alone (no other state
+// enters a compute pipeline).
 ProgramLayout* PipelineCache::GetComputeProgram(ShaderBase* cs) {
   std::lock_guard<std::mutex> lock(mutex_);  // deferred contexts dispatch from several threads
   auto it = computePrograms_.find(cs->cacheId);
@@ -232,9 +233,9 @@ VkPipeline PipelineCache::GetPipeline(const PipelineKey& key, const PipelineInpu
   std::lock_guard<std::mutex> lock(mutex_);
   auto it = pipelines_.find(key);
   if (it != pipelines_.end()) return it->second;
-  VkPipelineShaderStageCreateInfo stages[kStageCount]{};
+  VkPipelineShaderStageCreateInfo stages[kGraphicsStageCount]{};
   uint32_t nStages = 0;
-  for (ShaderStage s : kStages) {
+  for (ShaderStage s : kGraphicsStages) {
     if (!in.shaders[s]) continue;
     stages[nStages] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
     stages[nStages].stage = ToVkStage(s);

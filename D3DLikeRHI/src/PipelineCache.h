@@ -6,6 +6,7 @@
 #include <cstring>
 #include <memory>
 #include <mutex>
+#include <type_traits>
 #include <unordered_map>
 
 #include "Shaders.h"
@@ -32,7 +33,7 @@ struct ProgramLayout {
     uint8_t dummy;  // DummyViewIndex of the declared image (unbound SRVs)
   };
   std::vector<Slot> cbs, srvs, samplers;  // sorted by binding
-  // Compute and unordered access: StructuredBuffer/ByteAddressBuffer (t#),
+  // Shader storage: StructuredBuffer/ByteAddressBuffer (t#),
   // RWTexture2D (u#) and RW structured/raw buffers (u#).
   std::vector<Slot> bufferSrvs, uavImages, uavBuffers;
   bool HasUavs() const { return !uavImages.empty() || !uavBuffers.empty(); }
@@ -43,7 +44,7 @@ struct ProgramLayout {
 
 // Cache ids of the bound shader of each stage (0: none).
 struct ShaderIds {
-  uint64_t ids[kStageCount];
+  uint64_t ids[kGraphicsStageCount];
   bool operator==(const ShaderIds& o) const { return std::memcmp(ids, o.ids, sizeof(ids)) == 0; }
   bool Uses(uint64_t id) const {
     for (uint64_t i : ids)
@@ -63,6 +64,10 @@ struct PipelineKey {
   uint32_t sampleMask;  // OMSetBlendState's mask, its low `samples` bits (all ones when single-sampled)
   bool operator==(const PipelineKey& o) const { return std::memcmp(this, &o, sizeof(*this)) == 0; }
 };
+// Compared with memcmp and hashed as 64-bit words (WordHash): no padding
+// bytes, whose values would be undefined.
+static_assert(std::has_unique_object_representations_v<PipelineKey>);
+static_assert(std::has_unique_object_representations_v<ShaderIds>);
 // FNV-style hash of a key made of 64-bit words.
 struct WordHash {
   template <class K>

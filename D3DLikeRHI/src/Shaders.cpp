@@ -152,7 +152,7 @@ HRESULT DeviceImpl::CreateComputeShader(const void* code, size_t len, ComputeSha
   return CreateShader<ComputeShaderImpl>(this, "CreateComputeShader", ShaderStage::Compute, code, len, out);
 }
 
-// Tessellation and geometry stages: only on adapters that have them.
+// Hull, domain and geometry shaders: only on adapters that have the stage.
 namespace {
 bool StageSupported(DeviceImpl* dev, const char* fn, bool supported, const char* what, const char* feature) {
   if (supported) return true;

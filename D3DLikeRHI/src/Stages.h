@@ -1,7 +1,7 @@
-// Typed shader stages: the graphics stages the backend binds (kStages; the
-// pipeline cache iterates them), per-stage arrays indexed by ShaderStage, and
-// the names and Vulkan bits of each stage. Compute is not a graphics stage:
-// its state is kept apart.
+// Typed shader stages: every stage a context holds state for (kAllStages,
+// indexed by ShaderStage's value, as Bindings.h numbers them), the graphics
+// stages a pipeline is built from (kGraphicsStages; the pipeline cache iterates
+// them), per-stage arrays, and the names and Vulkan bits of each stage.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -10,16 +10,22 @@
 
 namespace d3dl::impl {
 
-inline constexpr ShaderStage kStages[] = {ShaderStage::Vertex, ShaderStage::Pixel, ShaderStage::Hull,
-                                          ShaderStage::Domain, ShaderStage::Geometry};
-inline constexpr uint32_t kStageCount = sizeof(kStages) / sizeof(kStages[0]);
+inline constexpr ShaderStage kGraphicsStages[] = {ShaderStage::Vertex, ShaderStage::Pixel, ShaderStage::Hull,
+                                                  ShaderStage::Domain, ShaderStage::Geometry};
+inline constexpr uint32_t kGraphicsStageCount = sizeof(kGraphicsStages) / sizeof(kGraphicsStages[0]);
+inline constexpr ShaderStage kAllStages[] = {ShaderStage::Vertex, ShaderStage::Pixel,    ShaderStage::Hull,
+                                             ShaderStage::Domain, ShaderStage::Geometry, ShaderStage::Compute};
+inline constexpr uint32_t kStageCount = sizeof(kAllStages) / sizeof(kAllStages[0]);
 
 constexpr uint32_t StageIndex(ShaderStage s) { return static_cast<uint32_t>(s); }
-// PerStage arrays hold kStageCount items: every graphics stage indexes one.
+// The graphics stages come first, so that a pipeline key's per-stage ids are
+// the first kGraphicsStageCount entries of a PerStage array.
 static_assert([] {
-  for (ShaderStage s : kStages)
-    if (StageIndex(s) >= kStageCount) return false;
-  return true;
+  for (uint32_t i = 0; i < kStageCount; ++i)
+    if (StageIndex(kAllStages[i]) != i) return false;
+  for (ShaderStage s : kGraphicsStages)
+    if (StageIndex(s) >= kGraphicsStageCount) return false;
+  return StageIndex(ShaderStage::Compute) == kGraphicsStageCount;
 }());
 
 // Prefix of the stage's context methods ("VS" in VSSetShader).
@@ -30,7 +36,7 @@ constexpr const char* StagePrefix(ShaderStage s) {
     case ShaderStage::Hull: return "HS";
     case ShaderStage::Domain: return "DS";
     case ShaderStage::Geometry: return "GS";
-    case ShaderStage::Compute: return "CS";  // not in kStages: compute state is apart
+    case ShaderStage::Compute: return "CS";
   }
   return "?";
 }
@@ -60,7 +66,7 @@ constexpr VkShaderStageFlagBits ToVkStage(ShaderStage s) {
   return VK_SHADER_STAGE_ALL;
 }
 
-// One T per shader stage, indexed by ShaderStage.
+// One T per shader stage (compute included), indexed by ShaderStage.
 template <class T>
 class PerStage {
  public:

@@ -63,7 +63,7 @@ inline constexpr Usage BufferCopySrc{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_T
 inline constexpr Usage BufferCopyDst{VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                                      VK_IMAGE_LAYOUT_UNDEFINED, true};
 
-// Compute and unordered access: shader reads and writes of a given stage set.
+// Shader reads and writes by a given set of stages (SRVs and UAVs).
 inline constexpr VkPipelineStageFlags2 kComputeStage = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT;
 constexpr Usage SampledRead(VkPipelineStageFlags2 stages) {
   return {stages, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, false};

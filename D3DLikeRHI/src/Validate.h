@@ -59,7 +59,7 @@ HRESULT ValidateSrvShape(DeviceImpl& dev, const TextureCore& t, const SHADER_RES
 HRESULT ValidateTargetShape(DeviceImpl& dev, const ViewKindInfo& kind, const TextureCore& t, ViewDim dim,
                             UINT mip, const TEX_ARRAY_RANGE& range, ViewShape* shape);
 
-// Compute and unordered access (ValidateDevice.cpp).
+// UAVs and buffer views (ValidateDevice.cpp).
 inline constexpr ViewKindInfo kUavKind{"CreateUnorderedAccessView", "ppUAView", BIND_UNORDERED_ACCESS,
                                        "BIND_UNORDERED_ACCESS"};
 // What a buffer view names: its resource's elements [first, first + num).
@@ -129,7 +129,7 @@ bool BlitIsLinear(const RECT& dstRect, const RECT& srcRect, FILTER filter);
 // "IASetPrimitiveTopology: topology N is not supported" outside 0..5, 33..64.
 bool ValidateTopology(DeviceImpl& dev, PRIMITIVE_TOPOLOGY t);
 
-// Compute and unordered access (ValidateContext.cpp).
+// UAV binding and dispatch arguments (ValidateContext.cpp).
 // A UAV to bind at `slot`, or nullptr (logged) when it cannot be bound.
 UAVImpl* CheckedUav(DeviceImpl& dev, const char* fn, UnorderedAccessView* uav, UINT slot);
 bool ValidateDispatch(DeviceImpl& dev, UINT x, UINT y, UINT z);

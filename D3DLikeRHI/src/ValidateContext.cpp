@@ -558,7 +558,7 @@ bool ValidateDeferredUpdate(DeviceImpl& dev, Resource* dst) {
   return false;
 }
 
-// Compute and unordered access
+// UAV binding and dispatch arguments
 UAVImpl* CheckedUav(DeviceImpl& dev, const char* fn, UnorderedAccessView* uav, UINT slot) {
   auto* v = static_cast<UAVImpl*>(uav);
   if (!v || v->v.tex || v->v.buf) return v;

@@ -36,7 +36,7 @@ bool ValidatePointers(DeviceImpl& dev, const char* fn, const void* desc, const c
 // ---------------------------------------------------------------------------
 // Buffers
 namespace {
-// Compute and unordered access: SRV/UAV buffers are structured or raw (typed
+// SRV/UAV buffers are structured or raw (typed
 // buffer views are not supported), DEFAULT or IMMUTABLE (no UAV).
 HRESULT ValidateBufferViewFlags(DeviceImpl& dev, const BUFFER_DESC& d) {
   const bool structured = d.MiscFlags & RESOURCE_MISC_BUFFER_STRUCTURED;
@@ -260,7 +260,7 @@ HRESULT ValidateInitialData(DeviceImpl& dev, const char* fn, const TEXTURE2D_DES
 }
 }  // namespace
 
-// ---- Formats, views, MSAA: cube maps and multisampled textures.
+// ---- Cube maps and multisampled textures.
 static HRESULT ValidateCubeDesc(DeviceImpl& dev, const char* fn, bool is1D, const TEXTURE2D_DESC& d) {
   if (!(d.MiscFlags & RESOURCE_MISC_TEXTURECUBE)) return S_OK;
   if (is1D || d.ArraySize == 0 || d.ArraySize % 6 != 0 || d.Width != d.Height || d.SampleDesc.Count != 1) {
@@ -314,7 +314,7 @@ HRESULT ValidateCreateTexture(DeviceImpl& dev, const char* fn, bool is1D, const 
 
 // ---------------------------------------------------------------------------
 // ---------------------------------------------------------------------------
-// Compute and unordered access: buffer and texture UAVs, buffer SRVs
+// Buffer and texture UAVs, buffer SRVs
 HRESULT ValidateBufferView(DeviceImpl& dev, const ViewKindInfo& kind, Resource* r, const void* out,
                            const BufferViewRequest* req, VkDeviceSize* offset, VkDeviceSize* range) {
   const char* fn = kind.fn;

@@ -48,7 +48,7 @@ using RTVImpl = ViewImpl<RenderTargetView, ViewKind::RTV>;
 using DSVImpl = ViewImpl<DepthStencilView, ViewKind::DSV>;
 using UAVImpl = ViewImpl<UnorderedAccessView, ViewKind::UAV>;
 
-// Compute and unordered access (ComputeViews.cpp): an SRV of a structured or
+// Buffer views (ComputeViews.cpp): an SRV of a structured or
 // raw buffer (CreateShaderResourceView hands buffers to it).
 HRESULT CreateBufferSRV(DeviceImpl* dev, Resource* r, const SHADER_RESOURCE_VIEW_DESC* desc,
                         ShaderResourceView** out);

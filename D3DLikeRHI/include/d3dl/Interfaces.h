@@ -83,7 +83,8 @@ class HullShader : public DeviceChild {};
 class DomainShader : public DeviceChild {};
 class GeometryShader : public DeviceChild {};
 
-// Compute and unordered access
+// Views a shader writes (u# registers of compute and pixel shaders), and
+// compute shaders.
 class UnorderedAccessView : public View {};
 class ComputeShader : public DeviceChild {};
 
@@ -119,7 +120,7 @@ class DeviceContext : public Unknown {
   virtual void PSSetShaderResources(UINT startSlot, UINT num, ShaderResourceView* const* views) = 0;
   virtual void PSSetSamplers(UINT startSlot, UINT num, SamplerState* const* samplers) = 0;
 
-  // Tessellation and geometry stages: hull, domain and geometry shaders with
+  // Hull, domain and geometry shaders with
   // their constant buffers, shader resources and samplers, as VS*/PS*. A
   // hull shader needs a domain shader and a patch-list topology, and the
   // reverse; a geometry shader's input primitive matches the topology (or
@@ -186,7 +187,7 @@ class DeviceContext : public Unknown {
   virtual void BeginEvent(const char* name) = 0;
   virtual void EndEvent() = 0;
 
-  // Compute and unordered access (ContextCompute.cpp). Dispatches and draws
+  // Compute shaders and UAVs (ContextCompute.cpp). Dispatches and draws
   // see each other's writes in call order, as in D3D11: the barriers are
   // inserted automatically. A resource bound as a UAV is unbound from every
   // SRV slot; an SRV of a resource bound as a UAV is bound as null.
@@ -215,7 +216,7 @@ class DeviceContext : public Unknown {
   // deferred destruction when no swap chain presents).
   virtual void Flush() = 0;
 
-  // ---- Formats, views, MSAA (deferred-renderer feature block)
+  // ---- Multisample resolve
   // Averages the samples of multisampled `src` subresource into single-sampled
   // `dst` (same size; `format` names the typed format both are read as).
   // Integer and depth formats are rejected, as in D3D11.
@@ -303,7 +304,7 @@ class Device : public Unknown {
 
   virtual HRESULT CreateQuery(const QUERY_DESC* desc, Query** query) = 0;
 
-  // Compute and unordered access. desc may be nullptr for a texture (mip 0
+  // A view a shader writes through (u#). desc may be nullptr for a texture (mip 0
   // in its own format) and for a structured buffer (all of it).
   virtual HRESULT CreateUnorderedAccessView(Resource* resource, const UNORDERED_ACCESS_VIEW_DESC* desc,
                                             UnorderedAccessView** view) = 0;
@@ -326,7 +327,7 @@ class Device : public Unknown {
   // Waits until the GPU has finished all submitted work.
   virtual void WaitIdle() = 0;
 
-  // ---- Formats, views, MSAA (deferred-renderer feature block)
+  // ---- Multisampling support
   // *numQualityLevels = 1 when `format` can be a `sampleCount`-sample render
   // target (or depth-stencil) texture on this adapter, else 0 (Quality must be 0).
   virtual HRESULT CheckMultisampleQualityLevels(DXGI_FORMAT format, UINT sampleCount,

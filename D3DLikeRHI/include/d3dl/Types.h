@@ -91,7 +91,7 @@ enum BIND_FLAG : uint32_t {
   BIND_SHADER_RESOURCE = 0x8,
   BIND_RENDER_TARGET = 0x20,
   BIND_DEPTH_STENCIL = 0x40,
-  BIND_UNORDERED_ACCESS = 0x80,  // compute and unordered access
+  BIND_UNORDERED_ACCESS = 0x80,  // UAVs (u#) of compute and pixel shaders
 };
 
 enum CPU_ACCESS_FLAG : uint32_t {
@@ -102,7 +102,7 @@ enum CPU_ACCESS_FLAG : uint32_t {
 enum RESOURCE_MISC_FLAG : uint32_t {
   RESOURCE_MISC_GENERATE_MIPS = 0x1,
   RESOURCE_MISC_TEXTURECUBE = 0x4,  // Texture2D with ArraySize 6*n, Width == Height
-  // Compute and unordered access
+  // Buffers read or written by shaders as arrays, or as indirect arguments
   RESOURCE_MISC_DRAWINDIRECT_ARGS = 0x10,       // DispatchIndirect arguments
   RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS = 0x20,  // ByteAddressBuffer views (R32_TYPELESS)
   RESOURCE_MISC_BUFFER_STRUCTURED = 0x40,       // StructuredBuffer views (StructureByteStride)
@@ -231,7 +231,7 @@ struct TEXCUBE_ARRAY_SRV {
   UINT NumCubes = ~0u;
 };
 
-// Compute and unordered access: elements of a structured or raw buffer an SRV
+// Elements of a structured or raw buffer an SRV
 // sees (ViewDimension SRV_DIMENSION_BUFFEREX; Flags BUFFEREX_SRV_FLAG_RAW).
 struct BUFFEREX_SRV {
   UINT FirstElement = 0;
@@ -245,7 +245,7 @@ struct SHADER_RESOURCE_VIEW_DESC {
   TEX_SRV Texture{};  // mips (not for TEXTURE2DMS*)
   TEX_ARRAY_RANGE Array{};
   TEXCUBE_ARRAY_SRV CubeArray{};
-  BUFFEREX_SRV BufferEx{};  // buffers (compute and unordered access)
+  BUFFEREX_SRV BufferEx{};  // structured and raw buffers
 };
 
 struct RENDER_TARGET_VIEW_DESC {
@@ -580,7 +580,7 @@ enum ASYNC_GETDATA_FLAG : uint32_t {
 };
 
 // ---------------------------------------------------------------------------
-// Compute and unordered access (D3D11 numbering)
+// Buffer SRVs and UAVs (D3D11 numbering)
 // (BIND_UNORDERED_ACCESS and the RESOURCE_MISC_* buffer flags sit in their
 // enums above, so that they combine with the others.)
 inline constexpr SRV_DIMENSION SRV_DIMENSION_BUFFER = static_cast<SRV_DIMENSION>(1);
