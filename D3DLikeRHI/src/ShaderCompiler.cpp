@@ -83,6 +83,27 @@ EShLanguage LanguageOf(ShaderStage stage) {
   return EShLangVertex;
 }
 
+// Entry point, target environment and the binding formula's shifts, as
+// cmake/HLSL.cmake passes them to glslangValidator.
+void SetUpShader(const ShaderCompileDesc& desc, EShLanguage language, glslang::TShader* shader) {
+  shader->setEntryPoint(desc.EntryPoint.c_str());
+  shader->setSourceEntryPoint(desc.EntryPoint.c_str());
+  shader->setEnvInput(glslang::EShSourceHlsl, language, glslang::EShClientVulkan, 100);
+  shader->setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
+  // SPIR-V 1.3, as cmake/HLSL.cmake: glslang's HLSL storage buffers carry
+  // BufferBlock, which SPIR-V 1.4+ rejects.
+  shader->setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
+  if (desc.KeepSemantics) shader->setEnvTargetHlslFunctionality1();
+
+  const uint32_t stageBase = kStageBindingStride * static_cast<uint32_t>(desc.Stage);
+  shader->setShiftBinding(glslang::EResUbo, stageBase + kConstantBufferBase);
+  shader->setShiftBinding(glslang::EResTexture, stageBase + kTextureBase);
+  shader->setShiftBinding(glslang::EResSampler, stageBase + kSamplerBase);
+  // As --hlsl-iomap: t# and u# by register class (StructuredBuffer vs RWStructuredBuffer).
+  shader->setHlslIoMapping(true);
+  shader->setShiftBinding(glslang::EResUav, stageBase + kUnorderedAccessBase);
+}
+
 }  // namespace
 
 HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
@@ -123,22 +144,7 @@ HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
   const int length = static_cast<int>(source.size());
   shader.setStringsWithLengthsAndNames(&text, &length, &names, 1);
   shader.setPreamble(preamble.c_str());
-  shader.setEntryPoint(desc.EntryPoint.c_str());
-  shader.setSourceEntryPoint(desc.EntryPoint.c_str());
-  shader.setEnvInput(glslang::EShSourceHlsl, language, glslang::EShClientVulkan, 100);
-  shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_3);
-  // SPIR-V 1.3, as cmake/HLSL.cmake: glslang's HLSL storage buffers carry
-  // BufferBlock, which SPIR-V 1.4+ rejects.
-  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
-  if (desc.KeepSemantics) shader.setEnvTargetHlslFunctionality1();
-
-  const uint32_t stageBase = kStageBindingStride * static_cast<uint32_t>(desc.Stage);
-  shader.setShiftBinding(glslang::EResUbo, stageBase + kConstantBufferBase);
-  shader.setShiftBinding(glslang::EResTexture, stageBase + kTextureBase);
-  shader.setShiftBinding(glslang::EResSampler, stageBase + kSamplerBase);
-  // As --hlsl-iomap: t# and u# by register class (StructuredBuffer vs RWStructuredBuffer).
-  shader.setHlslIoMapping(true);
-  shader.setShiftBinding(glslang::EResUav, stageBase + kUnorderedAccessBase);
+  SetUpShader(desc, language, &shader);
 
   const auto messages =
       static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules | EShMsgReadHlsl |
