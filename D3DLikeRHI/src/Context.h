@@ -1,5 +1,9 @@
-// The immediate context: D3D11-style state recording into one Vulkan command
-// buffer per frame, which it submits through the device queue. Split over
+// What the immediate and deferred contexts share (as DXVK's common context):
+// D3D11-style state, its commit at draws and dispatches, clears, Map of
+// constant buffers, barriers. ImmediateContext (ContextImmediate.h) records
+// into one Vulkan command buffer per frame, which it submits through the
+// device queue; DeferredContext (ContextDeferred.h) records command lists and
+// rejects the calls D3D11 forbids on it. The common part is split over
 // ContextState.cpp (setters), ContextDraw.cpp (commit, rendering scopes),
 // ContextClear.cpp, ContextMap.cpp (map/update), ContextCopy.cpp,
 // ContextBlit.cpp, ContextQuery.cpp, ContextFrame.cpp (command buffers,
@@ -64,13 +68,9 @@ struct BoundDescriptors {
   VkPipelineLayout hotLayout = VK_NULL_HANDLE;
 };
 
-class ContextImpl final : public DeviceContext, public BlitExtension {
+class ContextImpl : public DeviceContext, public BlitExtension {
  public:
-  // deferred: a deferred context (CreateDeferredContext), counted on its own.
-  explicit ContextImpl(DeviceImpl* dev, bool deferred = false);
-  ~ContextImpl();
-  UINT AddRef() override { return deferred_ ? ++deferredRefs_ : dev_->AddRef(); }
-  UINT Release() override;
+  ~ContextImpl() override;
 
   void IASetInputLayout(InputLayout* layout) override;
   void IASetVertexBuffers(UINT startSlot, UINT numBuffers, Buffer* const* buffers,
@@ -135,8 +135,7 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   // Multisample resolve (ContextCopy.cpp)
   void ResolveSubresource(Resource* dst, UINT dstSubresource, Resource* src, UINT srcSubresource,
                           DXGI_FORMAT format) override;
-  // Deferred contexts (ContextDeferred.cpp)
-  DEVICE_CONTEXT_TYPE GetType() override;
+  // Command lists (ContextDeferred.cpp)
   HRESULT FinishCommandList(BOOL restoreDeferredContextState, CommandList** commandList) override;
   void ExecuteCommandList(CommandList* commandList, BOOL restoreContextState) override;
   // Compute shaders and UAVs (ContextCompute.cpp)
@@ -166,7 +165,10 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   void SubmitFrame(TextureCore* present = nullptr, VkSemaphore signal = VK_NULL_HANDLE);
   void ForgetDiscardedConstants(BufferImpl* b);  // `b` is being destroyed
 
- private:
+ protected:
+  // deferred: a deferred context (CreateDeferredContext), counted on its own.
+  ContextImpl(DeviceImpl* dev, bool deferred);
+
   // ContextFrame.cpp
   void CreateCommandFrames();
   void DestroyCommandFrames();
@@ -350,16 +352,12 @@ class ContextImpl final : public DeviceContext, public BlitExtension {
   const RingAlloc& DynRing(const BufferImpl* b) { return rec_ ? ListDynRing(b) : b->ring(); }
   // DEVICE_STATS::DrawCalls: a list's draws are counted when it is executed.
   void CountDraw() { rec_ ? ++rec_->draws : ++dev_->stats.DrawCalls; }
-  // On a deferred context: logs that `fn` is forbidden there (as in D3D11),
-  // or not supported there by this port (`portLimit`), and returns true.
-  bool RejectDeferred(const char* fn, bool portLimit = false);
 
   const bool deferred_;
   // Deferred: binds descriptor sets with twin pipeline layout number this
   // (ProgramLayout::listLayouts), so that contexts recording at once do not
   // share one reference count in the driver.
   const uint32_t listLayoutIndex_;
-  std::atomic<UINT> deferredRefs_{1};
   std::unique_ptr<ListRecording> rec_;
   std::shared_ptr<ListRecycler> recycler_;  // this context's recordings for reuse (ListRecycler.cpp)
 };

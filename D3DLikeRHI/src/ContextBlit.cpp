@@ -13,7 +13,6 @@ namespace impl {
 
 void ContextImpl::BlitRegion(Texture2D* dstTex, const RECT& dstRect, Texture2D* srcTex,
                              const RECT& srcRect, FILTER filter) {
-  if (RejectDeferred("BlitRegion", true)) return;
   if (!ValidateBlitRegion(*dev_, dstTex, dstRect, srcTex, srcRect, filter)) return;
   TextureCore* dst = AsTexture(dstTex);
   TextureCore* src = AsTexture(srcTex);

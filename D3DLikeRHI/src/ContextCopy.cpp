@@ -112,7 +112,6 @@ void ContextImpl::CopyStagingToImage(TextureCore* dst, SubIndex ds, UINT x, UINT
 
 void ContextImpl::CopySubresourceRegion(Resource* dst, UINT dstSub, UINT x, UINT y, UINT, Resource* src,
                                         UINT srcSub, const BOX* box) {
-  if (RejectDeferred("CopySubresourceRegion", true)) return;
   if (!ValidateCopySubresourceRegion(*dev_, dst, dstSub, x, y, src, srcSub, box)) return;
   BufferImpl *bd = AsBuffer(dst), *bs = AsBuffer(src);
   if (bd && bs) return CopyBufferRegion(bd, x, bs, box);
@@ -120,7 +119,6 @@ void ContextImpl::CopySubresourceRegion(Resource* dst, UINT dstSub, UINT x, UINT
 }
 
 void ContextImpl::CopyResource(Resource* dst, Resource* src) {
-  if (RejectDeferred("CopyResource", true)) return;
   if (!ValidateCopyResource(*dev_, dst, src)) return;
   BufferImpl *bd = AsBuffer(dst), *bs = AsBuffer(src);
   if (bd && bs) return CopyBufferRegion(bd, 0, bs, nullptr);
@@ -130,7 +128,6 @@ void ContextImpl::CopyResource(Resource* dst, Resource* src) {
 }
 
 void ContextImpl::GenerateMips(ShaderResourceView* srv) {
-  if (RejectDeferred("GenerateMips", true)) return;
   if (!ValidateGenerateMips(*dev_, srv)) return;
   const ViewCore& v = static_cast<SRVImpl*>(srv)->v;
   TextureCore* t = v.tex;

@@ -1,10 +1,10 @@
 // Deferred contexts and command lists (CommandList.h). A deferred context
-// is a ContextImpl whose commands go into a secondary command buffer of the
+// (ContextDeferred.h) is a context whose commands go into a secondary command buffer of the
 // list being recorded, on the calling thread; its barriers, ring slices and
 // descriptor sets stay inside the list. ExecuteCommandList, on the immediate
 // context, brings each resource into the list's entry state, executes the
 // secondary buffer and makes the list's exit state current.
-#include "Context.h"
+#include "ContextDeferred.h"
 #include "Validate.h"
 
 namespace d3dl::impl {
@@ -34,7 +34,7 @@ bool SameState(const SyncState& a, const SyncState& b) {
 HRESULT DeviceImpl::CreateDeferredContext(UINT flags, DeviceContext** context) {
   const HRESULT hr = ValidateCreateDeferredContext(*this, flags, context);
   if (FAILED(hr)) return hr;
-  *context = new ContextImpl(this, true);
+  *context = new DeferredContext(this);
   return S_OK;
 }
 
@@ -64,17 +64,40 @@ void DestroyRecording(DeviceImpl* dev, ListRecording& rec) {
   rec.pool = VK_NULL_HANDLE;
 }
 
-DEVICE_CONTEXT_TYPE ContextImpl::GetType() {
-  return deferred_ ? DEVICE_CONTEXT_DEFERRED : DEVICE_CONTEXT_IMMEDIATE;
+DeferredContext::DeferredContext(DeviceImpl* dev) : ContextImpl(dev, true) {
+  dev_->ChildCreated();
+  BeginRecording();
 }
 
-bool ContextImpl::RejectDeferred(const char* fn, bool portLimit) {
-  if (!rec_) return false;
+UINT DeferredContext::Release() {
+  const UINT r = --refs_;
+  if (r == 0) {
+    DeviceImpl* dev = dev_;
+    delete this;
+    dev->ChildDestroyed();  // last: it may shut the device down
+  }
+  return r;
+}
+
+void DeferredContext::Reject(const char* fn, bool portLimit) {
   if (portLimit)
     dev_->Log(LogLevel::Error, "%s: not supported on deferred contexts by this port (use the immediate context)", fn);
   else
     dev_->Log(LogLevel::Error, "%s: not allowed on a deferred context", fn);
-  return true;
+}
+
+HRESULT DeferredContext::Map(Resource* resource, UINT sub, MAP type, UINT, MAPPED_SUBRESOURCE* mapped) {
+  return MapInList(resource, sub, type, mapped);
+}
+
+void DeferredContext::Unmap(Resource* resource, UINT) { UnmapInList(resource); }
+
+// Constant buffers only (ValidateDeferredUpdate), into a slice of the list.
+void DeferredContext::UpdateSubresource(Resource* dst, UINT sub, const BOX* box, const void* data, UINT rowPitch,
+                                        UINT) {
+  BOX region;
+  if (!ValidateUpdateSubresource(*dev_, dst, sub, box, data, rowPitch, &region)) return;
+  if (ValidateDeferredUpdate(*dev_, dst)) UpdateConstantsInList(AsBuffer(dst), box, data);
 }
 
 // A new list: its own command pool, secondary buffer, descriptor pools and

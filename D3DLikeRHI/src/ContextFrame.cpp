@@ -12,13 +12,6 @@ constexpr uint32_t kSetsPerPool = 512;
 ContextImpl::ContextImpl(DeviceImpl* dev, bool deferred)
     : dev_(dev), deferred_(deferred), listLayoutIndex_(deferred ? dev->NextDeferredContextIndex() : 0) {
   CreateDefaultStates();
-  if (deferred) {  // records into command lists (ContextDeferred.cpp)
-    dev_->ChildCreated();
-    BeginRecording();
-    return;
-  }
-  CreateCommandFrames();
-  BeginCommandFrame();
 }
 
 ContextImpl::~ContextImpl() {
@@ -29,17 +22,6 @@ ContextImpl::~ContextImpl() {
   if (rec_) DestroyRecording(dev_, *rec_);  // an unfinished list, never submitted
   if (recycler_) recycler_->Close();         // its lists may outlive it: they destroy theirs
   DestroyCommandFrames();
-}
-
-UINT ContextImpl::Release() {
-  if (!deferred_) return dev_->Release();
-  const UINT r = --deferredRefs_;
-  if (r == 0) {
-    DeviceImpl* dev = dev_;
-    delete this;
-    dev->ChildDestroyed();  // last: it may shut the device down
-  }
-  return r;
 }
 
 void ContextImpl::CreateCommandFrames() {
@@ -128,9 +110,7 @@ void ContextImpl::SubmitFrame(TextureCore* present, VkSemaphore signal) {
   BeginCommandFrame();
 }
 
-void ContextImpl::Flush() {
-  if (!RejectDeferred("Flush")) SubmitFrame();
-}
+void ContextImpl::Flush() { SubmitFrame(); }
 
 VkDescriptorSet ContextImpl::AllocateSet(VkDescriptorSetLayout layout) {
   // A deferred context allocates from its list's pools, freed with the list.

@@ -59,7 +59,6 @@ void ContextImpl::ForgetDiscardedConstants(BufferImpl* b) {
 }
 
 HRESULT ContextImpl::Map(Resource* resource, UINT sub, MAP type, UINT flags, MAPPED_SUBRESOURCE* mapped) {
-  if (rec_) return MapInList(resource, sub, type, mapped);  // a deferred context
   if (type == MAP_WRITE_DISCARD && sub == 0 && mapped) {
     BufferImpl* b = AsBuffer(resource);
     if (b && b->storage() == Storage::DynamicConstants) return MapDiscardConstants(b, mapped);
@@ -136,7 +135,6 @@ HRESULT ContextImpl::MapRingTexture(TextureCore* t, UINT sub, MAPPED_SUBRESOURCE
 }
 
 void ContextImpl::Unmap(Resource* resource, UINT sub) {
-  if (rec_) return UnmapInList(resource);
   if (BufferImpl* b = AsBuffer(resource)) {
     if (b->IsConstantBuffer()) {
       // After WRITE_DISCARD the data is already in this frame's ring slice;
@@ -176,10 +174,6 @@ void ContextImpl::CopyFromRing(TextureCore* t, const SubIndex& si, const RingAll
 void ContextImpl::UpdateSubresource(Resource* dst, UINT sub, const BOX* box, const void* data, UINT rowPitch, UINT) {
   BOX region;
   if (!ValidateUpdateSubresource(*dev_, dst, sub, box, data, rowPitch, &region)) return;
-  if (rec_) {  // a deferred context: constant buffers only
-    if (ValidateDeferredUpdate(*dev_, dst)) UpdateConstantsInList(AsBuffer(dst), box, data);
-    return;
-  }
   if (BufferImpl* b = AsBuffer(dst)) return UpdateBuffer(b, region.left, region.right, data);
   UpdateTexture(AsTexture(dst), sub, region, data, rowPitch);
 }

@@ -31,14 +31,14 @@ HRESULT DeviceImpl::CreateQuery(const QUERY_DESC* desc, Query** out) {
 
 void ContextImpl::Begin(Query* query) {
   auto* q = static_cast<QueryImpl*>(query);
-  if (RejectDeferred("Begin") || !q || !ValidateBegin(*dev_, q->desc)) return;
+  if (!q || !ValidateBegin(*dev_, q->desc)) return;
   if (q->desc.Query == QUERY_PIPELINE_STATISTICS) return BeginStatistics(q);
   q->begun = true;
 }
 
 void ContextImpl::End(Query* query) {
   auto* q = static_cast<QueryImpl*>(query);
-  if (RejectDeferred("End") || !q) return;
+  if (!q) return;
   if (q->desc.Query == QUERY_PIPELINE_STATISTICS) return EndStatistics(q);
   q->resolved = false;
   q->serial = dev_->CurrentSerial();
@@ -82,7 +82,6 @@ HRESULT ReadTimestamp(DeviceImpl& dev, QueryImpl* q, void* data) {
 
 HRESULT ContextImpl::GetData(Query* query, void* data, UINT size, UINT flags) {
   auto* q = static_cast<QueryImpl*>(query);
-  if (RejectDeferred("GetData")) return DXGI_ERROR_INVALID_CALL;
   if (!ValidateGetData(*dev_, q, data, size)) return E_INVALIDARG;
   if (q->serial >= dev_->CurrentSerial()) {
     if (!(flags & ASYNC_GETDATA_DONOTFLUSH)) Flush();

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "Context.h"
+#include "ContextImmediate.h"
 
 namespace d3dl {
 namespace impl {
@@ -182,7 +182,7 @@ HRESULT DeviceImpl::Init(const DEVICE_CREATE_DESC& desc) {
   pipelines_.Init(this);
   queue_.Init(this, queue, fif);
   if (!CreateDummies()) return E_OUTOFMEMORY;
-  context_ = std::make_unique<ContextImpl>(this);
+  context_ = std::make_unique<ImmediateContext>(this);
   Log(LogLevel::Info, "D3DLikeRHI on %s (%s)", adapter_.Description, adapter_.Driver);
   return S_OK;
 }
