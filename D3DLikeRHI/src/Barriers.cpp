@@ -2,7 +2,7 @@
 // subresource and every device-local buffer remembers its layout, its last
 // write and the reads since; a new use emits the smallest barrier that makes
 // it safe (and that synchronization validation accepts).
-#include "Context.h"
+#include "ContextImmediate.h"
 
 namespace d3dl::impl {
 
@@ -127,8 +127,7 @@ void BarrierBatch::Record(VkCommandBuffer cmd) {
 }
 
 // ---------------------------------------------------------------------------
-void ContextImpl::UseTexture(TextureCore* t, const SubresourceRange& r, const Usage& u) {
-  if (rec_) return UseTextureInList(t, r, u);  // a deferred context's list
+void ImmediateContext::UseTexture(TextureCore* t, const SubresourceRange& r, const Usage& u) {
   TextureImage& img = t->Cur();
   const uint32_t mipCount = t->desc.MipLevels;
   for (uint32_t l = r.baseLayer; l < r.baseLayer + r.layers; ++l) {
@@ -141,8 +140,7 @@ void ContextImpl::UseTexture(TextureCore* t, const SubresourceRange& r, const Us
   if (u.layout != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) dirty_ |= kSrvLayouts;
 }
 
-void ContextImpl::UseBuffer(VkBuffer buf, SyncState& s, const Usage& u) {
-  if (rec_) return UseBufferInList(buf, s, u);
+void ImmediateContext::UseBuffer(VkBuffer buf, SyncState& s, const Usage& u) {
   BarrierInfo info;
   if (!Transition(s, u, &info)) return;
   barriers_.AddBuffer(buf, info);

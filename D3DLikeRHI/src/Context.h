@@ -176,11 +176,38 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   void EndCommandFrame(TextureCore* present);
   void RecycleCommandFrame(CommandFrame& f);
   VkDescriptorSet AllocateSet(VkDescriptorSetLayout layout);
+
+  // ---- What differs between recording into the frame (ImmediateContext)
+  // and into a command list (DeferredContext); none is called while the
+  // context is being constructed or destroyed.
+  // Records the barriers a use needs (queued until FlushBarriers); a list
+  // records them against its own view of the resource's state.
+  virtual void UseTexture(TextureCore* t, const SubresourceRange& range, const Usage& u) = 0;
+  virtual void UseBuffer(VkBuffer buf, SyncState& s, const Usage& u) = 0;
+  // A CPU-visible use of a resource (GpuUse): recorded at the call on the
+  // immediate context, at ExecuteCommandList for a list (its frame is known
+  // only then).
+  virtual void NoteUse(GpuUse& u, bool write) = 0;
+  // A list holds a reference to each object its commands use; the frame
+  // needs none (the application's bindings hold them until it is submitted).
+  virtual void Hold(Unknown* object) = 0;
+  virtual void HoldDrawState(bool indexed) = 0;
+  virtual void HoldComputeState() = 0;
+  // The descriptor pools sets come from: the frame slot's, or the list's
+  // (freed with it); `countStats`: DEVICE_STATS counts them (the immediate
+  // context's thread only).
+  struct DescriptorPools {
+    std::vector<VkDescriptorPool>& pools;
+    size_t& current;
+    bool countStats;
+  };
+  virtual DescriptorPools SetPools() = 0;
+  // The pipeline layout sets are bound with (a list binds with its context's
+  // twin of it, ProgramLayout::listLayouts).
+  virtual VkPipelineLayout BindingLayout(const ProgramLayout& p) = 0;
   bool AllocateTimestamp(QueryImpl* q, uint32_t* index);
 
-  // Barriers.cpp: records the barriers a use needs (queued until FlushBarriers).
-  void UseTexture(TextureCore* t, const SubresourceRange& range, const Usage& u);
-  void UseBuffer(VkBuffer buf, SyncState& s, const Usage& u);
+  // Barriers.cpp
   void FlushBarriers();
   bool HasPendingBarriers() const { return !barriers_.Empty(); }
 
@@ -334,13 +361,6 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   void RetainInList(Unknown* object);
   void CopyImports(CommandListImpl& list);
   void ExportConstants(ListRecording& rec);
-  // A CPU-visible use of a resource (GpuUse): recorded at the call on the
-  // immediate context, at ExecuteCommandList for a list (its frame is known
-  // only then).
-  void NoteUse(GpuUse& u, bool write) {
-    if (rec_) return NoteUseInList(u, write);
-    write ? u.Write(dev_->CurrentSerial()) : u.Read(dev_->CurrentSerial());
-  }
   void NoteUseInList(GpuUse& u, bool write);
   // The ring slice with a constant buffer's data for this context's commands.
   const RingAlloc& CbRing(BufferImpl* b) {

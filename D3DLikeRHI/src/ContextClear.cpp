@@ -45,7 +45,7 @@ int ContextImpl::BoundRenderTargetSlot(const RTVImpl* v) const {
 void ContextImpl::ClearRenderTargetView(RenderTargetView* rtv, const float color[4]) {
   if (!ValidateClearRenderTargetView(*dev_, rtv, color)) return;
   auto* v = static_cast<RTVImpl*>(rtv);
-  if (rec_) RetainInList(v);
+  Hold(v);
   VkClearValue cv;
   cv.color = ToClearColor(v->v, color);
   const int slot = BoundRenderTargetSlot(v);
@@ -68,7 +68,7 @@ void ContextImpl::ClearDepthStencilView(DepthStencilView* dsv, UINT flags, float
   VkImageAspectFlags aspect = (flags & CLEAR_DEPTH) ? VK_IMAGE_ASPECT_DEPTH_BIT : 0;
   if (flags & CLEAR_STENCIL) aspect |= v->v.aspect & VK_IMAGE_ASPECT_STENCIL_BIT;
   if (!aspect) return;
-  if (rec_) RetainInList(v);
+  Hold(v);
   VkClearValue cv;
   cv.depthStencil = {std::clamp(depth, 0.0f, 1.0f), stencil};
   if (state_.om.depthStencilView.Get() == v && (rendering_ || BeginRendering())) {
@@ -86,7 +86,7 @@ void ContextImpl::ClearDepthStencilView(DepthStencilView* dsv, UINT flags, float
 void ContextImpl::ClearView(View* view, const float color[4], const RECT* rects, UINT numRects) {
   RTVImpl* v = ValidateClearView(*dev_, view, color, rects, numRects);
   if (!v) return;
-  if (rec_) RetainInList(v);
+  Hold(v);
   if (numRects == 0) {
     ClearRenderTargetView(v, color);
     return;

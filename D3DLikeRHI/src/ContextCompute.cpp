@@ -102,7 +102,7 @@ bool ContextImpl::CommitCompute() {
   if ((dirty_ & kComputeDescriptors) && !UavsBound(p, ShaderStage::Compute))
     return ErrorOnce(OnceError::UnboundUav), false;
   UseShaderViews(p, ShaderStage::Compute);
-  if (rec_) RetainComputeState();
+  HoldComputeState();
   EndRendering();
   FlushBarriers();
   if (dirty_ & kComputePipeline) {
@@ -130,7 +130,7 @@ void ContextImpl::DispatchIndirect(Buffer* args, UINT offset) {
   BufferImpl* b = static_cast<BufferImpl*>(args);
   UseBuffer(b->vkBuffer(), b->sync(), usage::IndirectRead);
   if (!CommitCompute()) return;
-  if (rec_) RetainInList(b);
+  Hold(b);
   NoteUse(b->use, false);
   vkCmdDispatchIndirect(cmd_, b->vkBuffer(), offset);
 }
@@ -181,7 +181,7 @@ bool UavClearBitsSupported(VkFormat f) {
 void ContextImpl::ClearUav(UAVImpl* uav, const VkClearColorValue& value, uint32_t fill) {
   const ViewCore& v = uav->v;
   EndRendering();
-  if (rec_) RetainInList(uav);
+  Hold(uav);
   if (v.buf) {
     UseBuffer(v.buf->vkBuffer(), v.buf->sync(), usage::BufferFillDst);
     FlushBarriers();

@@ -43,6 +43,21 @@ class DeferredContext final : public ContextImpl {
     Reject("BlitRegion", true);
   }
 
+ protected:
+  // Into the list (ContextDeferred.cpp).
+  void UseTexture(TextureCore* t, const SubresourceRange& range, const Usage& u) override {
+    UseTextureInList(t, range, u);
+  }
+  void UseBuffer(VkBuffer buf, SyncState& s, const Usage& u) override { UseBufferInList(buf, s, u); }
+  void NoteUse(GpuUse& u, bool write) override { NoteUseInList(u, write); }
+  void Hold(Unknown* object) override { RetainInList(object); }
+  void HoldDrawState(bool indexed) override { RetainDrawState(indexed); }
+  void HoldComputeState() override { RetainComputeState(); }
+  DescriptorPools SetPools() override { return {rec_->descPools, rec_->descPoolCurrent, false}; }
+  VkPipelineLayout BindingLayout(const ProgramLayout& p) override {
+    return dev_->pipelines().ListLayout(p, listLayoutIndex_);
+  }
+
  private:
   // Logs that `fn` is forbidden here (as in D3D11), or not supported here by
   // this port (`portLimit`).

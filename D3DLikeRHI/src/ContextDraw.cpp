@@ -170,7 +170,7 @@ bool ContextImpl::CommitSlow(bool indexed) {
   if (program_->HasUavs() && !dev_->features().fragmentStores) return ErrorOnce(OnceError::NoFragmentStores), false;
   if (program_->HasUavs() && !UavsBound(*program_, ShaderStage::Pixel)) return ErrorOnce(OnceError::UnboundUav), false;
   UseDrawResources(indexed);
-  if (rec_) RetainDrawState(indexed);
+  HoldDrawState(indexed);
   if (HasPendingBarriers()) FlushBarriers();
   if (!rendering_ && !BeginRendering()) return false;
   VkCommandBuffer cmd = cmd_;
@@ -315,7 +315,7 @@ bool ContextImpl::BindSet(VkCommandBuffer cmd, VkPipelineBindPoint point, const 
     d.hotCbs[i] = b;
   }
   if (newSet && !WriteSet(p, d)) return false;
-  d.hotLayout = rec_ ? dev_->pipelines().ListLayout(p, listLayoutIndex_) : p.layout;
+  d.hotLayout = BindingLayout(p);
   d.nHotCbs = nCB;
   vkCmdBindDescriptorSets(cmd, point, d.hotLayout, 0, 1, &d.set, nCB, d.dynOffsets);
   return true;

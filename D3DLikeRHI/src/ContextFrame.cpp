@@ -113,9 +113,9 @@ void ContextImpl::SubmitFrame(TextureCore* present, VkSemaphore signal) {
 void ContextImpl::Flush() { SubmitFrame(); }
 
 VkDescriptorSet ContextImpl::AllocateSet(VkDescriptorSetLayout layout) {
-  // A deferred context allocates from its list's pools, freed with the list.
-  std::vector<VkDescriptorPool>& pools = rec_ ? rec_->descPools : frames_[dev_->queue().Slot()].descPools;
-  size_t& current = rec_ ? rec_->descPoolCurrent : frames_[dev_->queue().Slot()].descPoolCurrent;
+  const DescriptorPools from = SetPools();
+  std::vector<VkDescriptorPool>& pools = from.pools;
+  size_t& current = from.current;
   for (;;) {
     if (current >= pools.size()) {
       VkDescriptorPoolSize sizes[] = {
@@ -140,7 +140,7 @@ VkDescriptorSet ContextImpl::AllocateSet(VkDescriptorSetLayout layout) {
     VkDescriptorSet set = VK_NULL_HANDLE;
     VkResult r = vkAllocateDescriptorSets(dev_->vk(), &ai, &set);
     if (r == VK_SUCCESS) {
-      if (!rec_) ++dev_->stats.DescriptorSetsAllocated;  // the immediate context's thread only
+      if (from.countStats) ++dev_->stats.DescriptorSetsAllocated;
       return set;
     }
     if (r != VK_ERROR_OUT_OF_POOL_MEMORY && r != VK_ERROR_FRAGMENTED_POOL) return VK_NULL_HANDLE;

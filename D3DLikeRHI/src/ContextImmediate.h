@@ -14,6 +14,22 @@ class ImmediateContext final : public ContextImpl {
   UINT AddRef() override { return dev_->AddRef(); }
   UINT Release() override { return dev_->Release(); }
   DEVICE_CONTEXT_TYPE GetType() override { return DEVICE_CONTEXT_IMMEDIATE; }
+
+ protected:
+  // Barriers.cpp: against the resources' global state.
+  void UseTexture(TextureCore* t, const SubresourceRange& range, const Usage& u) override;
+  void UseBuffer(VkBuffer buf, SyncState& s, const Usage& u) override;
+  void NoteUse(GpuUse& u, bool write) override {
+    write ? u.Write(dev_->CurrentSerial()) : u.Read(dev_->CurrentSerial());
+  }
+  void Hold(Unknown*) override {}
+  void HoldDrawState(bool) override {}
+  void HoldComputeState() override {}
+  DescriptorPools SetPools() override {
+    CommandFrame& f = frames_[dev_->queue().Slot()];
+    return {f.descPools, f.descPoolCurrent, true};
+  }
+  VkPipelineLayout BindingLayout(const ProgramLayout& p) override { return p.layout; }
 };
 
 }  // namespace d3dl::impl
