@@ -371,7 +371,10 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   // The slice of a DYNAMIC vertex/index buffer's last Map(WRITE_DISCARD).
   const RingAlloc& DynRing(const BufferImpl* b) { return rec_ ? ListDynRing(b) : b->ring(); }
   // DEVICE_STATS::DrawCalls: a list's draws are counted when it is executed.
-  void CountDraw() { rec_ ? ++rec_->draws : ++dev_->stats.DrawCalls; }
+  void CountDraw() { ++*drawCount_; }
+  // The device's counter (immediate) or the list's (deferred; set by
+  // BeginRecording), so that counting a draw needs no test.
+  uint64_t* drawCount_ = &dev_->stats.DrawCalls;
 
   const bool deferred_;
   // Deferred: binds descriptor sets with twin pipeline layout number this

@@ -106,6 +106,7 @@ void DeferredContext::UpdateSubresource(Resource* dst, UINT sub, const BOX* box,
 void ContextImpl::BeginRecording() {
   if (!recycler_) recycler_ = std::make_shared<ListRecycler>(dev_);
   rec_ = recycler_->Take();
+  drawCount_ = &rec_->draws;
   // Executed outside rendering scopes (it begins its own): nothing inherited.
   VkCommandBufferInheritanceInfo inherit{VK_STRUCTURE_TYPE_COMMAND_BUFFER_INHERITANCE_INFO};
   VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
