@@ -17,6 +17,8 @@
 
 namespace d3dl::impl {
 
+struct DrawInputs;  // Validate.h
+
 class QueryImpl final : public Child<Query> {
  public:
   using Child::Child;
@@ -233,8 +235,8 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   UAVImpl* UavAt(ShaderStage s, uint32_t slot) const { return Stage(s).uavs[slot].Get(); }
   void ClearUav(UAVImpl* v, const VkClearColorValue& value, uint32_t fill);
 
-  // ContextStages.cpp: the bound HS/DS/GS fit each other and the topology.
-  bool CheckStageTopology();
+  // ContextStages.cpp: the bound state a draw's checks look at.
+  DrawInputs DrawInputsOf(bool indexed) const;
   // QueryStatistics.cpp: one pipeline statistics query is active at a time;
   // a frame end ends it (a Vulkan query cannot span command buffers).
   void BeginStatistics(QueryImpl* q);

@@ -3,6 +3,7 @@
 // vkCmdBindDescriptorSets with new dynamic offsets, nothing else.
 #include "Context.h"
 #include "Topology.h"
+#include "Validate.h"
 
 namespace d3dl::impl {
 const char* OnceErrorMessage(OnceError e) {
@@ -120,16 +121,13 @@ bool ContextImpl::BeginRendering() {
   return true;
 }
 
-// Missing state skips the draw with one error per kind and context.
+// Missing or mismatched state skips the draw with one error per kind and
+// context (ValidateDraw decides).
 bool ContextImpl::CheckDrawState(bool indexed) {
-  if (!state_.stages[ShaderStage::Vertex].shader) return ErrorOnce(OnceError::NoVertexShader), false;
-  if (state_.om.numRenderTargets == 0 && !state_.om.depthStencilView)
-    return ErrorOnce(OnceError::NoRenderTarget), false;
-  if (indexed && !state_.ia.indexBuffer) return ErrorOnce(OnceError::NoIndexBuffer), false;
-  if (state_.ia.topology == PRIMITIVE_TOPOLOGY_UNDEFINED) return ErrorOnce(OnceError::NoTopology), false;
-  if (!CheckStageTopology()) return false;
-  const RasterizerStageState& rs = state_.rs;
-  return !(rs.numViewports && (rs.viewport.Width <= 0.0f || rs.viewport.Height <= 0.0f));  // nothing to draw
+  OnceError error;
+  const DrawVerdict verdict = ValidateDraw(DrawInputsOf(indexed), &error);
+  if (verdict == DrawVerdict::SkipWithError) ErrorOnce(error);
+  return verdict == DrawVerdict::Draw;
 }
 
 PerStage<ShaderBase*> ContextImpl::BoundShaders() const {

@@ -1,7 +1,7 @@
 // Hull, domain and geometry stages: the HS/DS/GS setters (the same per-stage
-// state as VS/PS) and the draw-time check that the bound stages fit each
-// other and the primitive topology (what Vulkan pipeline creation requires).
-#include "Context.h"
+// state as VS/PS), and what a draw's checks look at of the bound state
+// (ValidateDraw.cpp decides).
+#include "Validate.h"
 #include "Topology.h"
 
 namespace d3dl::impl {
@@ -30,21 +30,25 @@ uint32_t TessellatorOutput(const ShaderReflection& hs, const ShaderReflection& d
 }
 }  // namespace
 
-// D3D11 draws nothing for these combinations and its debug layer reports
-// them; Vulkan would reject the pipeline. One error per kind and context.
-bool ContextImpl::CheckStageTopology() {
+// The bound state a draw's checks look at (ValidateDraw).
+DrawInputs ContextImpl::DrawInputsOf(bool indexed) const {
   const ShaderBase* hs = state_.stages[ShaderStage::Hull].shader.Get();
   const ShaderBase* ds = state_.stages[ShaderStage::Domain].shader.Get();
   const ShaderBase* gs = state_.stages[ShaderStage::Geometry].shader.Get();
-  const bool patches = IsPatchList(state_.ia.topology);
-  if (hs && !ds) return ErrorOnce(OnceError::HullWithoutDomain), false;
-  if (ds && !hs) return ErrorOnce(OnceError::DomainWithoutHull), false;
-  if (patches && !hs) return ErrorOnce(OnceError::PatchListWithoutHull), false;
-  if (hs && !patches) return ErrorOnce(OnceError::HullWithoutPatchList), false;
-  if (!gs) return true;
-  const uint32_t input = hs ? TessellatorOutput(hs->refl, ds->refl) : TopologyClass(state_.ia.topology);
-  if (gs->refl.geometryInput != input) return ErrorOnce(OnceError::GeometryInputMismatch), false;
-  return true;
+  const RasterizerStageState& rs = state_.rs;
+  DrawInputs in;
+  in.indexed = indexed;
+  in.vertexShader = state_.stages[ShaderStage::Vertex].shader.Get() != nullptr;
+  in.target = state_.om.numRenderTargets != 0 || state_.om.depthStencilView.Get() != nullptr;
+  in.indexBuffer = state_.ia.indexBuffer.Get() != nullptr;
+  in.topology = state_.ia.topology;
+  in.hull = hs != nullptr;
+  in.domain = ds != nullptr;
+  in.geometry = gs != nullptr;
+  if (hs && ds) in.tessellatorOutput = TessellatorOutput(hs->refl, ds->refl);
+  if (gs) in.geometryInput = gs->refl.geometryInput;
+  in.emptyViewport = rs.numViewports && (rs.viewport.Width <= 0.0f || rs.viewport.Height <= 0.0f);
+  return in;
 }
 
 }  // namespace d3dl::impl

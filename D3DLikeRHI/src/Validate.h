@@ -155,4 +155,22 @@ HRESULT ValidateDeferredMap(DeviceImpl& dev, Resource* resource, UINT sub, MAP t
 // UpdateSubresource on a deferred context: constant buffers only (this port).
 bool ValidateDeferredUpdate(DeviceImpl& dev, Resource* dst);
 
+// ---- Draw-time checks (ValidateDraw.cpp). What a draw needs of the bound
+// state, in D3D11 terms (ContextImpl::DrawInputsOf fills it).
+struct DrawInputs {
+  bool indexed = false;
+  bool vertexShader = false, target = false, indexBuffer = false;
+  PRIMITIVE_TOPOLOGY topology = PRIMITIVE_TOPOLOGY_UNDEFINED;
+  bool hull = false, domain = false, geometry = false;
+  uint32_t tessellatorOutput = 0;  // primitive class the tessellator emits (hull and domain bound)
+  uint32_t geometryInput = 0;      // the geometry shader's input primitive class
+  bool emptyViewport = false;      // a bound viewport of zero width or height
+};
+enum class DrawVerdict { Draw, SkipSilently, SkipWithError };
+// D3D11 draws nothing when state is missing or the stages do not fit each
+// other and the topology (its debug layer reports it; Vulkan would reject the
+// pipeline): SkipWithError with *error the problem, checked in a fixed order.
+// An empty viewport draws nothing without an error.
+DrawVerdict ValidateDraw(const DrawInputs& in, OnceError* error);
+
 }  // namespace d3dl::impl
