@@ -12,6 +12,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "scene/SdkMeshModel.h"
+
 namespace drr {
 namespace fs = std::filesystem;
 
@@ -599,6 +601,7 @@ bool LoadModel(const std::string& path, const ModelLoadOptions& opts, ModelData*
     *error = path + ": model file not found";
     return false;
   }
+  if (IsSdkMeshPath(path) || IsSdkMeshAnimPath(path)) return LoadSdkMeshModel(path, opts, out, error);
   Assimp::Importer importer;
   size_t nanFaces = 0;
   const aiScene* sc = ImportScene(importer, path, opts, &nanFaces, error);
