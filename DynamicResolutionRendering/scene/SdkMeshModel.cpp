@@ -81,7 +81,9 @@ bool ConvertSubset(const File& f, const Mesh& m, const Subset& s, Budget& budget
       ++outOfRange;
       continue;
     }
-    for (size_t k = 0; k < 3; ++k) {
+    // Corners 0, 2, 1: the image is the original's, so its clockwise front faces must become the
+    // port's counter-clockwise ones on screen.
+    for (size_t k : {0, 2, 1}) {
       auto [it, added] = remap.try_emplace(tri[t + k], uint32_t(out->vertices.size()));
       if (added) out->vertices.push_back(DecodeVertex(f, vb, layout, tri[t + k]));
       out->indices.push_back(it->second);

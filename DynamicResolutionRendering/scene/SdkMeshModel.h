@@ -17,9 +17,11 @@
 //   slerp (orientation) towards the next key, the last key blending into the
 //   first; the loop lasts keys / fps seconds.
 // - Direct3D's left-handed coordinates become the port's right-handed ones by
-//   mirroring z (positions, normals, tangents, binormals, matrices and keys):
-//   clockwise front faces become counter-clockwise, and a camera frame looks
-//   down its -z axis as the original's looks down +z.
+//   mirroring z (positions, normals, tangents, binormals, matrices and keys),
+//   which leaves the image as it was; each triangle's corners are reordered so
+//   that Direct3D's clockwise front faces are the port's counter-clockwise
+//   ones, and a camera frame looks down its -z axis as the original's looks
+//   down +z.
 #pragma once
 
 #include <string>

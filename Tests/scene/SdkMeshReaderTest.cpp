@@ -103,6 +103,12 @@ TEST(SdkMeshReader, SubsetsMaterialsAndFrames) {
   EXPECT_EQ(m.nodes[4].parent, 2);
   EXPECT_EQ(m.nodes[4].meshes, std::vector<uint32_t>({2}));
   EXPECT_EQ(m.nodes[3].meshes, std::vector<uint32_t>({0, 1}));
+  // Front faces: counter-clockwise seen from the side the normal points to (the original: clockwise).
+  for (const MeshData& mesh : {m.meshes[0], m.meshes[1], m.meshes[2]}) {
+    const glm::vec3 a = mesh.vertices[mesh.indices[0]].position, b = mesh.vertices[mesh.indices[1]].position,
+                    c = mesh.vertices[mesh.indices[2]].position;
+    EXPECT_GT(glm::dot(glm::cross(b - a, c - a), mesh.vertices[mesh.indices[0]].normal), 0.f) << mesh.name;
+  }
   // Mirrored z: the plate's normal stays +y, the pendulum's -z normal becomes +z.
   EXPECT_FLOAT_EQ(m.meshes[0].vertices[0].normal.y, 1.f);
   EXPECT_FLOAT_EQ(m.meshes[2].vertices[0].normal.z, 1.f);
