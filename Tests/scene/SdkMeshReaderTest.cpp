@@ -6,6 +6,7 @@
 // its folder.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 
@@ -186,4 +187,17 @@ TEST(SdkMeshReader, OriginalMedia) {
   EXPECT_GT(glm::length(glm::vec3(g0[2][1]) - glm::vec3(g1[2][1])), 0.1f);  // the bell swings
   ASSERT_TRUE(ImportModelIsolated((arena / "decals.sdkmesh").string(), {}, ImportLimits{}, &decals, &error)) << error;
   EXPECT_GE(decals.meshes.size(), 150u);
+  // The cinematic camera flies: its last frame with a mesh moves between two times.
+  ModelData camera, path;
+  ASSERT_TRUE(ImportModelIsolated((arena / "CinematicCamera.sdkmesh").string(), {}, ImportLimits{}, &camera, &error))
+      << error;
+  ASSERT_TRUE(ImportModelIsolated((arena / "CinematicCamera.sdkmesh_anim").string(), ao, ImportLimits{}, &path, &error))
+      << error;
+  EXPECT_EQ(AttachAnimations(&camera, path), 2);
+  camera.Evaluate(0.0, &g0);
+  camera.Evaluate(1.5, &g1);
+  const glm::vec3 eye0(g0.back()[3]), eye1(g1.back()[3]);
+  std::printf("cinematic camera eye at 0 s (%.1f, %.1f, %.1f), at 1.5 s (%.1f, %.1f, %.1f)\n", eye0.x, eye0.y, eye0.z,
+              eye1.x, eye1.y, eye1.z);
+  EXPECT_GT(glm::length(eye1 - eye0), 10.f);
 }
