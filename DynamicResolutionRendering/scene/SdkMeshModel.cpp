@@ -23,12 +23,34 @@ std::string LowerExtension(const std::string& path) {
 
 constexpr uint64_t kMaxFileBytes = 4ull << 30;
 
+// The original's input layout (Scene.cpp of the original): POSITION, NORMAL, TEXCOORD0, TANGENT,
+// BINORMAL at fixed offsets, used for every file whatever its declaration.
+constexpr VertexElement kOriginalTangent{0, 32, kFloat3, 0, kTangent, 0};
+constexpr VertexElement kOriginalBinormal{0, 44, kFloat3, 0, kBinormal, 0};
+
+// Whether the declaration starts as the original's layout (its files all do): position, normal
+// and texture coordinates where that layout reads them, room for its tangent and binormal.
+bool StartsAsOriginalLayout(const VertexBuffer& vb) {
+  auto at = [&](uint8_t usage, uint16_t offset, uint8_t type) {
+    const VertexElement* e = vb.Find(usage, 0);
+    return e && e->offset == offset && e->type == type;
+  };
+  return vb.stride >= 56 && at(kPosition, 0, kFloat3) && at(kNormal, 12, kFloat3) && at(kTexCoord, 24, kFloat2);
+}
+
 // The elements of the scene's vertex in one vertex buffer (null when absent).
 struct VertexLayout {
   const VertexElement *position, *normal, *texcoord, *tangent, *binormal;
-  explicit VertexLayout(const VertexBuffer& vb)
+  VertexLayout(const VertexBuffer& vb, bool declared)
       : position(vb.Find(kPosition, 0)), normal(vb.Find(kNormal, 0)), texcoord(vb.Find(kTexCoord, 0)),
-        tangent(vb.Find(kTangent, 0)), binormal(vb.Find(kBinormal, 0)) {}
+        tangent(vb.Find(kTangent, 0)), binormal(vb.Find(kBinormal, 0)) {
+    if (!declared && StartsAsOriginalLayout(vb)) {
+      // As the original draws it: with two or more texture coordinate sets (64-, 72- and
+      // 80-byte vertices) these bytes are the extra sets, not the tangent frame.
+      tangent = &kOriginalTangent;
+      binormal = &kOriginalBinormal;
+    }
+  }
 };
 
 SceneVertex DecodeVertex(const File& f, const VertexBuffer& vb, const VertexLayout& l, uint64_t v) {
@@ -73,7 +95,7 @@ bool ConvertSubset(const File& f, const Mesh& m, const Subset& s, Budget& budget
     *error = f.path + ": more than " + std::to_string(budget.opts.maxTriangles) + " triangles";
     return false;
   }
-  const VertexLayout layout(vb);
+  const VertexLayout layout(vb, budget.opts.sdkmeshDeclaredLayout);
   std::unordered_map<uint64_t, uint32_t> remap;
   size_t outOfRange = 0;
   for (size_t t = 0; t + 2 < tri.size(); t += 3) {

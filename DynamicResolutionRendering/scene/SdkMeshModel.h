@@ -6,7 +6,10 @@
 // - every triangle subset of a mesh is one MeshData (its material, indices
 //   relative to the subset's VertexStart as the original's DrawIndexed base
 //   vertex), drawn at every frame that names the mesh; only the mesh's first
-//   vertex buffer is read, as the original's renderer binds only that one;
+//   vertex buffer is read, as the original's renderer binds only that one,
+//   and its vertices as the original's one input layout reads them (tangent
+//   and binormal at bytes 32 and 44) unless ModelLoadOptions asks for the
+//   file's declaration;
 // - frames are nodes, reached from frame 0 through child and sibling links as
 //   the original's recursive transform does; the frame matrix is the node's;
 // - materials keep their three texture names, resolved next to the mesh

@@ -6,6 +6,7 @@
 // its folder.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -110,6 +111,14 @@ TEST(SdkMeshReader, SubsetsMaterialsAndFrames) {
                     c = mesh.vertices[mesh.indices[2]].position;
     EXPECT_GT(glm::dot(glm::cross(b - a, c - a), mesh.vertices[mesh.indices[0]].normal), 0.f) << mesh.name;
   }
+  // The pendulum's 72-byte vertices as the original's input layout reads them: its "tangent" is
+  // the second and third texture coordinate sets (0.25, 0.75, 0.5), made orthogonal to the normal.
+  EXPECT_NEAR(m.meshes[2].vertices[0].tangent.y, 0.75f / std::sqrt(0.625f), 1e-5f);
+  ModelLoadOptions declared;
+  declared.sdkmeshDeclaredLayout = true;
+  ModelData d;
+  ASSERT_TRUE(SdkMeshToModel(f, declared, &d, &error)) << error;
+  EXPECT_FLOAT_EQ(d.meshes[2].vertices[0].tangent.x, 1.f);  // its declared TANGENT
   // Mirrored z: the plate's normal stays +y, the pendulum's -z normal becomes +z.
   EXPECT_FLOAT_EQ(m.meshes[0].vertices[0].normal.y, 1.f);
   EXPECT_FLOAT_EQ(m.meshes[2].vertices[0].normal.z, 1.f);
