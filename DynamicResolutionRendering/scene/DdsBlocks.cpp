@@ -24,6 +24,26 @@ bool IsTextureDataFormat(DXGI_FORMAT format) {
          format == DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
 }
 
+const char* TextureFormatName(DXGI_FORMAT format) {
+  switch (format) {
+    case DXGI_FORMAT_R8G8B8A8_UNORM: return "R8G8B8A8_UNORM";
+    case DXGI_FORMAT_R8G8B8A8_UNORM_SRGB: return "R8G8B8A8_UNORM_SRGB";
+    case DXGI_FORMAT_B8G8R8A8_UNORM: return "B8G8R8A8_UNORM";
+    case DXGI_FORMAT_B8G8R8A8_UNORM_SRGB: return "B8G8R8A8_UNORM_SRGB";
+    case DXGI_FORMAT_BC1_UNORM: return "BC1_UNORM";
+    case DXGI_FORMAT_BC1_UNORM_SRGB: return "BC1_UNORM_SRGB";
+    case DXGI_FORMAT_BC2_UNORM: return "BC2_UNORM";
+    case DXGI_FORMAT_BC2_UNORM_SRGB: return "BC2_UNORM_SRGB";
+    case DXGI_FORMAT_BC3_UNORM: return "BC3_UNORM";
+    case DXGI_FORMAT_BC3_UNORM_SRGB: return "BC3_UNORM_SRGB";
+    case DXGI_FORMAT_BC4_UNORM: return "BC4_UNORM";
+    case DXGI_FORMAT_BC4_SNORM: return "BC4_SNORM";
+    case DXGI_FORMAT_BC5_UNORM: return "BC5_UNORM";
+    case DXGI_FORMAT_BC5_SNORM: return "BC5_SNORM";
+    default: return "?";
+  }
+}
+
 uint64_t TextureRowPitch(DXGI_FORMAT format, uint32_t width) {
   if (const uint32_t b = BcBlockBytes(format)) return uint64_t(std::max(1u, (width + 3) / 4)) * b;
   return IsTextureDataFormat(format) ? uint64_t(width) * 4 : 0;

@@ -16,6 +16,10 @@ namespace drr {
 uint32_t BcBlockBytes(d3dl::DXGI_FORMAT format);
 // Whether textures of `format` can hold loaded texture data (RGBA8 or BC1..BC5).
 bool IsTextureDataFormat(d3dl::DXGI_FORMAT format);
+// The DXGI name without its prefix ("BC1_UNORM_SRGB") of a texture data format
+// or of B8G8R8A8_UNORM(_SRGB); "?" for others. (The scene's CPU side does
+// not link the RHI, whose FormatName covers every format.)
+const char* TextureFormatName(d3dl::DXGI_FORMAT format);
 // Bytes per row of texels (RGBA8) or of 4x4 blocks (BC) of a mip `width` wide.
 uint64_t TextureRowPitch(d3dl::DXGI_FORMAT format, uint32_t width);
 // Bytes of a width x height mip (whole blocks for BC); 0 for other formats.

@@ -112,7 +112,7 @@ bool Dx10Layout(const uint8_t* data, size_t size, const std::string& name, Layou
     *error = name + ": DX10 header names DXGI format " + std::to_string(format) + ", which is not supported";
     return false;
   }
-  l->name = std::string("DX10 ") + FormatName(f);
+  l->name = std::string("DX10 ") + TextureFormatName(f);
   return true;
 }
 

@@ -56,7 +56,7 @@ bool ExpandToRgba8(const TextureData& texture, TextureData* out, std::string* er
     e.width = m.width, e.height = m.height;
     if (m.rgba.size() != TextureMipBytes(texture.format, m.width, m.height) ||
         !DecodeBcMip(texture.format, m.rgba.data(), m.width, m.height, &e.rgba)) {
-      *error = texture.source + ": the CPU decoder cannot expand " + FormatName(texture.format) + " data (" +
+      *error = texture.source + ": the CPU decoder cannot expand " + TextureFormatName(texture.format) + " data (" +
                std::to_string(m.width) + "x" + std::to_string(m.height) + ")";
       return false;
     }

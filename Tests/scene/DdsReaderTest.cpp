@@ -101,7 +101,9 @@ TEST(DdsTexture, DiffuseMapsTakeTheSrgbFormLikeTheOriginal) {
   EXPECT_EQ(plain.format, DXGI_FORMAT_R8G8B8A8_UNORM_SRGB);
   EXPECT_TRUE(c.mipsFromFile);
   EXPECT_EQ(c.mips.size(), 7u);
-  EXPECT_EQ(c.Bytes() * 8, c.BytesAsRgba8());  // BC1: 4 bits a texel against 32 (down to the 4x4 blocks)
+  EXPECT_EQ(c.mips[0].rgba.size() * 8, 64u * 32u * 4u);  // BC1: 4 bits a texel against RGBA8's 32
+  EXPECT_EQ(c.Bytes(), 1024u + 256 + 64 + 16 + 8 + 8 + 8);  // mips below 4x4 take a whole block
+  EXPECT_EQ(c.BytesAsRgba8(), 4u * (2048 + 512 + 128 + 32 + 8 + 2 + 1));
   EXPECT_EQ(plain.mips.size(), 5u);            // one mip in the file: the chain is built, 16x8 .. 1x1
   GenerateMipChain(&c);
   EXPECT_EQ(c.mips.size(), 7u);
@@ -184,7 +186,7 @@ TEST(DdsOriginalMedia, EveryFileLoadsAndStaysCompressed) {
     }
     ASSERT_TRUE(LoadTextureFile(f.string(), TextureKind::Color, {}, &t, &err)) << err;
     std::printf("  %-40s %-16s %5ux%-5u %2zu mips %9llu bytes (RGBA8 %9llu)\n", f.filename().string().c_str(),
-                FormatName(t.format), t.Width(), t.Height(), t.mips.size(), (unsigned long long)t.Bytes(),
+                TextureFormatName(t.format), t.Width(), t.Height(), t.mips.size(), (unsigned long long)t.Bytes(),
                 (unsigned long long)t.BytesAsRgba8());
     gpu += t.Bytes(), rgba8 += t.BytesAsRgba8(), ++loaded;
   }
