@@ -11,6 +11,10 @@
 #include "RenderTest.h"
 #include "scene/DdsBlocks.h"
 #include "scene/DdsReader.h"
+#include "scene/Scene.h"
+
+#include <fstream>
+#include <unistd.h>
 
 using namespace drr;
 using namespace d3dl;
@@ -117,4 +121,30 @@ TEST_F(DdsGpu, ForcedCpuFallbackUploadsTheRgba8Expansion) {
   EXPECT_EQ(expanded->format, DXGI_FORMAT_R8G8B8A8_UNORM);
   ASSERT_EQ(expanded->mips.size(), bc->mips.size());
   EXPECT_EQ(LargestDifference(*expanded, CpuDecoded(*bc)), 0);
+}
+
+// A scene whose material names a BC1 DDS diffuse map: the texture stays
+// compressed on the GPU (the report's texture_bytes against
+// texture_bytes_as_rgba8), and DRR_BC_DECODE=cpu uploads the RGBA8 expansion.
+TEST_F(DdsGpu, SceneKeepsBc1CompressedUnlessTheFallbackIsForced) {
+  const fs::path dir = fs::temp_directory_path() / ("drr_dds_scene_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  fs::copy_file(fs::path(DRR_ARENA_DIR) / "dds" / "bc1_mips.dds", dir / "bc1_mips.dds",
+                fs::copy_options::overwrite_existing);
+  std::ofstream(dir / "quad.mtl") << "newmtl M\nKd 1 1 1\nmap_Kd bc1_mips.dds\n";
+  std::ofstream(dir / "quad.obj") << "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\n"
+                                     "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nusemtl M\nf 1/1/1 2/2/1 3/3/1 4/4/1\n";
+  const uint64_t bc1Bytes = 1024 + 256 + 64 + 16 + 8 + 8 + 8, rgba8Bytes = 4 * (2048 + 512 + 128 + 32 + 8 + 2 + 1);
+  for (bool forced : {false, true}) {
+    SCOPED_TRACE(forced ? "DRR_BC_DECODE=cpu" : "BC on the GPU");
+    if (forced) setenv("DRR_BC_DECODE", "cpu", 1);
+    std::string err;
+    auto scene = Scene::Load(device(), (dir / "quad.obj").string(), {}, &err);
+    unsetenv("DRR_BC_DECODE");
+    ASSERT_TRUE(scene) << err;
+    const SceneStats st = scene->Stats();
+    EXPECT_EQ(st.textureBytesAsRgba8 - st.textureBytes, forced ? 0 : rgba8Bytes - bc1Bytes);
+    EXPECT_GE(st.textureBytesAsRgba8, rgba8Bytes);
+  }
+  fs::remove_all(dir);
 }
