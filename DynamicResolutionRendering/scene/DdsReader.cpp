@@ -149,7 +149,8 @@ bool HeaderSizes(const uint8_t* data, const std::string& name, uint32_t maxDimen
                  uint32_t* mips, std::string* error) {
   *w = U32At(data, dds::kOffWidth), *h = U32At(data, dds::kOffHeight);
   const uint32_t caps2 = U32At(data, dds::kOffCaps2), flags = U32At(data, dds::kOffFlags);
-  if ((caps2 & (dds::kCaps2Cubemap | dds::kCaps2Volume)) || ((flags & dds::kFlagDepth) && U32At(data, dds::kOffDepth) > 1)) {
+  const bool volume = (flags & dds::kFlagDepth) && U32At(data, dds::kOffDepth) > 1;
+  if ((caps2 & (dds::kCaps2Cubemap | dds::kCaps2Volume)) || volume) {
     *error = name + ": cube maps and volume textures are not supported (caps2 " + Hex(caps2) + ")";
     return false;
   }

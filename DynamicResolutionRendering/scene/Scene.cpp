@@ -132,10 +132,12 @@ d3dl::PixelShader* SceneImpl::Variant(int v) {
   return ps[v].Get();
 }
 
-ComPtr<d3dl::ShaderResourceView> SceneImpl::Upload(const std::shared_ptr<const TextureData>& loaded, std::string* error) {
+ComPtr<d3dl::ShaderResourceView> SceneImpl::Upload(const std::shared_ptr<const TextureData>& loaded,
+                                                   std::string* error) {
   if (auto it = srvs.find(loaded.get()); it != srvs.end()) return it->second;
   // Block-compressed data as it is where the device samples it, else expanded to RGBA8 on the CPU.
-  const auto t = TextureForDevice(loaded, device->CheckFormatSupport(loaded->format, d3dl::BIND_SHADER_RESOURCE), error);
+  const bool samples = device->CheckFormatSupport(loaded->format, d3dl::BIND_SHADER_RESOURCE);
+  const auto t = TextureForDevice(loaded, samples, error);
   if (!t) return nullptr;
   d3dl::TEXTURE2D_DESC td;
   td.Width = t->Width();

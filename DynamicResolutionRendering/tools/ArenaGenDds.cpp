@@ -131,7 +131,8 @@ std::vector<uint8_t> Header(const DdsSpec& s) {
   Put32(&f, dds::kOffFlags, dds::kFlagCaps | dds::kFlagHeight | dds::kFlagWidth | dds::kFlagPixelFormat |
                                 (s.mips > 1 ? dds::kFlagMipCount : 0) | (bc ? dds::kFlagLinearSize : dds::kFlagPitch));
   Put32(&f, dds::kOffHeight, s.height), Put32(&f, dds::kOffWidth, s.width);
-  Put32(&f, dds::kOffPitch, bc ? std::max(1u, (s.width + 3) / 4) * std::max(1u, (s.height + 3) / 4) * (s.kind == DdsSpec::Bc3 ? 16 : 8)
+  const uint32_t blockBytes = s.kind == DdsSpec::Bc3 ? 16 : 8;  // the top mip's size (BC) or row pitch
+  Put32(&f, dds::kOffPitch, bc ? std::max(1u, (s.width + 3) / 4) * std::max(1u, (s.height + 3) / 4) * blockBytes
                                : s.width * 4);
   Put32(&f, dds::kOffMipCount, s.mips);
   const uint32_t pf = dds::kOffPixelFormat;

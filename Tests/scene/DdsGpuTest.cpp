@@ -75,7 +75,9 @@ class DdsGpu : public drrtest::RenderTest {
           for (int c = 0; c < 4; ++c) {
             const int got = img.RGBA8(x, y)[c], want = expected[m][(size_t(y) * w + x) * 4 + c];
             worst = std::max(worst, std::abs(got - want));
-            if (std::abs(got - want) > 1) ADD_FAILURE() << "mip " << m << " (" << x << "," << y << ") channel " << c << ": GPU " << got << ", CPU " << want;
+            if (std::abs(got - want) > 1)
+              ADD_FAILURE() << "mip " << m << " (" << x << "," << y << ") channel " << c << ": GPU " << got
+                            << ", CPU " << want;
           }
     }
     return worst;

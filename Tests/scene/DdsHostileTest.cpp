@@ -41,7 +41,8 @@ class DdsHostile : public ::testing::Test {
   // naming the file and containing `expected`.
   void ExpectRejected(const std::string& name, const std::vector<uint8_t>& bytes, const std::string& expected) {
     const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
     TextureData t;
     std::string local, isolated;
     const auto start = std::chrono::steady_clock::now();
@@ -65,7 +66,8 @@ TEST_F(DdsHostile, TruncatedFiles) {
   ASSERT_GT(good.size(), 200u);
   ExpectRejected("empty.dds", {}, "texture has zero size");
   ExpectRejected("header.dds", std::vector<uint8_t>(good.begin(), good.begin() + 100), "truncated DDS file (100 bytes");
-  ExpectRejected("mip0.dds", std::vector<uint8_t>(good.begin(), good.begin() + 200), "mip 0 (64x32, 1024 bytes at offset 128)");
+  ExpectRejected("mip0.dds", std::vector<uint8_t>(good.begin(), good.begin() + 200),
+                 "mip 0 (64x32, 1024 bytes at offset 128)");
   ExpectRejected("lastmip.dds", std::vector<uint8_t>(good.begin(), good.end() - 1), "mip 6 (1x1, 8 bytes");
   const auto dx10 = ArenaBytes("bc1_dx10.dds");
   ExpectRejected("dx10.dds", std::vector<uint8_t>(dx10.begin(), dx10.begin() + 140), "the DX10 header needs 148");
