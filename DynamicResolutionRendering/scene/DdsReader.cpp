@@ -1,9 +1,10 @@
 #include "scene/DdsReader.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
-#include <iterator>
 
 #include "scene/DdsBlocks.h"
 #include "scene/DdsFormat.h"
@@ -54,6 +55,8 @@ uint32_t PlainBytes(Plain p) {
   }
 }
 
+// DXT2 and DXT4 (premultiplied alpha) hold the blocks of DXT3 and DXT5; the
+// texels are kept as stored, as a D3D11 loader does.
 DXGI_FORMAT BcFromFourCC(uint32_t f) {
   using dds::FourCC;
   if (f == FourCC('D', 'X', 'T', '1')) return DXGI_FORMAT_BC1_UNORM;
@@ -210,6 +213,23 @@ bool ReadMips(const uint8_t* data, size_t size, const std::string& name, const L
   return true;
 }
 
+// The bytes from the file's start to the end of its last mip, as its headers
+// describe them; 0 when the headers are invalid (ReadDds then says why).
+uint64_t BytesDescribed(const uint8_t* data, size_t size, uint32_t maxDimension) {
+  Layout l;
+  uint32_t w, h, mips;
+  std::string ignored;
+  if (size < dds::kDataOffset || !PixelLayout(data, size, "", &l, &ignored) ||
+      !HeaderSizes(data, "", maxDimension, &w, &h, &mips, &ignored))
+    return 0;
+  uint64_t end = l.dataOffset;
+  for (uint32_t i = 0; i < mips; ++i) {
+    const uint32_t mw = std::max(1u, w >> i), mh = std::max(1u, h >> i);
+    end += l.bc ? TextureMipBytes(l.bc, mw, mh) : uint64_t(mw) * mh * PlainBytes(l.plain);
+  }
+  return end;
+}
+
 }  // namespace
 
 bool IsDdsData(const uint8_t* data, size_t size) { return data && size >= 4 && U32At(data, 0) == dds::kMagic; }
@@ -251,7 +271,21 @@ bool ReadDdsFile(const std::string& path, uint32_t maxDimension, DdsImage* out, 
     *error = path + ": cannot open the DDS file";
     return false;
   }
-  const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  // The headers first; then no more than the mips they describe, so that a
+  // file with gigabytes of trailing bytes is neither read nor held.
+  std::vector<uint8_t> bytes(dds::kDataOffset + dds::kDx10HeaderSize);
+  f.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(bytes.size()));
+  bytes.resize(size_t(f.gcount()));
+  std::error_code ec;
+  const uint64_t fileSize = std::filesystem::file_size(path, ec);
+  const uint64_t needed = std::min<uint64_t>(BytesDescribed(bytes.data(), bytes.size(), maxDimension),
+                                             ec ? 0 : fileSize);
+  if (needed > bytes.size()) {
+    const size_t have = bytes.size();
+    bytes.resize(size_t(needed));
+    f.read(reinterpret_cast<char*>(bytes.data() + have), std::streamsize(needed - have));
+    bytes.resize(have + size_t(f.gcount()));
+  }
   return ReadDds(bytes.data(), bytes.size(), path, maxDimension, out, error);
 }
 

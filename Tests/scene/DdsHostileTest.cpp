@@ -115,3 +115,24 @@ TEST_F(DdsHostile, UnsupportedLayouts) {
   Set32(&bytes, dds::kDataOffset + dds::kDx10Format, 2);  // R32G32B32A32_FLOAT
   ExpectRejected("float.dds", bytes, "DX10 header names DXGI format 2, which is not supported");
 }
+
+// A valid file followed by a gigabyte (sparse) of trailing bytes loads: the
+// reader takes the headers, then only the bytes of the mips they describe.
+TEST_F(DdsHostile, TrailingBytesAreNotRead) {
+  const auto good = ArenaBytes("bc1_mips.dds");
+  const std::string path = (dir_ / "trailing.dds").string();
+  {
+    std::ofstream f(path, std::ios::binary);
+    f.write(reinterpret_cast<const char*>(good.data()), std::streamsize(good.size()));
+    f.seekp(std::streamoff(1) << 30);
+    f.put('x');
+  }
+  ASSERT_GT(fs::file_size(path), uint64_t(1) << 30);
+  DdsImage img;
+  std::string err;
+  ASSERT_TRUE(ReadDdsFile(path, 16384, &img, &err)) << err;
+  ASSERT_EQ(img.mips.size(), 7u);
+  EXPECT_EQ(img.mips[6].rgba, std::vector<uint8_t>(good.end() - 8, good.end()));
+  TextureData t;
+  EXPECT_TRUE(IsolatedTextureLoader()(path, TextureKind::Color, {}, &t, &err)) << err;
+}
