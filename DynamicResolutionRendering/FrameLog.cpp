@@ -192,6 +192,7 @@ bool FrameLog::WriteReport(const std::string& path, const ReportInfo& info, std:
     const SceneStats st = info.scene->Stats();
     j.BeginObject("scene_stats").Inline().Value("draws_issued", st.drawsIssued).Value("draws_culled", st.drawsCulled);
     j.Value("triangles", st.triangles).Value("texture_bytes", st.textureBytes);
+    j.Value("texture_bytes_as_rgba8", st.textureBytesAsRgba8);
     if (st.tessellatedDraws) j.Value("tessellated_draws", st.tessellatedDraws).Value("patches_submitted", st.patchesSubmitted);
     j.Value("recording_threads", st.recordingThreads).Value("record_ms", st.recordMs);
     j.BeginArray("draws_per_thread").Inline();

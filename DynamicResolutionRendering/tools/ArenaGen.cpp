@@ -31,6 +31,7 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "ArenaGenDds.h"
 #include "ArenaGenSdkMesh.h"
 #include "ArenaGltf.h"
 #include "ArenaMath.h"
@@ -546,5 +547,6 @@ int main(int argc, char** argv) {
     else return Usage();
   }
   if (outDir.empty() || (detail != "small" && detail != "large")) return Usage();
-  return Run(detail == "small" ? kSmall : kLarge, outDir, seed);
+  const int rc = Run(detail == "small" ? kSmall : kLarge, outDir, seed);
+  return rc != 0 ? rc : arena::WriteArenaDdsSet(outDir);
 }
