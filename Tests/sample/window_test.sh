@@ -11,9 +11,9 @@ exe="$1"
 out="$2"
 mkdir -p "$out"
 common=(--width 320 --height 180 --time 1 --camera 2 --filter point --scale 0.71 --no-gui --validation)
-# Taller than 768 so that a 1024x768 window with its title bar fits the screen.
-screen_w=1280
-screen_h=1024
+# Larger than 1280x720 and 1024x768 so that those windows with their frames fit the screen.
+screen_w=1600
+screen_h=900
 fail=0
 run() { timeout 120 "$exe" "$@"; }  # exit code 124: the app hung
 
@@ -79,7 +79,7 @@ for size in 1024x768 1280x720; do
     --screenshot "$out/panel-$size.png" --report "$report" || { echo "panel run at $size failed ($?)"; fail=1; continue; }
   report_check "the window is $size" "r['back_buffer'] == [$w, $h]"
   report_check "the panel's last header ($(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["gui"]["last_header_title"])' "$report" 2>/dev/null)) is inside the panel and the window" \
-    "r['gui']['last_header'][1] >= r['gui']['panel'][1] and r['gui']['last_header'][3] <= r['gui']['panel'][3] <= $h and r['gui']['panel'][2] <= $w"
+    "r['gui']['last_header'][1] >= r['gui']['panel'][1] and r['gui']['last_header'][3] <= r['gui']['panel'][3] <= r['back_buffer'][1] and r['gui']['panel'][2] <= r['back_buffer'][0]"
 done
 
 if command -v xdotool >/dev/null; then
