@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "DynamicResolutionRendering.h"
+#include "SampleTestKit.h"
 
 using namespace drr;
 using Json = nlohmann::json;
@@ -23,15 +24,10 @@ std::string OutDir() {
   return dir;
 }
 
+// A few frames of the first static camera at a fixed time (testkit's headless options).
 Options TinyOptions(uint32_t w, uint32_t h) {
-  Options o;
-  o.headless = true;
-  o.width = w;
-  o.height = h;
+  Options o = testkit::HeadlessOptions(w, h, 1.0);
   o.frames = 3;
-  o.control = ControlMode::Manual;
-  o.gui = false;
-  o.time = 1.0;  // reproducible frames
   o.camera = 2;  // static camera 1 (0 is First Person, 1 the cinematic camera)
   return o;
 }
