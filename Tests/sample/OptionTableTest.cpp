@@ -162,3 +162,14 @@ TEST(OptionTable, OneRowPerSettingGroupedByFeature) {
   EXPECT_EQ(OptionRows().front().kind, OptionKind::Heading);
   EXPECT_GE(OptionGroups().size(), 8u);
 }
+
+// A path that is not UTF-8 is written with replacement characters: the
+// report stays valid JSON instead of the writer throwing.
+TEST(OptionTable, NonUtf8PathIsWrittenAsValidJson) {
+  Options o;
+  std::string m;
+  ASSERT_EQ(ParseCommandLine({"--scene", "/tmp/\xff\xfe.txt"}, &o, &m), ParseStatus::Ok);
+  const nlohmann::json j = nlohmann::json::parse(OptionsToJson(o), nullptr, false);
+  ASSERT_FALSE(j.is_discarded());
+  EXPECT_EQ(j["scene"], "/tmp/\xEF\xBF\xBD\xEF\xBF\xBD.txt");
+}
