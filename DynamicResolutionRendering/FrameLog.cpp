@@ -1,15 +1,11 @@
 #include "FrameLog.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 
 #include "imageio/ImageFile.h"
 #include "imageio/Srgb.h"
-#include "scene/Scene.h"
 
 namespace drr {
 
