@@ -1,6 +1,7 @@
 #include "bench/BenchCommon.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <unistd.h>
@@ -68,11 +69,30 @@ MeanCi BlockMeanCi(const std::vector<double>& perFrame, int blocks) {
   return r;
 }
 
+MeanCi PairedDifferenceCi(const std::vector<double>& a, const std::vector<double>& b, int blocks) {
+  std::vector<double> d;
+  for (size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+    if (std::isfinite(a[i]) && std::isfinite(b[i])) d.push_back(a[i] - b[i]);
+  return BlockMeanCi(d, blocks);
+}
+
+int SideOf(const MeanCi& d, double threshold) {
+  if (!std::isfinite(d.mean) || !std::isfinite(d.halfWidth)) return 0;
+  if (d.mean - d.halfWidth > threshold) return 1;
+  if (d.mean + d.halfWidth < threshold) return -1;
+  return 0;
+}
+
 std::vector<FrameRecord> RenderFrames(Sample& sample, int frames) {
   const size_t before = sample.Frames().size();
   for (int i = 0; i < frames; ++i) sample.RenderFrame();
   const auto& all = sample.Frames();
   return std::vector<FrameRecord>(all.begin() + std::ptrdiff_t(std::min(before, all.size())), all.end());
+}
+
+void WarmUpFor(Sample& sample, int ms) {
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(ms)) sample.RenderFrame();
 }
 
 Image Capture(Sample& sample) {

@@ -7,7 +7,9 @@
 // logged zero validation messages. Moving-camera rows (point, bilinear, taa
 // and native on the moving cinematic camera) each cover the same number of
 // frames (>= 2) with finite PSNR and its interval, FLIP in [0, 1] and a
-// finite, non-negative flicker; still rows have FLIP in [0, 1]; no row at or
+// finite, non-negative flicker and instability (still sweep rows: the jitter
+// instability; native on the still camera exactly 0); per-frame values and
+// FLIP's pixels per degree in results.json; still rows have FLIP in [0, 1]; no row at or
 // below 1.0 allowed 2x targets; every timed row has at least one distinct GPU
 // sample (a moving row no more than its frames); the ablation rows and the
 // labelled fronts are there. Timings are never compared (lavapipe's are not
@@ -22,6 +24,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace {
 
@@ -64,6 +68,44 @@ double Parse(const std::string& s) {
   return end && *end == 0 ? v : std::nan("");
 }
 
+// results.json: the repeat row is identical, zero validation messages, the
+// run complete, as many rows as the CSV, FLIP's pixels per degree that of the
+// frame full-screen on FLIP's reference display (0.7 m wide, 3840 pixels, 0.7
+// m away), and every moving row's per-frame values: PSNR and FLIP for each
+// compared frame, the instability for each frame after the first.
+void CheckJson(const std::string& text, size_t csvRows) {
+  const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("rows") || !j["rows"].is_array()) {
+    Fail("results.json is not a JSON object with rows");
+    return;
+  }
+  if (j.value("validation_messages", -1) != 0) Fail("results.json: validation messages are not 0");
+  if (j.value("complete", false) != true) Fail("results.json: the run is not marked complete");
+  const double width = j.value("width", 0.0), ppd = j.value("flip_ppd", 0.0);
+  const double expected = 0.7 * (width / 0.7) * 3.14159265358979 / 180.0;  // distance x pixels per metre, per radian
+  if (!(std::abs(ppd - expected) < 0.01)) Fail("results.json: flip_ppd " + std::to_string(ppd) + ", expected " + std::to_string(expected));
+  if (j["rows"].size() != csvRows) Fail("results.json has " + std::to_string(j["rows"].size()) + " rows, results.csv " + std::to_string(csvRows));
+  bool repeat = false;
+  for (const nlohmann::json& r : j["rows"]) {
+    const std::string where = "results.json row '" + r.value("view", "") + "' / '" + r.value("filter", "") + "'";
+    if (r.value("filter", "") == "reference-repeat") {
+      repeat = true;
+      if (r.value("identical", false) != true) Fail(where + ": not \"identical\": true");
+    }
+    if (r.value("moving", false) != true) continue;
+    const size_t frames = r.value("quality_frames", size_t(0));
+    const nlohmann::json f = r.value("per_frame", nlohmann::json::object());
+    for (const char* key : {"psnr_db", "flip", "instability_rms"}) {
+      const size_t want = std::string(key) == "instability_rms" ? frames - 1 : frames;
+      const nlohmann::json v = f.value(key, nlohmann::json::array());
+      if (v.size() != want) Fail(where + ": per_frame " + key + " has " + std::to_string(v.size()) + " values, not " + std::to_string(want));
+      for (const nlohmann::json& x : v)
+        if (!x.is_number() || !std::isfinite(x.get<double>())) Fail(where + ": per_frame " + key + " holds a non-number");
+    }
+  }
+  if (!repeat) Fail("results.json has no reference-repeat row");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -93,7 +135,7 @@ int main(int argc, char** argv) {
   for (size_t i = 0; i < header.size(); ++i) col[header[i]] = i;
   for (const char* c : {"view", "filter", "scale", "psnr_db", "valid", "gpu_frame_ms", "gpu_clear_ms",
                         "gpu_scene_ms", "gpu_post_ms", "gpu_scale_ms", "gpu_samples", "moving", "speed", "quality_frames",
-                        "supersampling", "flip", "psnr_ci95", "flicker_rms"})
+                        "supersampling", "flip", "psnr_ci95", "flicker_rms", "instability_rms"})
     if (!col.count(c)) Fail(std::string("results.csv has no column ") + c);
   if (g_failures) return 1;
 
@@ -157,6 +199,15 @@ int main(int argc, char** argv) {
       const double flicker = Parse(f[col["flicker_rms"]]);
       if (!(flicker >= 0 && std::isfinite(flicker))) Fail(where + ": flicker not a finite, non-negative number");
     }
+    // Instability: every moving row, and every still row of the sweep (its
+    // jitter instability over consecutive frames).
+    const bool stillSweep = f[col["moving"]] != "1" && filter != "fixed-function-blit" && filter.rfind("ghost ", 0) != 0 &&
+                            filter.rfind("motion-blur", 0) != 0;
+    const double instability = Parse(f[col["instability_rms"]]);
+    if ((f[col["moving"]] == "1" || stillSweep) && !(instability >= 0 && std::isfinite(instability)))
+      Fail(where + ": instability not a finite, non-negative number ('" + f[col["instability_rms"]] + "')");
+    if (filter == "native" && f[col["moving"]] != "1" && !(instability == 0))
+      Fail(where + ": native on a still camera changes between frames (instability " + f[col["instability_rms"]] + ")");
     if (filter.rfind("ghost ", 0) == 0) {
       ++ghostRows;
       const double g = col.count("ghost_fraction") ? Parse(f[col["ghost_fraction"]]) : std::nan("");
@@ -196,18 +247,7 @@ int main(int argc, char** argv) {
       Fail("fixed-function-blit PSNR " + std::to_string(psnr) + " is not within 1 dB of bilinear's " +
            std::to_string(bilinearPsnr[scale]) + " at scale " + std::to_string(scale));
 
-  // JSON: the repeat row is identical, zero validation messages, row count.
-  const size_t rr = json.find("\"filter\": \"reference-repeat\"");
-  if (rr == std::string::npos) Fail("results.json has no reference-repeat row");
-  else {
-    const size_t end = json.find('\n', rr);
-    if (json.substr(rr, end - rr).find("\"identical\": true") == std::string::npos)
-      Fail("results.json: reference-repeat is not \"identical\": true");
-  }
-  if (json.find("\"validation_messages\": 0,") == std::string::npos) Fail("results.json: validation messages are not 0");
-  size_t jsonRows = 0;
-  for (size_t p = json.find("{\"view\": "); p != std::string::npos; p = json.find("{\"view\": ", p + 1)) ++jsonRows;
-  if (jsonRows != rows) Fail("results.json has " + std::to_string(jsonRows) + " rows, results.csv " + std::to_string(rows));
+  CheckJson(json, rows);
   for (const char* section : {"ratio to blit", "### Claims", "### Ghosting", "### Still camera", "### Moving camera",
                               "### Ablations", "### Iso-time"})
     if (summary.find(section) == std::string::npos) Fail(std::string("summary.md lacks '") + section + "'");
