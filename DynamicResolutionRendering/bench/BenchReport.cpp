@@ -461,7 +461,7 @@ void BenchResults::Add(BenchRow row) {
 }
 
 std::string FlipName(const BenchResults& res) {
-  return "FLIP (" + (std::isfinite(res.flipPpd) ? Num(res.flipPpd, 2) : std::string("67, not recorded")) + " ppd)";
+  return std::isfinite(res.flipPpd) ? "FLIP (" + Num(res.flipPpd, 2) + " ppd)" : std::string("FLIP (67 ppd, before the ppd field)");
 }
 
 double ArticleScaleRatio(const std::string& filter) {

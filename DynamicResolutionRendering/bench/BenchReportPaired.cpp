@@ -53,6 +53,12 @@ MeanCi MovingDifference(const BenchRow* a, const BenchRow* b, const Metric& m, d
   return PairedDifferenceCi(m.frames(*a), scaled, kFrameBlocks);
 }
 
+// Both differences have an interval (a run without per-frame values has none).
+bool Measured(const MeanCi& a, const MeanCi& b) {
+  return std::isfinite(a.mean) && std::isfinite(a.halfWidth) && std::isfinite(b.mean) && std::isfinite(b.halfWidth);
+}
+constexpr const char* kNoFrames = "cannot decide (no per-frame values, or fewer than 2 blocks)";
+
 std::string Interval(const MeanCi& d, int decimals) {
   return FormatCell(d.mean, decimals) + " ± " + FormatCell(d.halfWidth, decimals);
 }
@@ -75,7 +81,9 @@ void ClaimTaaNearNative(const BenchResults& res, std::ostringstream& md) {
   std::ostringstream o;
   o << "moving x" << FormatCell(speed, 2) << ", paired per frame (" << kFrameBlocks << " blocks): native - taa 0.71 PSNR "
     << Interval(dp, 2) << " dB (threshold 1.5); taa FLIP - 1.1 x native's " << Interval(df, 4) << " (threshold 0)";
-  const std::string v = !t71 || !nat ? "cannot measure (no moving rows)" : Decide(-SideOf(dp, 1.5), -SideOf(df, 0.0));
+  const std::string v = !t71 || !nat        ? "cannot measure (no moving rows)"
+                        : !Measured(dp, df) ? kNoFrames
+                                            : Decide(-SideOf(dp, 1.5), -SideOf(df, 0.0));
   ClaimLine(md, "TAA at 0.71x gives almost full-resolution quality (moving camera)", o.str(), v);
 }
 
@@ -89,7 +97,7 @@ void ClaimTaaBeatsNative(const BenchResults& res, std::ostringstream& md) {
     if (!t || !nat) continue;
     const MeanCi dp = MovingDifference(t, nat, kPsnr), df = MovingDifference(t, nat, kFlip);
     o << name << " 1.0 - native, paired per frame: PSNR " << Interval(dp, 2) << " dB, FLIP " << Interval(df, 4) << "; ";
-    v += std::string(name) + ": " + Decide(SideOf(dp, 0.0), -SideOf(df, 0.0)) + "; ";
+    v += std::string(name) + ": " + (Measured(dp, df) ? Decide(SideOf(dp, 0.0), -SideOf(df, 0.0)) : kNoFrames) + "; ";
   }
   ClaimLine(md, "TAA at >= 1.0x acts as anti-aliasing (better than native)", o.str(),
             v.empty() ? "cannot measure (no moving rows)" : v);
@@ -131,6 +139,10 @@ void ClaimBicubicQuality(const BenchResults& res, std::ostringstream& md) {
   const double speed = ReportSpeed(res);
   for (float s : res.plan->movingScales) {
     const BenchRow *bc = MovingRow(res, speed, "bicubic", s), *bl = MovingRow(res, speed, "bilinear", s);
+    if (bc && bl && (bc->framePsnr.empty() || bl->framePsnr.empty())) {
+      o << "moving " << FormatCell(s, 2) << ": no per-frame values in this run; ";
+      continue;
+    }
     Judge(MovingDifference(bc, bl, kPsnr), MovingDifference(bc, bl, kFlip), "moving " + FormatCell(s, 2) + " (per frame)", o, &t);
   }
   std::string v = "better at " + std::to_string(t.better) + ", worse at " + std::to_string(t.worse) +
