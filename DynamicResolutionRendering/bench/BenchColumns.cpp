@@ -100,6 +100,19 @@ double ParseNumber(const std::string& s) {
   return end && *end == 0 ? v : std::nan("");
 }
 
+std::vector<std::string> SplitCsvLine(const std::string& line) {
+  std::vector<std::string> f;
+  std::string cur;
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    else if (c == ',' && !quoted) f.push_back(cur), cur.clear();
+    else if (c != '\r') cur += c;
+  }
+  f.push_back(cur);
+  return f;
+}
+
 std::string CsvHeader() {
   std::string h;
   for (const BenchColumn& c : BenchColumns()) h += (h.empty() ? "" : ",") + std::string(c.name);

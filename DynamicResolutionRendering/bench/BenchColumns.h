@@ -32,6 +32,9 @@ std::string FormatNumber(double v, int decimals);
 // The inverse: "" -> NaN, "inf"/"-inf", else the number (NaN when not one).
 double ParseNumber(const std::string& s);
 
+// The fields of one CSV line; a field may be double-quoted (no quotes inside).
+std::vector<std::string> SplitCsvLine(const std::string& line);
+
 std::string CsvHeader();
 std::string CsvLine(const BenchRow& row);
 // One row object; "identical" (valid and MSE 0) and the per-frame values are

@@ -9,23 +9,6 @@
 #include "bench/BenchCommon.h"
 
 namespace drr {
-namespace {
-
-std::vector<std::string> SplitCsvLine(const std::string& line) {
-  std::vector<std::string> f;
-  std::string cur;
-  bool quoted = false;
-  for (char c : line) {
-    if (c == '"') quoted = !quoted;
-    else if (c == ',' && !quoted) f.push_back(cur), cur.clear();
-    else if (c != '\r') cur += c;
-  }
-  f.push_back(cur);
-  return f;
-}
-
-}  // namespace
-
 bool ReloadBenchResults(const std::string& dir, BenchResults* res, std::string* error) {
   std::ifstream csv(dir + "/results.csv"), json(dir + "/results.json");
   if (!csv || !json) {

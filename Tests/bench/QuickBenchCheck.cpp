@@ -27,6 +27,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bench/BenchColumns.h"
+
 namespace {
 
 int g_failures = 0;
@@ -44,29 +46,10 @@ bool ReadFile(const std::string& path, std::string* out) {
   return true;
 }
 
-// One CSV line; fields may be double-quoted (no escaped quotes in ours).
-std::vector<std::string> SplitCsv(const std::string& line) {
-  std::vector<std::string> f;
-  std::string cur;
-  bool quoted = false;
-  for (char c : line) {
-    if (c == '"') quoted = !quoted;
-    else if (c == ',' && !quoted) f.push_back(cur), cur.clear();
-    else if (c != '\r') cur += c;
-  }
-  f.push_back(cur);
-  return f;
-}
-
-// "" -> NaN, "inf" -> +inf, else the number (NaN if not a number).
-double Parse(const std::string& s) {
-  if (s.empty()) return std::nan("");
-  if (s == "inf") return INFINITY;
-  if (s == "-inf") return -INFINITY;
-  char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  return end && *end == 0 ? v : std::nan("");
-}
+// The CSV as the bench writes it (BenchColumns.h): fields, and numbers with
+// "" for NaN and "inf" for infinity.
+std::vector<std::string> SplitCsv(const std::string& line) { return drr::SplitCsvLine(line); }
+double Parse(const std::string& s) { return drr::ParseNumber(s); }
 
 // results.json: the repeat row is identical, zero validation messages, the
 // run complete, as many rows as the CSV, FLIP's pixels per degree that of the
