@@ -364,18 +364,10 @@ void WriteGhosting(const BenchResults& res, std::ostringstream& md) {
                                                       : " (expected taa-basic)\n\n");
 }
 
-bool WriteSummary(const BenchResults& res, const std::string& path, std::string* error) {
+// The still PSNR table and the scale-pass cost table with the blit and the
+// bandwidth bound.
+void WritePsnrAndCost(const BenchResults& res, std::ostringstream& md) {
   const BenchPlan& plan = *res.plan;
-  std::ostringstream md;
-  md << "## " << (plan.quick ? "Quick" : "Full") << " sweep on " << res.adapter << "\n\n"
-     << "Driver " << res.driver << ", " << Today() << ", back buffer " << plan.base.width << "x"
-     << plan.base.height << ", reference " << plan.referenceFactor << "x"
-     << plan.referenceFactor << " super sampling, " << plan.warmupFrames << " warm-up frames (at least "
-     << plan.warmupMs << " ms) + "
-     << plan.measuredFrames << " measured frames per configuration, " << res.rows.size()
-     << " configurations in " << Num(res.seconds, 1) << " s, " << res.validationMessages
-     << " validation messages.\n\n";
-
   md << "### PSNR (dB, mean over views) by filter and scale\n\n| filter |";
   for (float s : plan.scales) md << ' ' << Num(s, 2) << " |";
   md << "\n| --- |";
@@ -421,6 +413,21 @@ bool WriteSummary(const BenchResults& res, const std::string& path, std::string*
   for (float s : plan.scales)
     md << ' ' << Num(s, 2) << ": " << Num(MeanPsnr(res, kFixedBlit, s), 2) << " dB;";
   md << "\n\n";
+}
+
+bool WriteSummary(const BenchResults& res, const std::string& path, std::string* error) {
+  const BenchPlan& plan = *res.plan;
+  std::ostringstream md;
+  md << "## " << (plan.quick ? "Quick" : "Full") << " sweep on " << res.adapter << "\n\n"
+     << "Driver " << res.driver << ", " << Today() << ", back buffer " << plan.base.width << "x"
+     << plan.base.height << ", reference " << plan.referenceFactor << "x"
+     << plan.referenceFactor << " super sampling, " << plan.warmupFrames << " warm-up frames (at least "
+     << plan.warmupMs << " ms) + "
+     << plan.measuredFrames << " measured frames per configuration, " << res.rows.size()
+     << " configurations in " << Num(res.seconds, 1) << " s, " << res.validationMessages
+     << " validation messages.\n\n";
+
+  WritePsnrAndCost(res, md);
   WriteStillQuality(res, md);
   WriteMovingQuality(res, md);
   WriteAblations(res, md);
