@@ -192,6 +192,70 @@ void MeasureClaims(ViewRun& view, const Options& o) {
 // sample sets animation time = max(time, 0) + frameCount * fixedDt, so with
 // time = ghostTime - (frameCount at capture) * fixedDt the captured frame is
 // at ghostTime exactly, and the reference is rendered there.
+struct GhostRun {
+  const BenchPlan& plan;
+  Sample& sample;
+  const ImageF& reference;
+  std::string viewName;
+  Progress* progress;
+  bool exact = true;  // every capture at plan.ghostTime
+
+  // plan.ghostFrames moving frames of `s`, then the capture at ghostTime.
+  BenchRow Run(const std::string& name, Options s, Image* image) {
+    const int n = plan.ghostFrames;
+    s.camera = 1;  // cinematic
+    s.fixedDt = plan.ghostStep;
+    const int64_t captureFrame = sample.FrameCount() + n;  // n frames, then the capture
+    s.time = plan.ghostTime - double(captureFrame) * plan.ghostStep;
+    BenchRow row = Measure(sample, plan, s, viewName, name, s.scaleX, reference, 0, n, image);
+    row.animTime = std::max(s.time, 0.0) + double(captureFrame) * s.fixedDt;
+    exact = exact && std::abs(row.animTime - plan.ghostTime) < 1e-9;
+    progress->Step(viewName + " " + name);
+    return row;
+  }
+};
+
+void MeasureGhosting(GhostRun& run, const Options& o, BenchResults* results) {
+  const int n = run.plan.ghostFrames;
+  for (Filter f : {Filter::Point, Filter::TAA, Filter::TAABasic, Filter::TAANoiseOffset}) {
+    Options s = o;
+    s.dynamicResolution = true;
+    s.motionBlur = false;  // isolates the history: the reference has no motion blur
+    s.filter = f;
+    s.scaleX = s.scaleY = 0.71f;
+    Image image, still;
+    BenchRow row = run.Run(std::string("ghost ") + FilterOption(f), s, &image);
+    // The same filter settled on the same animation time (camera held
+    // still): the difference is what the motion adds (ghost trails), not
+    // the filter's spatial error.
+    Options h = s;
+    h.fixedDt = 0.0;
+    h.time = run.plan.ghostTime;
+    // An even number of frames between the two captures keeps the TAA
+    // jitter phase (the final RT index flips every frame) the same.
+    const int stillFrames = n + ((n + 1) % 2);
+    Measure(run.sample, run.plan, h, run.viewName, "still", 0.71, run.reference, 0, stillFrames, &still);
+    run.progress->Step(run.viewName + " still " + FilterOption(f));
+    row.ghostFraction = FractionAbove(ToImage(image), ToImage(still), 0.1f);
+    results->Add(row);
+  }
+}
+
+void MeasureMotionBlurClaim(GhostRun& run, Options s, BenchResults* results) {
+  s.dynamicResolution = false;
+  s.motionBlur = true;
+  s.filter = Filter::Point;
+  Image nativeImage, scaledImage;
+  BenchRow native = run.Run("motion-blur native", s, &nativeImage);
+  s.dynamicResolution = true;
+  s.filter = Filter::Bilinear;
+  s.scaleX = s.scaleY = 0.71f;
+  BenchRow scaled = run.Run("motion-blur 0.71", s, &scaledImage);
+  scaled.psnrVsNative = CompareImages(ToImage(scaledImage), ToImage(nativeImage)).psnr;
+  results->Add(native);
+  results->Add(scaled);
+}
+
 bool MeasureMoving(const BenchPlan& plan, BenchResults* results, Progress* progress, std::string* error) {
   const BenchView refView{1, plan.ghostTime, "cinematic moving t=" + Num2(plan.ghostTime)};
   ImageF reference;
@@ -202,69 +266,12 @@ bool MeasureMoving(const BenchPlan& plan, BenchResults* results, Progress* progr
   o.superSampling = false;
   Sample sample;
   if (sample.Init(o, error) != 0) return false;
-  const int n = plan.ghostFrames;
-  auto moving = [&](Options s) {
-    s.camera = 1;  // cinematic
-    s.fixedDt = plan.ghostStep;
-    const int64_t captureFrame = sample.FrameCount() + n;  // n frames, then the capture
-    s.time = plan.ghostTime - double(captureFrame) * plan.ghostStep;
-    return s;
-  };
-  auto animTime = [&](const Options& s, int64_t captureFrame) {
-    return std::max(s.time, 0.0) + double(captureFrame) * s.fixedDt;
-  };
-  bool exact = true;
-  auto run = [&](const std::string& name, Options s, Image* image) {
-    s = moving(s);
-    const int64_t captureFrame = sample.FrameCount() + n;
-    BenchRow row = Measure(sample, plan, s, refView.name, name, s.scaleX, reference, 0, n, image);
-    row.animTime = animTime(s, captureFrame);
-    exact = exact && std::abs(row.animTime - plan.ghostTime) < 1e-9;
-    progress->Step(refView.name + " " + name);
-    return row;
-  };
-  if (plan.ghosting) {
-    for (Filter f : {Filter::Point, Filter::TAA, Filter::TAABasic, Filter::TAANoiseOffset}) {
-      Options s = o;
-      s.dynamicResolution = true;
-      s.motionBlur = false;  // isolates the history: the reference has no motion blur
-      s.filter = f;
-      s.scaleX = s.scaleY = 0.71f;
-      Image image, still;
-      BenchRow row = run(std::string("ghost ") + FilterOption(f), s, &image);
-      // The same filter settled on the same animation time (camera held
-      // still): the difference is what the motion adds (ghost trails), not
-      // the filter's spatial error.
-      Options h = s;
-      h.fixedDt = 0.0;
-      h.time = plan.ghostTime;
-      // An even number of frames between the two captures keeps the TAA
-      // jitter phase (the final RT index flips every frame) the same.
-      const int stillFrames = n + ((n + 1) % 2);
-      Measure(sample, plan, h, refView.name, "still", 0.71, reference, 0, stillFrames, &still);
-      progress->Step(refView.name + " still " + FilterOption(f));
-      row.ghostFraction = FractionAbove(ToImage(image), ToImage(still), 0.1f);
-      results->Add(row);
-    }
-  }
-  if (plan.claims) {
-    Options s = o;
-    s.dynamicResolution = false;
-    s.motionBlur = true;
-    s.filter = Filter::Point;
-    Image nativeImage, scaledImage;
-    BenchRow native = run("motion-blur native", s, &nativeImage);
-    s.dynamicResolution = true;
-    s.filter = Filter::Bilinear;
-    s.scaleX = s.scaleY = 0.71f;
-    BenchRow scaled = run("motion-blur 0.71", s, &scaledImage);
-    scaled.psnrVsNative = CompareImages(ToImage(scaledImage), ToImage(nativeImage)).psnr;
-    results->Add(native);
-    results->Add(scaled);
-  }
+  GhostRun run{plan, sample, reference, refView.name, progress};
+  if (plan.ghosting) MeasureGhosting(run, o, results);
+  if (plan.claims) MeasureMotionBlurClaim(run, o, results);
   results->validationMessages += sample.ValidationMessages();
   sample.Shutdown();
-  if (!exact) {
+  if (!run.exact) {
     *error = "the moving camera's captured frame is not at the reference time (ghostTime too small "
              "for the frames rendered before it?)";
     return false;
