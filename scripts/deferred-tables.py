@@ -10,9 +10,9 @@ DOC it exits 1 when DOC's table is not the one the data gives.
 Cell: PSNR against the renderer's own reference (mean over rounds); GPU frame time
 (median over rounds of each row's median); for the deferred columns the ratio of that
 median to the forward one (so the two agree) and, in brackets, the range over rounds of
-the same round's ratio. A ratio is marked "?" when the forward column's own spread over
-rounds (largest / smallest of its medians) is larger than the ratio's distance from 1:
-repeated runs of one configuration differ by more than the effect.
+the same round's ratio. A ratio is marked "?" when the spread over rounds of either
+column (largest / smallest of its medians) reaches the ratio's distance from 1:
+repeated runs of one configuration differ by as much as the effect.
 
 Usage: scripts/deferred-tables.py DIR [--write|--check Docs/Deferred.md]
 """
@@ -57,7 +57,8 @@ def cell(runs, renderer, key):
     fwd = [float(r[key]["gpu_frame_ms"]) for r in runs["forward"]]
     ratio = frame / st.median(fwd)
     per_round = [float(r["gpu_frame_ms"]) / f for r, f in zip(got, fwd)]
-    spread = max(fwd) / min(fwd)
+    mine = [float(r["gpu_frame_ms"]) for r in got]
+    spread = max(max(fwd) / min(fwd), max(mine) / min(mine))
     mark = "" if abs(ratio - 1) > spread - 1 else "?"
     return text + f", x{ratio:.2f}{mark} ({min(per_round):.2f}-{max(per_round):.2f})", frame
 
