@@ -146,6 +146,12 @@ json RowJson(const BenchRow& row) {
     for (double v : row.frameFlip) f["flip"].push_back(JsonNumber(v, 6));
     for (double v : row.frameInstability) f["instability_rms"].push_back(JsonNumber(v, 6));
   }
+  if (!row.roundFrameMs.empty()) {
+    json& r = j["per_round"];
+    for (double v : row.roundFrameMs) r["gpu_frame_ms"].push_back(JsonNumber(v, 4));
+    for (double v : row.roundClearMs) r["gpu_clear_ms"].push_back(JsonNumber(v, 4));
+    for (double v : row.roundScaleMs) r["gpu_scale_ms"].push_back(JsonNumber(v, 4));
+  }
   return j;
 }
 

@@ -121,7 +121,9 @@ void FillGpuTimes(const std::vector<std::vector<FrameRecord>>& rounds, BenchRow*
   std::vector<double> f, c, sc, p, scl, wall;
   // A result lags gpuFrameDelay frames; a record without a new result
   // repeats an older one and is not a sample.
+  row->roundFrameMs.clear(), row->roundClearMs.clear(), row->roundScaleMs.clear();
   for (const std::vector<FrameRecord>& records : rounds) {
+  const size_t before = f.size();
   const int64_t firstMeasured = records.empty() ? 0 : records.front().frame;
   for (const FrameRecord& r : records) {
     wall.push_back(r.cpuFrameMs);
@@ -132,6 +134,14 @@ void FillGpuTimes(const std::vector<std::vector<FrameRecord>>& rounds, BenchRow*
     p.push_back(r.gpuPostP);
     scl.push_back(r.gpuScale);
   }
+  if (rounds.size() > 1) {
+    auto median = [&](const std::vector<double>& v) {
+      return Percentile(std::vector<double>(v.begin() + std::ptrdiff_t(before), v.end()), 0.5);
+    };
+    row->roundFrameMs.push_back(median(f));
+    row->roundClearMs.push_back(median(c));
+    row->roundScaleMs.push_back(median(scl));
+  }
   }
   row->gpuSamples = int(f.size());
   row->gpuFrame = Summarise(f);
@@ -140,6 +150,14 @@ void FillGpuTimes(const std::vector<std::vector<FrameRecord>>& rounds, BenchRow*
   row->gpuPost = Summarise(p);
   row->gpuScale = Summarise(scl);
   row->wall = Summarise(wall);
+}
+
+double RoundSpread(const std::vector<double>& perRound) {
+  double lo = INFINITY, hi = -INFINITY;
+  int n = 0;
+  for (double v : perRound)
+    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v), ++n;
+  return n >= 2 ? hi - lo : std::nan("");
 }
 
 Progress::Progress(size_t total) : total_(total), tty_(isatty(2)) {}

@@ -50,6 +50,9 @@ Options ViewOptions(const BenchPlan& plan, const BenchView& view);
 // `rounds`: runs of consecutive frames (the delay check is per run).
 void FillGpuTimes(const std::vector<std::vector<FrameRecord>>& rounds, BenchRow* row);
 
+// Largest minus smallest of the finite per-round medians (NaN with fewer than 2).
+double RoundSpread(const std::vector<double>& perRound);
+
 class Progress {
  public:
   explicit Progress(size_t total);

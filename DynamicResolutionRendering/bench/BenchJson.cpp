@@ -81,6 +81,12 @@ bool ReadBenchJsonFrames(const json& j, BenchResults* res, std::string* error) {
     return false;
   }
   for (size_t i = 0; i < res->rows.size(); ++i) {
+    const auto rounds = (*rows)[i].find("per_round");
+    if (rounds != (*rows)[i].end() && rounds->is_object()) {
+      res->rows[i].roundFrameMs = Numbers(*rounds, "gpu_frame_ms");
+      res->rows[i].roundClearMs = Numbers(*rounds, "gpu_clear_ms");
+      res->rows[i].roundScaleMs = Numbers(*rounds, "gpu_scale_ms");
+    }
     const auto frames = (*rows)[i].find("per_frame");
     if (frames == (*rows)[i].end() || !frames->is_object()) continue;
     res->rows[i].framePsnr = Numbers(*frames, "psnr_db");

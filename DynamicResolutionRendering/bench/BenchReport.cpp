@@ -12,6 +12,7 @@
 #include "analysis/Plot.h"
 #include "bench/Bench.h"
 #include "bench/BenchColumns.h"
+#include "bench/BenchCommon.h"
 #include "bench/BenchReportSections.h"
 
 namespace drr {
@@ -234,6 +235,18 @@ void ClaimScalePassRatios(const BenchResults& res, std::ostringstream& md) {
   ClaimLine(md, "TAA (the velocity-reading one) costs 2.75x point", o2.str(), v);
 }
 
+// A time verdict only where the difference of two rows is larger than the
+// spread of either row over its interleaved timing rounds: else the reason
+// it cannot decide ("" when it can).
+std::string InsideRoundSpread(double difference, const std::vector<double>& a, const std::vector<double>& b) {
+  const double spread = std::max(RoundSpread(a), RoundSpread(b));
+  if (!std::isfinite(RoundSpread(a)) || !std::isfinite(RoundSpread(b)))
+    return "cannot decide (fewer than 2 timing rounds: no spread of repeated runs)";
+  if (std::abs(difference) > spread) return "";
+  return "cannot decide (the difference, " + Num(std::abs(difference), 3) + " ms, is inside the spread of repeated rounds, " +
+         Num(spread, 3) + " ms)";
+}
+
 void ClaimPsClear(const BenchResults& res, std::ostringstream& md) {
   const BenchRow* api = FindRow(res, "point api-clear");
   const BenchRow* ps = FindRow(res, "point ps-clear");
@@ -241,8 +254,10 @@ void ClaimPsClear(const BenchResults& res, std::ostringstream& md) {
   std::ostringstream o;
   o << "clear: ps " << Num(p, 3) << " vs api " << Num(a, 3) << " (frame " << Num(Median(ps, &BenchRow::gpuFrame), 3)
     << " vs " << Num(Median(api, &BenchRow::gpuFrame), 3) << ")";
+  const std::string noise = InsideRoundSpread(p - a, api ? api->roundClearMs : std::vector<double>{},
+                                              ps ? ps->roundClearMs : std::vector<double>{});
   ClaimLine(md, "Pixel-shader clear of the viewport beats the API clear at 0.71x", o.str(),
-            !(std::isfinite(a) && std::isfinite(p)) ? "cannot measure" : p < a ? "agree" : "disagree");
+            !(std::isfinite(a) && std::isfinite(p)) ? "cannot measure" : !noise.empty() ? noise : p < a ? "agree" : "disagree");
 }
 
 // Super sampling: is the extra cost mostly clears?
@@ -276,8 +291,13 @@ void ClaimFastTaa(const BenchResults& res, std::ostringstream& md) {
   std::ostringstream o;
   o << "scale pass: fast " << Num(fast, 3) << ", velocity-reading " << Num(vel, 3) << "; saving "
     << Num(100 * saving, 0) << " %";
+  const BenchRow* fastRow = FindRow(res, "taa fast (motion blur on)");
+  const BenchRow* velRow = FindRow(res, "taa velocity (motion blur off)");
+  const std::string noise = InsideRoundSpread(fast - vel, fastRow ? fastRow->roundScaleMs : std::vector<double>{},
+                                              velRow ? velRow->roundScaleMs : std::vector<double>{});
   ClaimLine(md, "Fast TAA (velocity in motion-blur alpha) ~40 % faster than the velocity-reading TAA", o.str(),
             !std::isfinite(saving) ? "cannot measure"
+            : !noise.empty()       ? noise
             : std::abs(saving - 0.40) <= 0.15 ? "agree (within 15 points of 40 %)"
                                                : "disagree (not within 15 points of 40 %)");
 }

@@ -56,6 +56,9 @@ struct BenchRow {
   // Moving rows: the per-frame values behind the means (results.json only),
   // instability from the second frame on. Empty on still rows (one per view).
   std::vector<double> framePsnr, frameFlip, frameInstability;
+  // Interleaved timing: the median of each round (results.json only), so a
+  // time verdict can be held against the spread of repeated rounds.
+  std::vector<double> roundFrameMs, roundClearMs, roundScaleMs;
 };
 
 // Filter names of the rows that are not part of the filter x scale sweep.

@@ -56,3 +56,14 @@ TEST(PairedInterval, NonFinitePairsAreLeftOut) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(RoundSpread, LargestMinusSmallestOfTheFiniteRounds) {
+  EXPECT_DOUBLE_EQ(drr::RoundSpread({1.5, 3.0, 2.0}), 1.5);
+  EXPECT_DOUBLE_EQ(drr::RoundSpread({1.5, NAN, 2.0}), 0.5);
+  EXPECT_TRUE(std::isnan(drr::RoundSpread({1.5})));  // one round: no spread of repeated runs
+  EXPECT_TRUE(std::isnan(drr::RoundSpread({})));
+}
+
+}  // namespace
