@@ -484,12 +484,19 @@ CameraPose Scene::Camera(int i) const {
     // model's own cameras (the port's addition) keep their field of view.
     if (c.fileFov && cd.fovY > glm::radians(1.f) && cd.fovY < glm::radians(170.f)) pose.fovY = cd.fovY;
   } else {
-    // The original views from its camera model's last node with a mesh.
+    // The original views from its camera model's last node with a mesh, with the inverse of its
+    // world matrix: a frame scaled by s (its files' cameras: 10) divides view depths by s, which
+    // moves its 20 / 400000 clip planes to 20 s / 400000 s in world units.
     for (size_t n = e.model.nodes.size(); n-- > 0;)
       if (!e.model.nodes[n].meshes.empty() && n < e.globals.size()) {
         w = w * e.globals[n];
         break;
       }
+    const float depthScale = glm::length(glm::vec3(w[2]));
+    if (std::isfinite(depthScale) && depthScale > 1e-3f && depthScale < 1e3f) {
+      pose.nearZ *= depthScale;
+      pose.farZ *= depthScale;
+    }
   }
   glm::vec3 wp = glm::vec3(w * glm::vec4(p, 1.f));
   glm::vec3 wf = glm::normalize(glm::vec3(w * glm::vec4(look, 0.f)));

@@ -162,8 +162,11 @@ TEST(GuiText, HelpLinesAndFixHelpText) {
   fix.Set(Fix::HelpText, true);
   std::vector<std::string> fixed = HelpLines(fix);
   ASSERT_EQ(fixed.size(), original.size());
-  for (size_t i = 0; i < original.size(); ++i)
-    if (i != 2 && i != 3) EXPECT_EQ(fixed[i], original[i]) << i;
+  for (size_t i = 0; i < original.size(); ++i) {
+    if (i != 2 && i != 3) {
+      EXPECT_EQ(fixed[i], original[i]) << i;
+    }
+  }
   EXPECT_EQ(fixed[2], "Reload shaders: F4");
   EXPECT_EQ(fixed[3], "Zoom box centre: Right Mouse Button");
   // Other fixes leave the help alone.
