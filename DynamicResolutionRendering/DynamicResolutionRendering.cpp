@@ -57,7 +57,11 @@ int Sample::Init(const Options& options, std::string* error) {
   m_Gui.enabled = options.gui;
 
   if (!m_Device.Create(options.validation, m_Window, options.width, options.height, error)) return 1;
-  if (!m_Passes.Init(m_Device.Device(), m_Shaders, error)) return 1;
+  if (!m_Profiler.Init(m_Device.Device())) {
+    *error = "cannot create the GPU timer queries";
+    return 1;
+  }
+  if (!m_Passes.Init(m_Device.Device(), m_Shaders, &m_Profiler, error)) return 1;
   if (!m_Deferred.Init(m_Device.Device(), m_Shaders, error)) return 1;
   if (!LoadScene(error)) return 1;
   if (options.camera >= m_Cameras.Count()) {
@@ -320,7 +324,7 @@ void Sample::ControlResolution(double innerFrameSeconds, double frameSeconds, do
 // Which law runs when, on which GPU result (Feed in ResolutionController.h).
 void Sample::RunResolutionControl() {
   if (!m_Options.dynamicResolution || m_Options.control == ControlMode::Manual) return;
-  const AveragedGPUTimer& timer = m_Passes.Timers().frame;
+  const AveragedGPUTimer& timer = m_Profiler.Timers().frame;
   if (FeedFor(m_Options.law) == Feed::Original) {
     // The original: every frame from the first, on the 10-result average of
     // the inner-frame timer (0 until the first average) and 1 / DXUTGetFPS(),
@@ -337,13 +341,12 @@ void Sample::RunResolutionControl() {
       m_Controller = MakeController(m_Options.law, m_LawLatency);
     }
     // The result measured frame m_FrameCount - delay, rendered at that frame's scale.
-    const double measuredScale = m_Log.ScaleOfFrame(m_FrameCount - int64_t(timer.LastDelayFrames()));
-    ControlResolution(timer.LastMs() / 1000.0, m_LastFrameSeconds, measuredScale);
+    ControlResolution(timer.LastMs() / 1000.0, m_LastFrameSeconds, m_Profiler.ScaleOfLastResult(m_FrameCount));
   }
 }
 
 void Sample::UpdateStats() {
-  const FrameTimers& t = m_Passes.Timers();
+  const FrameTimers& t = m_Profiler.Timers();
   m_Stats.timing = {t.frame.AverageMs(), t.clear.AverageMs(), t.scene.AverageMs(), t.postP.AverageMs(),
                     t.scale.AverageMs(), m_RefreshHz};
   m_Stats.scaleX = m_DynamicResolution.GetScaleX();
@@ -417,8 +420,8 @@ void Sample::OnFrameRender(double elapsed) {
     InitDynamicResolution();
     if (TAAActive()) m_History.current = 1;
   }
-  FrameTimers& timers = m_Passes.Timers();
-  timers.Update(ctx);
+  FrameTimers& timers = m_Profiler.Timers();
+  m_Profiler.Poll(ctx);
   RunResolutionControl();
   if (timers.scene.NewAverage()) UpdateStats();  // as the original: after the control, when the scene timer completes a block
 
@@ -433,7 +436,7 @@ void Sample::OnFrameRender(double elapsed) {
   timers.frame.Start(ctx);
   m_Passes.Clear(ctx, setup, m_Targets, scene);
   if (m_Targets.Plan().deferred) m_Deferred.Render(ctx, setup, scene, m_Targets, *m_Scene, params,
-                                                   MakeDeferredFrame(setup), m_Passes);
+                                                   MakeDeferredFrame(setup), m_Profiler);
   else m_Passes.Scene(ctx, setup, scene, *m_Scene, params);
   m_ResetVelocityHistory = false;
   if (m_Log.Capturing()) {
@@ -516,7 +519,7 @@ void Sample::RenderGui(double elapsed) {
   }
   v.apply = [this](const Options& o) { ApplySettings(o); };
   m_Gui.Build(v);
-  if (m_Gui.Drawn()) m_Passes.CountPass("GUI");
+  if (m_Gui.Drawn()) m_Profiler.CountPass("GUI");
   const d3dl::VIEWPORT viewport{0, 0, float(m_Device.Width()), float(m_Device.Height()), 0, 1};
   m_Gui.Render(m_Device.Context(), m_Device.Back().rtv, viewport);
 }
@@ -535,6 +538,7 @@ bool Sample::RenderFrame() {
   switch (m_Window.BeginFrame(m_FrameCount, m_Options.windowTest, m_Options.width, m_Options.height, &fbW, &fbH)) {
     case AppWindow::Frame::Closed: return false;
     case AppWindow::Frame::Minimised:
+      m_Profiler.EndFrame(m_FrameCount, 0.0f);
       m_Log.AddMinimised(m_FrameCount++, m_Window.Fullscreen());  // render nothing, wait a little
       ++m_MinimisedFrames;
       m_Window.WaitWhileMinimised();
@@ -560,8 +564,9 @@ bool Sample::RenderFrame() {
     return false;
   }
   m_Log.Resolve(m_Device.Device(), m_Device.Context());
+  m_Profiler.EndFrame(m_FrameCount, m_DynamicResolution.GetScaleX());
   m_Log.AddRendered(m_FrameCount++, m_DynamicResolution, m_Options.dynamicResolution, m_Device.Back(),
-                    m_Window.Fullscreen(), elapsed, m_Passes.Timers());
+                    m_Window.Fullscreen(), elapsed, m_Profiler.Timers());
   RunGuiActions();
   return true;
 }
@@ -583,7 +588,7 @@ bool Sample::WriteReport(const std::string& path, std::string* error) const {
   info.dynamicRT[1] = m_DynamicResolution.GetDynamicBufferHeight();
   info.targets = &m_Targets;
   info.zoomBoxBytes = m_Passes.GetZoomBoxBytes();
-  info.passesRun = &m_Passes.PassesRun();
+  info.passesRun = &m_Profiler.PassesRun();
   info.validationMessages = ValidationMessages();
   info.framesRendered = m_FrameCount - m_MinimisedFrames;
   info.framesMinimised = m_MinimisedFrames;
@@ -647,6 +652,7 @@ bool Sample::Shutdown() {
   m_Gui.Release();
   m_Passes.Release();
   m_Deferred.Release();
+  m_Profiler.Release();
   ReleaseDynamicResolution();
   const bool clean = m_Device.Release();
   m_Window.Destroy();

@@ -54,12 +54,6 @@ void FrameLog::AddRendered(int64_t frame, const DynamicResolution& dr, bool dyna
   m_Frames.push_back(r);
 }
 
-double FrameLog::ScaleOfFrame(int64_t frame) const {
-  for (auto it = m_Frames.rbegin(); it != m_Frames.rend() && it->frame >= frame; ++it)  // a few steps back
-    if (it->frame == frame) return it->rendered ? it->scaleX : 0.0;
-  return 0.0;
-}
-
 void FrameLog::AddMinimised(int64_t frame, bool fullscreen) {
   FrameRecord r;
   r.frame = frame;

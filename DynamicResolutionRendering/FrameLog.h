@@ -9,8 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "DeviceResources.h"
 #include "DynamicResolution.h"
-#include "FramePasses.h"
+#include "FrameProfiler.h"
 #include "Options.h"
 #include "Readback.h"
 #include "RenderTargets.h"
@@ -61,9 +62,6 @@ class FrameLog {
                    double elapsedSeconds, const FrameTimers& timers);
   void AddMinimised(int64_t frame, bool fullscreen);
   const std::vector<FrameRecord>& Frames() const { return m_Frames; }
-  // Scale X that rendered frame `frame` used; 0 when no rendered record has
-  // it (so a delayed GPU result can be paired with its own frame's scale).
-  double ScaleOfFrame(int64_t frame) const;
 
   // Captures: requested for the next frame, queued as copies during it,
   // read once the frame was presented.
