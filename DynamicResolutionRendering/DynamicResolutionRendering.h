@@ -25,6 +25,7 @@
 #include "FrameLog.h"
 #include "FrameProfiler.h"
 #include "FramePasses.h"
+#include "FramePlan.h"
 #include "GuiPanel.h"
 #include "Options.h"
 #include "ResolutionController.h"
@@ -132,11 +133,10 @@ class Sample {
 
   bool LoadScene(std::string* error);
   bool ResizeSwapChain(uint32_t w, uint32_t h);
-  bool TAAActive() const;
-  bool FlipsTargets() const;
-  RenderTargetPlan Plan() const;
+  // This frame's plan (FramePlan.h) from the settings and the back buffer.
+  FramePlan PlanNow() const;
   void RunResolutionControl();
-  FrameSetup MakeFrameSetup();
+  FrameSetup MakeFrameSetup(const FramePlan& plan);
   SceneRenderParams SceneParams() const;
   void RenderGui(double elapsed);
   void RunGuiActions();

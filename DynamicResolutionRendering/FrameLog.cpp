@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "Json.h"
 #include "imageio/ImageFile.h"
@@ -51,7 +52,7 @@ void FrameLog::AddRendered(int64_t frame, const DynamicResolution& dr, bool dyna
   r.gpuScene = t.scene.LastMs();
   r.gpuPostP = t.postP.LastMs();
   r.gpuScale = t.scale.LastMs();
-  m_Frames.push_back(r);
+  Add(r);
 }
 
 void FrameLog::AddMinimised(int64_t frame, bool fullscreen) {
@@ -59,7 +60,45 @@ void FrameLog::AddMinimised(int64_t frame, bool fullscreen) {
   r.frame = frame;
   r.rendered = false;
   r.fullscreen = fullscreen;
-  m_Frames.push_back(r);
+  Add(r);
+}
+
+bool FrameLog::SetRecords(FrameRecords mode) {
+  m_Frames.clear();
+  m_Frames.shrink_to_fit();
+  m_Stream.reset();
+  m_StreamFailed = false;
+  m_Mode = mode;
+  if (mode == FrameRecords::Stream) {
+    m_Stream.reset(std::tmpfile());
+    if (!m_Stream) {
+      m_Mode = FrameRecords::Off;
+      return false;
+    }
+  }
+  return true;
+}
+
+void FrameLog::Add(const FrameRecord& r) {
+  if (m_Mode == FrameRecords::Memory) m_Frames.push_back(r);
+  else if (m_Mode == FrameRecords::Stream && std::fwrite(&r, sizeof r, 1, m_Stream.get()) != 1) m_StreamFailed = true;
+}
+
+void FrameLog::ForEachFrame(const std::function<void(const FrameRecord&)>& visit) const {
+  if (m_Mode != FrameRecords::Stream) {
+    for (const FrameRecord& r : m_Frames) visit(r);
+    return;
+  }
+  // Read back in blocks; the file stays positioned at its end for the next Add.
+  std::FILE* f = m_Stream.get();
+  std::fflush(f);
+  const long end = std::ftell(f);
+  std::rewind(f);
+  FrameRecord block[256];
+  size_t n = 0;
+  while ((n = std::fread(block, sizeof(FrameRecord), std::size(block), f)) > 0)
+    for (size_t i = 0; i < n; ++i) visit(block[i]);
+  std::fseek(f, end, SEEK_SET);
 }
 
 bool FrameLog::BeginFrame() {
@@ -110,15 +149,16 @@ bool FrameLog::SaveScreenshot(const std::string& path, bool noGui, std::string* 
 namespace {
 // GPU averages over the frames that received a new result (the records
 // repeat the last result in between); the CPU average over rendered frames.
-double Average(const std::vector<FrameRecord>& frames, double FrameRecord::*m, bool gpu) {
+double Average(const FrameLog& log, double FrameRecord::*m, bool gpu) {
   double s = 0;
-  int n = 0;
-  for (const FrameRecord& r : frames)
+  int64_t n = 0;
+  log.ForEachFrame([&](const FrameRecord& r) {
     if (r.rendered && (!gpu || r.gpuFrameNew) && std::isfinite(r.*m) && r.*m > 0) {
       s += r.*m;
       ++n;
     }
-  return n ? s / n : 0.0;
+  });
+  return n ? s / double(n) : 0.0;
 }
 
 void WriteTargets(JsonWriter& j, const ReportInfo& info) {
@@ -175,12 +215,12 @@ bool FrameLog::WriteReport(const std::string& path, const ReportInfo& info, std:
   j.EndObject();
   j.Value("validation_messages", info.validationMessages);
   j.Value("frames_rendered", info.framesRendered).Value("frames_minimised", info.framesMinimised);
-  j.BeginObject("averages_ms").Inline().Value("cpu_frame", Average(m_Frames, &FrameRecord::cpuFrameMs, false));
-  j.Value("gpu_frame", Average(m_Frames, &FrameRecord::gpuFrame, true));
-  j.Value("clear", Average(m_Frames, &FrameRecord::gpuClear, true));
-  j.Value("scene", Average(m_Frames, &FrameRecord::gpuScene, true));
-  j.Value("postp", Average(m_Frames, &FrameRecord::gpuPostP, true));
-  j.Value("scale", Average(m_Frames, &FrameRecord::gpuScale, true)).EndObject();
+  j.BeginObject("averages_ms").Inline().Value("cpu_frame", Average(*this, &FrameRecord::cpuFrameMs, false));
+  j.Value("gpu_frame", Average(*this, &FrameRecord::gpuFrame, true));
+  j.Value("clear", Average(*this, &FrameRecord::gpuClear, true));
+  j.Value("scene", Average(*this, &FrameRecord::gpuScene, true));
+  j.Value("postp", Average(*this, &FrameRecord::gpuPostP, true));
+  j.Value("scale", Average(*this, &FrameRecord::gpuScale, true)).EndObject();
   j.Pair("final_scale", info.finalScale[0], info.finalScale[1]);
   if (info.scene) {
     const SceneStats st = info.scene->Stats();
@@ -197,9 +237,13 @@ bool FrameLog::WriteReport(const std::string& path, const ReportInfo& info, std:
     for (const std::string& w : *info.warnings) j.Value({}, w);
   j.EndArray();
   j.BeginArray("frames");
-  for (const FrameRecord& r : m_Frames) WriteFrame(j, r);
+  ForEachFrame([&](const FrameRecord& r) { WriteFrame(j, r); });
   j.EndArray().EndObject();
   f.flush();
+  if (m_StreamFailed) {
+    *error = "cannot write " + path + ": the frame records' temporary file failed (disk full?)";
+    return false;
+  }
   if (!f) {
     *error = "cannot write " + path + " (disk full or write error)";
     return false;

@@ -1,11 +1,14 @@
 // What the sample records about its frames and hands to tests, scripts and
-// users: one record per frame, the captures (back buffer with and without the
+// users: one record per frame (kept as FrameRecords says), the captures (back buffer with and without the
 // GUI, the scene's colour and velocity targets), the screenshot and the JSON
 // report.
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
+#include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -55,13 +58,26 @@ struct ReportInfo {
   const std::vector<std::string>* warnings = nullptr;
 };
 
+// Where the per-frame records go. Memory: a vector that in-process callers
+// read (Frames()), for runs of bounded length (tests, the bench). Stream: an
+// anonymous temporary file the report reads back at the end, so resident
+// memory stays flat however long the run; Frames() stays empty. Off: no
+// records (a run without a report).
+enum class FrameRecords { Memory, Stream, Off };
+
 class FrameLog {
  public:
+  // Switches the records' storage; records already kept are dropped.
+  // False (and Off) when the temporary file cannot be created.
+  bool SetRecords(FrameRecords mode);
+  FrameRecords Records() const { return m_Mode; }
   // A rendered frame: scales, viewport, sizes and the latest GPU results.
   void AddRendered(int64_t frame, const DynamicResolution& dr, bool dynamic, const BackBuffer& bb, bool fullscreen,
                    double elapsedSeconds, const FrameTimers& timers);
   void AddMinimised(int64_t frame, bool fullscreen);
   const std::vector<FrameRecord>& Frames() const { return m_Frames; }
+  // Every record kept, in frame order, from memory or the stream.
+  void ForEachFrame(const std::function<void(const FrameRecord&)>& visit) const;
 
   // Captures: requested for the next frame, queued as copies during it,
   // read once the frame was presented.
@@ -81,7 +97,14 @@ class FrameLog {
     d3dl::ComPtr<d3dl::Texture2D> staging;
     Capture kind;
   };
+  void Add(const FrameRecord& r);
+  struct CloseFile {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+  FrameRecords m_Mode = FrameRecords::Memory;
   std::vector<FrameRecord> m_Frames;
+  std::unique_ptr<std::FILE, CloseFile> m_Stream;
+  bool m_StreamFailed = false;
   bool m_Requested = false, m_Capturing = false;
   std::vector<Pending> m_Pending;
   Image m_Captured[int(Capture::Count)];

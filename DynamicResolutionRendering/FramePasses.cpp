@@ -264,7 +264,7 @@ void FramePasses::Clear(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTar
   }
   // None (debug) shows the whole RT. With the fix its final target is zeroed
   // before the scene; the original zeroes it after (MotionBlur).
-  if (s.dynamic && s.filter == Filter::None && s.fixes.Has(Fix::NoneShowsRT)) {
+  if (s.dynamic && KindOf(s.filter) == FilterKind::Debug && s.fixes.Has(Fix::NoneShowsRT)) {
     ctx->ClearRenderTargetView(rts.Final(s.cur).rtv.Get(), kZero);
     CountPass("ClearFinalNone");
   }
@@ -313,7 +313,7 @@ void FramePasses::MotionBlur(d3dl::DeviceContext* ctx, const FrameSetup& s, Rend
   m_Profiler->Timers().postP.Start(ctx);
   // None (debug): the original zeroes the final target here, after the scene
   // drew into it (so without motion blur None shows black; fix none-shows-rt).
-  if (s.dynamic && s.filter == Filter::None && !s.fixes.Has(Fix::NoneShowsRT)) {
+  if (s.dynamic && KindOf(s.filter) == FilterKind::Debug && !s.fixes.Has(Fix::NoneShowsRT)) {
     ctx->ClearRenderTargetView(rts.Final(s.cur).rtv.Get(), kZero);
     CountPass("ClearFinalNone");
   }
@@ -373,8 +373,9 @@ void FramePasses::Resolve(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderT
   ctx->OMSetRenderTargets(1, &target, nullptr);
   ctx->RSSetViewports(1, &s.outputViewport);
   DynamicConstants rc = s.dc;
-  if (s.filter == Filter::None) rc.ratioCurr[0] = rc.ratioCurr[1] = rc.ratioPrev[0] = rc.ratioPrev[1] = 1.0f;
-  if (s.filter == Filter::Noise) {
+  const FilterInfo& filter = GetFilterInfo(s.filter);
+  if (filter.kind == FilterKind::Debug) rc.ratioCurr[0] = rc.ratioCurr[1] = rc.ratioPrev[0] = rc.ratioPrev[1] = 1.0f;
+  if (filter.noisePerFrame) {
     // The original draws a new offset (two rand() calls) each Noise frame.
     const auto offset = m_Noise.NextOffset();
     rc.noiseOffset[0] = offset[0];
@@ -396,7 +397,7 @@ void FramePasses::Resolve(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderT
                                       m_CubicLookup.GetSRV()};
   ctx->PSSetShaderResources(0, 6, srv);
   d3dl::SamplerState* samplers[3] = {
-      GetFilterInfo(s.filter).linearSampler ? m_SamplerLinear.Get() : m_SamplerPoint.Get(), m_SamplerLinear.Get(),
+      filter.linearSampler ? m_SamplerLinear.Get() : m_SamplerPoint.Get(), m_SamplerLinear.Get(),
       m_SamplerLinearWrap.Get()};
   ctx->PSSetSamplers(0, 3, samplers);
   const char* pass = nullptr;

@@ -11,7 +11,8 @@
 #
 # Environment: MATRIX_SIZE (default 320x180), MATRIX_FRAMES (default 20),
 # MATRIX_ONLY (a regex of mode names to run), MATRIX_VALIDATION=1 adds
-# --validation (slower; a message fails the run).
+# --validation (slower; a message fails the run), MATRIX_REPORT=1 writes each
+# mode's JSON report beside its screenshot (its render targets and passes run).
 set -uo pipefail
 if [[ $# -lt 2 ]]; then
   echo "usage: $0 BUILD_DIR OUT_DIR [BASELINE_DIR]" >&2
@@ -86,7 +87,9 @@ for m in "${modes[@]}"; do
   read -r -a extra <<< "${m#*|}"
   [[ -n "${MATRIX_ONLY:-}" && ! "$name" =~ ${MATRIX_ONLY} ]] && continue
   ran=$((ran + 1))
-  if ! "$exe" "${common[@]}" "${extra[@]}" --screenshot "$out/$name.png" > "$out/$name.log" 2>&1; then
+  report=()
+  [[ "${MATRIX_REPORT:-0}" == 1 ]] && report=(--report "$out/$name.json")
+  if ! "$exe" "${common[@]}" "${extra[@]}" "${report[@]}" --screenshot "$out/$name.png" > "$out/$name.log" 2>&1; then
     echo "FAIL run   $name (see $out/$name.log)"
     failed=$((failed + 1))
     continue
