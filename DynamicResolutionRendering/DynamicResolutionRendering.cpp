@@ -581,6 +581,7 @@ bool Sample::WriteReport(const std::string& path, std::string* error) const {
   info.finalScale[1] = m_DynamicResolution.GetScaleY();
   info.scene = m_Scene.get();
   info.warnings = &m_Warnings;
+  info.gui = &m_Gui.Layout();
   return m_Log.WriteReport(path, info, error);
 }
 

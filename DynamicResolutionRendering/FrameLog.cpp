@@ -1,17 +1,12 @@
 #include "FrameLog.h"
 
 #include <algorithm>
-#include <cerrno>
-#include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 
-#include "Json.h"
 #include "imageio/ImageFile.h"
 #include "imageio/Srgb.h"
-#include "scene/Scene.h"
 
 namespace drr {
 
@@ -84,6 +79,13 @@ void FrameLog::Add(const FrameRecord& r) {
   else if (m_Mode == FrameRecords::Stream && std::fwrite(&r, sizeof r, 1, m_Stream.get()) != 1) m_StreamFailed = true;
 }
 
+std::vector<FrameRecord> FrameLog::AllFrames() const {
+  if (m_Mode != FrameRecords::Stream) return m_Frames;
+  std::vector<FrameRecord> all;
+  ForEachFrame([&](const FrameRecord& r) { all.push_back(r); });
+  return all;
+}
+
 void FrameLog::ForEachFrame(const std::function<void(const FrameRecord&)>& visit) const {
   if (m_Mode != FrameRecords::Stream) {
     for (const FrameRecord& r : m_Frames) visit(r);
@@ -144,111 +146,6 @@ bool FrameLog::SaveScreenshot(const std::string& path, bool noGui, std::string* 
   std::vector<uint8_t> opaque = img.pixels;
   for (size_t i = 3; i < opaque.size(); i += 4) opaque[i] = 255;
   return SaveImageRGBA8(path, img.width, img.height, opaque.data(), error);
-}
-
-namespace {
-// GPU averages over the frames that received a new result (the records
-// repeat the last result in between); the CPU average over rendered frames.
-double Average(const FrameLog& log, double FrameRecord::*m, bool gpu) {
-  double s = 0;
-  int64_t n = 0;
-  log.ForEachFrame([&](const FrameRecord& r) {
-    if (r.rendered && (!gpu || r.gpuFrameNew) && std::isfinite(r.*m) && r.*m > 0) {
-      s += r.*m;
-      ++n;
-    }
-  });
-  return n ? s / double(n) : 0.0;
-}
-
-void WriteTargets(JsonWriter& j, const ReportInfo& info) {
-  j.BeginObject("render_targets").Inline();
-  for (int i = 0; i < int(RT::Count); ++i) {
-    const RenderTarget& rt = (*info.targets)[RT(i)];
-    if (!rt.Valid()) continue;
-    j.BeginObject(RenderTargetSet::Name(RT(i)))
-        .Pair("size", rt.width, rt.height)
-        .Value("format", d3dl::FormatName(rt.format))
-        .Value("bytes", rt.Bytes())
-        .EndObject();
-  }
-  if (info.zoomBoxBytes > 0) j.BeginObject("zoom_box_copy").Value("bytes", info.zoomBoxBytes).EndObject();
-  j.EndObject();
-}
-
-void WriteFrame(JsonWriter& j, const FrameRecord& r) {
-  j.BeginObject().Inline();
-  j.Value("frame", r.frame).Value("rendered", r.rendered).Pair("scale", r.scaleX, r.scaleY);
-  j.Pair("viewport", r.viewportW, r.viewportH).Pair("back_buffer", r.backBufferW, r.backBufferH);
-  j.Value("fullscreen", r.fullscreen).Value("cpu_ms", r.cpuFrameMs);
-  j.Value("gpu_new", r.gpuFrameNew).Value("gpu_delay_frames", r.gpuFrameDelay);
-  j.BeginObject("gpu_ms").Value("frame", r.gpuFrame).Value("clear", r.gpuClear).Value("scene", r.gpuScene);
-  j.Value("postp", r.gpuPostP).Value("scale", r.gpuScale).EndObject();
-  j.EndObject();
-}
-}  // namespace
-
-bool FrameLog::WriteReport(const std::string& path, const ReportInfo& info, std::string* error) const {
-  std::error_code ec;
-  const auto parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-  std::ofstream f(path);
-  if (!f) {
-    *error = "cannot write " + path + ": " + std::strerror(errno);
-    return false;
-  }
-  const Options& o = *info.options;
-  JsonWriter j(f);
-  j.BeginObject().Raw("options", OptionsToJson(o));
-  j.BeginObject("control").Inline().Value("mode", ControlModeOption(o.control)).Value("law", ControlLawOption(o.law));
-  j.Value("refresh_hz", info.refreshHz).Value("budget_ms", info.budgetMs);
-  j.Value("law_latency_frames", info.lawLatencyFrames).EndObject();
-  j.Value("adapter", info.adapter).Value("driver", info.driver).Value("scene", info.scenePath);
-  j.Pair("back_buffer", info.backBuffer[0], info.backBuffer[1]);
-  j.Pair("dynamic_rt", info.dynamicRT[0], info.dynamicRT[1]);
-  j.Value("render_target_bytes", info.targets->Bytes() + info.zoomBoxBytes);
-  j.Value("render_target_bytes_original", RenderTargetSet::OriginalBytes(info.backBuffer[0], info.backBuffer[1],
-                                                                         info.dynamicRT[0], info.dynamicRT[1]));
-  WriteTargets(j, info);
-  j.BeginObject("passes_run").Inline();
-  for (const auto& [name, count] : *info.passesRun) j.Value(name, count);
-  j.EndObject();
-  j.Value("validation_messages", info.validationMessages);
-  j.Value("frames_rendered", info.framesRendered).Value("frames_minimised", info.framesMinimised);
-  j.BeginObject("averages_ms").Inline().Value("cpu_frame", Average(*this, &FrameRecord::cpuFrameMs, false));
-  j.Value("gpu_frame", Average(*this, &FrameRecord::gpuFrame, true));
-  j.Value("clear", Average(*this, &FrameRecord::gpuClear, true));
-  j.Value("scene", Average(*this, &FrameRecord::gpuScene, true));
-  j.Value("postp", Average(*this, &FrameRecord::gpuPostP, true));
-  j.Value("scale", Average(*this, &FrameRecord::gpuScale, true)).EndObject();
-  j.Pair("final_scale", info.finalScale[0], info.finalScale[1]);
-  if (info.scene) {
-    const SceneStats st = info.scene->Stats();
-    j.BeginObject("scene_stats").Inline().Value("draws_issued", st.drawsIssued).Value("draws_culled", st.drawsCulled);
-    j.Value("triangles", st.triangles).Value("texture_bytes", st.textureBytes);
-    if (st.tessellatedDraws) j.Value("tessellated_draws", st.tessellatedDraws).Value("patches_submitted", st.patchesSubmitted);
-    j.Value("recording_threads", st.recordingThreads).Value("record_ms", st.recordMs);
-    j.BeginArray("draws_per_thread").Inline();
-    for (uint32_t n : st.drawsPerThread) j.Value({}, n);
-    j.EndArray().EndObject();
-  }
-  j.BeginArray("warnings");
-  if (info.warnings)
-    for (const std::string& w : *info.warnings) j.Value({}, w);
-  j.EndArray();
-  j.BeginArray("frames");
-  ForEachFrame([&](const FrameRecord& r) { WriteFrame(j, r); });
-  j.EndArray().EndObject();
-  f.flush();
-  if (m_StreamFailed) {
-    *error = "cannot write " + path + ": the frame records' temporary file failed (disk full?)";
-    return false;
-  }
-  if (!f) {
-    *error = "cannot write " + path + " (disk full or write error)";
-    return false;
-  }
-  return true;
 }
 
 }  // namespace drr

@@ -22,6 +22,7 @@
 namespace drr {
 
 class Scene;
+struct GuiLayout;
 
 struct FrameRecord {
   int64_t frame = 0;
@@ -56,6 +57,7 @@ struct ReportInfo {
   float finalScale[2] = {1, 1};
   const Scene* scene = nullptr;
   const std::vector<std::string>* warnings = nullptr;
+  const GuiLayout* gui = nullptr;  // the panel's place when it was drawn (GuiLogic.h)
 };
 
 // Where the per-frame records go. Memory: a vector that in-process callers

@@ -1,4 +1,5 @@
 #include "GuiLogic.h"
+#include "OptionTable.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -33,6 +34,15 @@ PanelWidgets UpdateWidgets(PanelWidgets w, const Options& before, const Options&
   if (after.control != before.control) w.sliders = ManualSliders(after);
   if (after.fixes.Has(Fix::GuiSliderState)) w.sliders = ManualSliders(after);
   return w;
+}
+
+GuiSlider SliderOf(const OptionRow& row) {
+  GuiSlider s;
+  s.lo = float(row.lo);
+  s.hi = float(row.hi);
+  if (row.format) s.format = row.format;
+  s.logarithmic = row.lo > 0 && row.hi >= 100 * row.lo;
+  return s;
 }
 
 int SliderMax(bool superSampling) { return superSampling ? 200 : 100; }

@@ -4,12 +4,15 @@
 // once-per-second FPS figure, and the lines of the original's RenderText.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
 #include "Options.h"
 
 namespace drr {
+
+struct OptionRow;
 
 // Enabled (or, for Symmetric TAA, shown) widgets of the panel. The rest of
 // the original's widgets are always enabled.
@@ -28,6 +31,15 @@ PanelWidgets InitialWidgets(const Options& o);
 // the controller then overwrites them); fix gui-slider-state keeps them
 // enabled only with dynamic resolution on and Manual control.
 PanelWidgets UpdateWidgets(PanelWidgets w, const Options& before, const Options& after);
+
+// The slider of a settings row (OptionTable.h): the row's range and format;
+// logarithmic when the range spans two decades or more (pixels per edge 1..256).
+struct GuiSlider {
+  float lo = 0, hi = 1;
+  const char* format = "%.2f";
+  bool logarithmic = false;
+};
+GuiSlider SliderOf(const OptionRow& row);
 
 // The scale sliders: integer percentages 1..100, 1..200 with super sampling.
 constexpr int kSliderMin = 1;
@@ -79,6 +91,14 @@ struct RecordingInfo {
   double recordMs = 0.0;
 };
 std::vector<std::string> RecordingLines(const RecordingInfo& r);
+
+// Where the panel was drawn in the last frame that showed it, in back-buffer
+// pixels (x0, y0, x1, y1): the panel's visible rectangle and the header of
+// its last section (the report's "gui" object; the window test reads it).
+struct GuiLayout {
+  std::array<float, 4> panel{0, 0, 0, 0}, lastHeader{0, 0, 0, 0};
+  std::string lastHeaderTitle;
+};
 
 // The "Port fixes" section: one checkbox per row of FixTable(), in order.
 struct FixToggle {

@@ -1,50 +1,64 @@
 #include "GuiPanel.h"
-#include "scene/RecordingThreads.h"
+#include "OptionTable.h"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <sstream>
+#include <string>
 
 namespace drr {
 
 namespace {
 constexpr float kPanelWidth = 220.0f;
 constexpr float kComboWidth = 170.0f;  // the original's combo boxes
+constexpr float kPanelTop = 30.0f, kPanelMargin = 10.0f;
 
-// A combo over an enum with Count and a name function, labelled by a static
-// text above it as the original's.
-template <class E>
-void EnumCombo(const char* caption, const char* id, E* value, const char* (*name)(E)) {
-  ImGui::TextUnformatted(caption);
+const OptionRow& RowOf(const OptionField& field) { return *FindOptionOf(field); }
+
+// A combo over a row's enum, labelled by a static text above it as the original's.
+bool RowCombo(const OptionRow& row, Options* o) {
+  ImGui::TextUnformatted(row.label);
   ImGui::SetNextItemWidth(kComboWidth);
-  int v = static_cast<int>(*value);
-  if (ImGui::BeginCombo(id, name(*value))) {
-    for (int i = 0; i < static_cast<int>(E::Count); ++i)
-      if (ImGui::Selectable(name(static_cast<E>(i)), i == v)) v = i;
+  const int current = int(FieldNumber(row, *o));
+  int chosen = current;
+  if (ImGui::BeginCombo((std::string("##") + row.name).c_str(), row.choices.gui(current))) {
+    for (int i = 0; i < row.choices.count; ++i)
+      if (ImGui::Selectable(row.choices.gui(i), i == current)) chosen = i;
     ImGui::EndCombo();
   }
-  *value = static_cast<E>(v);
+  if (chosen != current) SetFieldNumber(row, o, chosen);
+  return chosen != current;
 }
 
-bool SettingsDiffer(const Options& a, const Options& b) {
-  return a.pause != b.pause || a.showCameras != b.showCameras || a.motionBlur != b.motionBlur ||
-         a.zoom != b.zoom || a.camera != b.camera || a.psClear != b.psClear ||
-         a.dynamicResolution != b.dynamicResolution || a.superSampling != b.superSampling ||
-         a.aspectLock != b.aspectLock || a.filter != b.filter || a.symmetricTAA != b.symmetricTAA ||
-         a.control != b.control || a.law != b.law || a.fixes != b.fixes ||
-         // Upscaling (port addition)
-         a.secondaryScreenPercentage != b.secondaryScreenPercentage || a.mipBias != b.mipBias ||
-         a.autoMipBias != b.autoMipBias || a.taaMipBias != b.taaMipBias ||
-         // Deferred shading (port addition)
-         a.renderer != b.renderer || a.ssao != b.ssao || a.localLights != b.localLights || a.shadowScale != b.shadowScale ||
-         a.shadowLaw != b.shadowLaw ||
-         // Tessellation (port addition)
-         a.tessellation != b.tessellation || a.tessPixelsPerEdge != b.tessPixelsPerEdge ||
-         a.maxTessFactor != b.maxTessFactor ||
-         // Recording threads (port addition)
-         a.threads != b.threads;
+// The widget of a row (not a Custom one): its label, kind and range from the row.
+bool RowWidget(const OptionRow& row, Options* o, bool enabled = true) {
+  ImGui::BeginDisabled(!enabled || (row.enabled && !row.enabled(*o)));
+  bool changed = false;
+  const GuiSlider slider = SliderOf(row);
+  const ImGuiSliderFlags flags =
+      ImGuiSliderFlags_AlwaysClamp | (slider.logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
+  if (row.widget == Widget::Check) {
+    bool on = FieldNumber(row, *o) != 0.0;
+    changed = ImGui::Checkbox(row.label, &on);
+    if (changed) SetFieldNumber(row, o, on);
+  } else if (row.widget == Widget::SliderInt) {
+    int v = int(FieldNumber(row, *o));
+    ImGui::SetNextItemWidth(kComboWidth);
+    changed = ImGui::SliderInt(row.label, &v, int(slider.lo), int(slider.hi), "%d", flags);
+    if (changed) SetFieldNumber(row, o, v);
+  } else if (row.widget == Widget::SliderFloat) {
+    float v = float(FieldNumber(row, *o));
+    ImGui::SetNextItemWidth(kComboWidth);
+    changed = ImGui::SliderFloat(row.label, &v, slider.lo, slider.hi, slider.format, flags);
+    if (changed) SetFieldNumber(row, o, v);
+  } else if (row.widget == Widget::Combo) {
+    changed = RowCombo(row, o);
+  }
+  ImGui::EndDisabled();
+  return changed;
 }
 
 int OptionPercent(float scale) { return int(std::lround(100.0 * double(scale))); }
@@ -105,10 +119,20 @@ void GuiPanel::Render(d3dl::DeviceContext* ctx, d3dl::RenderTargetView* rtv, con
   ctx->EndEvent();
 }
 
-// The panel: the original's HUD buttons, then its sample UI in its order.
+// The panel: the original's HUD buttons, then its sample UI in its order,
+// then the port's sections (one per group of OptionTable.h with a GUI
+// title), collapsed by default. The panel is at most the window's height
+// less its margins; taller (a section opened in a small window), it scrolls.
 void GuiPanel::Panel(const GuiView& v) {
-  ImGui::SetNextWindowPos(ImVec2(float(v.backBufferW) - kPanelWidth - 10.0f, 30.0f), ImGuiCond_Always);
+  const float maxHeight = std::max(kPanelMargin, float(v.backBufferH) - kPanelTop - kPanelMargin);
+  ImGui::SetNextWindowPos(ImVec2(float(v.backBufferW) - kPanelWidth - kPanelMargin, kPanelTop), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(kPanelWidth, 0.0f), ImGuiCond_Always);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(kPanelWidth, 0.0f), ImVec2(kPanelWidth, maxHeight));
+  // Rows 3 px apart (ImGui's default is 4) and the timing lines packed as the
+  // original's 12-px statistics, so that the panel with its sections closed
+  // fits a 1280x720 window.
+  const ImVec2 spacing = ImGui::GetStyle().ItemSpacing;
+  ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(spacing.x, 3.0f));
   ImGui::Begin("Dynamic Resolution Rendering", nullptr,
                ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar);
@@ -119,91 +143,77 @@ void GuiPanel::Panel(const GuiView& v) {
   staticRect = {top.x, top.y, top.x + kPanelWidth, ImGui::GetCursorScreenPos().y - 2.0f};
   const bool sliderMoved = ScaleSliders(v, &o);
   FilterAndControl(&o);
+  ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(spacing.x, 0.0f));
   for (const std::string& line : TimingLines(v.stats->timing))
     ImGui::TextUnformatted(line.c_str());
-  PortSection(&o);
-  ThreadsSection(v, &o);
+  ImGui::PopStyleVar();
+  PortSections(v, &o);
+  const ImVec2 size = ImGui::GetWindowSize();
+  m_Layout.panel = {top.x, top.y, top.x + size.x, top.y + size.y};
   ImGui::End();
+  ImGui::PopStyleVar();
   if (sliderMoved || SettingsDiffer(o, *v.options)) v.apply(o);
 }
 
-// Upscaling (Docs/Upscaling.md): r.Upscale.Quality, r.TemporalAA.Upsampling,
-// the secondary screen percentage and TAAU's view mip bias.
-void GuiPanel::UpscaleSection(Options* o) {
-  if (!ImGui::CollapsingHeader("Upscaling (port)")) return;
-  const ScreenPercentageRange& range = ScreenPercentageRangeOf(o->scaleX);
-  ImGui::TextWrapped("%.0f %%: %s", o->scaleX * 100.0, range.use);
-  const int current = int(o->filter) - int(Filter::UpscaleNearest);
-  int quality = current >= 0 && current < kUpscaleQualities ? current : -1;
-  ImGui::SetNextItemWidth(kComboWidth);
-  if (ImGui::SliderInt("r.Upscale.Quality", &quality, 0, kUpscaleQualities - 1, quality < 0 ? "-" : "%d"))
-    o->filter = UpscaleQualityFilter(std::clamp(quality, 0, kUpscaleQualities - 1));
-  bool taau = IsTemporalUpsample(o->filter);
-  if (ImGui::Checkbox("Temporal Upsample", &taau))
-    o->filter = taau ? Filter::TAAU : UpscaleQualityFilter(3);
-  float secondary = float(o->secondaryScreenPercentage);
-  ImGui::SetNextItemWidth(kComboWidth);
-  if (ImGui::SliderFloat("Secondary %", &secondary, 50.0f, 100.0f, "%.2f")) o->secondaryScreenPercentage = secondary;
-  ImGui::Checkbox("Automatic view mip bias", &o->autoMipBias);
-  float bias = float(o->mipBias);
-  ImGui::SetNextItemWidth(kComboWidth);
-  if (ImGui::SliderFloat("Mip bias", &bias, -2.0f, 2.0f, "%.2f")) o->mipBias = bias;
-  ImGui::Checkbox("TAA mip bias -0.5 (original)", &o->taaMipBias);
+// One collapsing section per group that has a GUI title: its rows' widgets,
+// in the table's order.
+void GuiPanel::PortSections(const GuiView& v, Options* o) {
+  ImGui::Separator();
+  for (const OptionGroup& group : OptionGroups()) {
+    if (!group.heading->label) continue;
+    const bool open = ImGui::CollapsingHeader(group.heading->label);
+    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+    m_Layout.lastHeader = {min.x, min.y, max.x, max.y};
+    m_Layout.lastHeaderTitle = group.heading->label;
+    if (!open) continue;
+    for (const OptionRow& row : group.rows) {
+      if (row.widget == Widget::None || row.original) continue;
+      if (row.widget == Widget::Custom) CustomWidget(row, o);
+      else RowWidget(row, o);
+      if (&row == &RowOf(&Options::threads))
+        for (const std::string& line : RecordingLines(v.recording)) ImGui::TextUnformatted(line.c_str());
+    }
+  }
 }
 
-// Deferred shading (Docs/Deferred.md): the renderer, SSAO and the spot
-// shadow maps' scale and law.
-void GuiPanel::DeferredSection(Options* o) {
-  if (!ImGui::CollapsingHeader("Deferred shading (port)")) return;
-  EnumCombo("Renderer:", "##renderer", &o->renderer, RendererName);
-  ImGui::BeginDisabled(o->renderer != Renderer::Deferred);
-  ImGui::Checkbox("SSAO", &o->ssao);
-  ImGui::Checkbox("Scene lights", &o->localLights);
-  float shadow = float(o->shadowScale);
-  ImGui::SetNextItemWidth(kComboWidth);
-  if (ImGui::SliderFloat("Shadow scale", &shadow, float(kMinShadowScale), 1.0f, "%.2f")) o->shadowScale = shadow;
-  EnumCombo("Shadow-map law:", "##shadowlaw", &o->shadowLaw, ShadowLawName);
-  ImGui::EndDisabled();
-}
-
-// Tessellation (Docs/Tessellation.md): the seed's "Tessellation Detail" and
-// "Max Tessellation Factor".
-void GuiPanel::TessellationSection(Options* o) {
-  if (!ImGui::CollapsingHeader("Tessellation (port)")) return;
-  ImGui::Checkbox("Adaptive tessellation", &o->tessellation);
-  ImGui::BeginDisabled(!o->tessellation);
-  float pixels = float(o->tessPixelsPerEdge);
-  ImGui::SetNextItemWidth(kComboWidth);
-  if (ImGui::SliderFloat("Pixels per edge", &pixels, 1.0f, 64.0f, "%.1f")) o->tessPixelsPerEdge = pixels;
-  ImGui::SetNextItemWidth(kComboWidth);
-  ImGui::SliderInt("Max factor", &o->maxTessFactor, 1, 64);
-  ImGui::EndDisabled();
-}
-
-// Scene recording threads (Docs/Threads.md): --threads and what the last
-// frame used.
-void GuiPanel::ThreadsSection(const GuiView& v, Options* o) {
-  if (!ImGui::CollapsingHeader("Recording threads (port)")) return;
-  ImGui::SetNextItemWidth(kComboWidth);
-  ImGui::SliderInt("Threads (0 auto)", &o->threads, 0, kMaxRecordingThreads);
-  o->threads = std::clamp(o->threads, 0, kMaxRecordingThreads);
-  for (const std::string& line : RecordingLines(v.recording)) ImGui::TextUnformatted(line.c_str());
+// The rows whose widget is not one value on one control.
+void GuiPanel::CustomWidget(const OptionRow& row, Options* o) {
+  if (&row == &RowOf(&Options::upscaleQuality)) {
+    // r.Upscale.Quality and the temporal upsample choose the filter.
+    const ScreenPercentageRange& range = ScreenPercentageRangeOf(o->scaleX);
+    ImGui::TextWrapped("%.0f %%: %s", o->scaleX * 100.0, range.use);
+    const int current = int(o->filter) - int(Filter::UpscaleNearest);
+    int quality = current >= 0 && current < kUpscaleQualities ? current : -1;
+    ImGui::SetNextItemWidth(kComboWidth);
+    if (ImGui::SliderInt(row.label, &quality, int(row.lo), int(row.hi), quality < 0 ? "-" : "%d"))
+      o->filter = UpscaleQualityFilter(std::clamp(quality, int(row.lo), int(row.hi)));
+  } else if (&row == &RowOf(&Options::temporalUpsampling)) {
+    bool taau = IsTemporalUpsample(o->filter);
+    if (ImGui::Checkbox(row.label, &taau)) o->filter = taau ? Filter::TAAU : UpscaleQualityFilter(3);
+  } else if (&row == &RowOf(&Options::fixes)) {
+    for (const FixToggle& t : FixToggles(o->fixes)) {
+      bool on = t.on;
+      if (ImGui::Checkbox(t.name, &on)) o->fixes.Set(t.fix, on);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.help);
+    }
+  }
 }
 
 void GuiPanel::Buttons() {
   // The original's "Change device (F3)" opens DXUT's device dialog, which the port does not have.
-  const ImVec2 size(kPanelWidth - 2.0f * ImGui::GetStyle().WindowPadding.x, 0.0f);
+  const ImVec2 size(-FLT_MIN, 0.0f);  // the panel's width, less a scrollbar when there is one
   if (ImGui::Button("Fullscreen (F2)", size)) m_Actions.toggleFullscreen = true;
   if (ImGui::Button("Reload Shaders (F4)", size)) m_Actions.reloadShaders = true;
   ImGui::Spacing();
 }
 
+// The original's toggles and camera combo, in its order; labels from the rows.
 void GuiPanel::Toggles(const GuiView& v, Options* o) {
-  ImGui::Checkbox("Paused (P)", &o->pause);
-  ImGui::Checkbox("Show Cameras", &o->showCameras);
-  ImGui::Checkbox("MotionBlur", &o->motionBlur);
-  ImGui::Checkbox("Show zoom box (Z)", &o->zoom);
-  ImGui::TextUnformatted("Camera:");
+  RowWidget(RowOf(&Options::pause), o);
+  RowWidget(RowOf(&Options::showCameras), o);
+  RowWidget(RowOf(&Options::motionBlur), o);
+  RowWidget(RowOf(&Options::zoom), o);
+  ImGui::TextUnformatted(RowOf(&Options::camera).label);
   ImGui::SetNextItemWidth(kComboWidth);
   int cam = v.camera;
   if (ImGui::BeginCombo("##camera", v.cameraName(cam).c_str())) {
@@ -212,14 +222,10 @@ void GuiPanel::Toggles(const GuiView& v, Options* o) {
     ImGui::EndCombo();
   }
   o->camera = cam;
-  ImGui::Checkbox("Clear with Pixel Shader", &o->psClear);
-  ImGui::Checkbox("Dynamic Resolution", &o->dynamicResolution);
-  ImGui::BeginDisabled(!m_Widgets.superSampling);
-  ImGui::Checkbox("Allow Super Sampling", &o->superSampling);
-  ImGui::EndDisabled();
-  ImGui::BeginDisabled(!m_Widgets.aspectLock);
-  ImGui::Checkbox("Aspect Ratio Lock", &o->aspectLock);
-  ImGui::EndDisabled();
+  RowWidget(RowOf(&Options::psClear), o);
+  RowWidget(RowOf(&Options::dynamicResolution), o);
+  RowWidget(RowOf(&Options::superSampling), o, m_Widgets.superSampling);
+  RowWidget(RowOf(&Options::aspectLock), o, m_Widgets.aspectLock);
 }
 
 // The texts show the applied scale (as of the last statistics update); the
@@ -251,34 +257,11 @@ bool GuiPanel::ScaleSliders(const GuiView& v, Options* o) {
 }
 
 void GuiPanel::FilterAndControl(Options* o) {
-  ImGui::BeginDisabled(!m_Widgets.filter);
-  EnumCombo("Filter:", "##filter", &o->filter, FilterName);
-  ImGui::EndDisabled();
+  RowWidget(RowOf(&Options::filter), o, m_Widgets.filter);
   // Hidden outside the TAA filters; its place stays, as in the original's fixed layout.
-  if (m_Widgets.symmetricTAA) ImGui::Checkbox("Symmetric TAA", &o->symmetricTAA);
+  if (m_Widgets.symmetricTAA) RowWidget(RowOf(&Options::symmetricTAA), o);
   else ImGui::Dummy(ImVec2(1.0f, ImGui::GetFrameHeight()));
-  ImGui::BeginDisabled(!m_Widgets.control);
-  EnumCombo("Resolution Control:", "##control", &o->control, ControlModeName);
-  ImGui::EndDisabled();
-}
-
-// Port additions, below everything of the original's: the control law and
-// one checkbox per fix of FixTable(), all off by default.
-void GuiPanel::PortSection(Options* o) {
-  ImGui::Separator();
-  ImGui::BeginDisabled(!m_Widgets.control);
-  EnumCombo("Control law (port):", "##law", &o->law, ControlLawName);
-  ImGui::EndDisabled();
-  UpscaleSection(o);
-  DeferredSection(o);
-  TessellationSection(o);
-  if (ImGui::CollapsingHeader("Port fixes")) {
-    for (const FixToggle& t : FixToggles(o->fixes)) {
-      bool on = t.on;
-      if (ImGui::Checkbox(t.name, &on)) o->fixes.Set(t.fix, on);
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", t.help);
-    }
-  }
+  RowWidget(RowOf(&Options::control), o, m_Widgets.control);
 }
 
 // The original's RenderText: yellow lines at the top left, 20 px apart, and

@@ -18,6 +18,8 @@ struct ImGuiContext;
 
 namespace drr {
 
+struct OptionRow;
+
 // Everything the GUI shows as statistics (refreshed by Sample::UpdateStats):
 // the timing lines and the scale the sliders' labels show.
 struct SampleStats {
@@ -68,6 +70,8 @@ class GuiPanel {
   // Part of the panel above the scale texts (its content does not depend on
   // the scale), in back-buffer pixels: x0, y0, x1, y1.
   std::array<float, 4> staticRect{0, 0, 0, 0};
+  // Where the panel and its last section's header were drawn (the report's "gui").
+  const GuiLayout& Layout() const { return m_Layout; }
 
  private:
   void SyncWithOptions(const GuiView& view);
@@ -76,11 +80,8 @@ class GuiPanel {
   void Toggles(const GuiView& view, Options* o);
   bool ScaleSliders(const GuiView& view, Options* o);
   void FilterAndControl(Options* o);
-  void PortSection(Options* o);
-  void UpscaleSection(Options* o);  // port addition (Docs/Upscaling.md)
-  void DeferredSection(Options* o);  // port addition (Docs/Deferred.md)
-  void TessellationSection(Options* o);  // port addition (Docs/Tessellation.md)
-  void ThreadsSection(const GuiView& v, Options* o);  // port addition (Docs/Threads.md)
+  void PortSections(const GuiView& v, Options* o);  // port additions, one section per settings group
+  void CustomWidget(const OptionRow& row, Options* o);
   void Text(const GuiView& view);
 
   ImGuiContext* m_ImGui = nullptr;
@@ -90,6 +91,7 @@ class GuiPanel {
   PanelWidgets m_Widgets;   // enabled/shown, as the original's dialog keeps them
   SliderPair m_Sliders;     // the original's g_ResolutionScaleX/Y
   GuiActions m_Actions;
+  GuiLayout m_Layout;
 };
 
 }  // namespace drr

@@ -98,12 +98,13 @@ enum class ParseStatus { Ok, Help, Error };
 // are attached with '=' (--width=640); numbers are plain decimal (no spaces
 // around them, no hexadecimal). On Error, message names the option, the value and
 // the allowed range or values; on Help, message is the usage text. Parsing and
-// Usage() are generated from one table of the options (Options.cpp).
+// Usage() are generated from the one table of the settings (OptionTable.h).
 ParseStatus ParseCommandLine(const std::vector<std::string>& args, Options* options,
                              std::string* message);
 ParseStatus ParseCommandLine(int argc, char** argv, Options* options, std::string* message);
 std::string Usage();
-// "--filter taa --scale-x 0.71 ..." : what the options are, for reports.
+// The report's options object as compact JSON text (OptionsJson in
+// OptionsJson.h gives it as a JSON value).
 std::string OptionsToJson(const Options& o);
 
 }  // namespace drr

@@ -1,7 +1,15 @@
 #!/usr/bin/env bash
-# Configures and builds into BUILD_DIR (default: build). Used by run.sh and test.sh.
+# Configures and builds into BUILD_DIR (default: build). Used by run.sh and
+# test.sh. Arguments go to CMake's configure step. BUILD_TARGETS (names
+# separated by spaces) builds those targets and what they depend on only;
+# unset, everything is built.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${BUILD_DIR:-$root/build}"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE="${BUILD_TYPE:-RelWithDebInfo}" "$@" >/dev/null
-cmake --build "$build" --parallel "$(nproc)"
+targets=()
+if [ -n "${BUILD_TARGETS:-}" ]; then
+  read -r -a names <<<"$BUILD_TARGETS"
+  targets=(--target "${names[@]}")
+fi
+cmake --build "$build" --parallel "$(nproc)" "${targets[@]}"

@@ -172,6 +172,10 @@ double FlipPixelsPerDegree(double distanceM, double widthM, double widthPixels) 
   return distanceM * (widthPixels / widthM) * kPi / 180.0;
 }
 
+double FlipFullScreenPpd(double widthPixels) {
+  return FlipPixelsPerDegree(kFlipDisplayDistanceM, kFlipDisplayWidthM, widthPixels);
+}
+
 int FlipCsfRadius(double ppd) { return int(std::ceil(3.0 * std::sqrt(kCsfWidestB / (2 * kPi * kPi)) * ppd)); }
 
 int FlipFeatureRadius(double ppd) { return int(std::ceil(3.0 * 0.5 * kFeatureWidthDeg * ppd)); }

@@ -21,6 +21,11 @@ namespace drr {
 // with `widthPixels` columns; the paper's default (0.7 m, 0.7 m, 3840) is ~67.
 double FlipPixelsPerDegree(double distanceM, double widthM, double widthPixels);
 inline constexpr double kFlipDefaultPpd = 67.0;
+// FLIP's reference display: 0.7 m wide, 3840 pixels across, seen from 0.7 m.
+inline constexpr double kFlipDisplayWidthM = 0.7, kFlipDisplayPixels = 3840, kFlipDisplayDistanceM = 0.7;
+// A frame `widthPixels` wide shown full-screen on that display (its pixels
+// stretched to the display's width): 67.02 x widthPixels / 3840.
+double FlipFullScreenPpd(double widthPixels);
 
 // Radius in pixels of the contrast-sensitivity filters (3 standard deviations
 // of the widest Gaussian) and of the feature detectors (3 sigma, sigma =

@@ -12,9 +12,10 @@
 #include "DynamicResolutionRendering.h"
 #include "analysis/ImageMetrics.h"
 #include "analysis/Flip.h"
+#include "analysis/TemporalStability.h"
 #include "bench/BenchCommon.h"
+#include "bench/BenchFixedBlit.h"
 #include "bench/BenchReport.h"
-#include "d3dl/BlitExtension.h"
 #include "imageio/ImageFile.h"
 
 namespace drr {
@@ -62,100 +63,6 @@ double FractionAbove(const ImageF& a, const ImageF& b, float threshold) {
   return double(above) / double(uint64_t(a.width) * a.height);
 }
 
-// The fixed-function blit of the scale pass: BlitExtension::BlitRegion (a linear
-// vkCmdBlitImage) of the viewport region of a dynamic-RT-sized texture holding
-// the captured scene colour to a back-buffer-sized target, timed with its own
-// timestamp queries on the sample's device (outside the sample's frames).
-class FixedFunctionBlit {
- public:
-  explicit FixedFunctionBlit(d3dl::Device* device) : device_(device) {
-    device_->GetImmediateContext(ctx_.GetAddressOf());
-    blit_ = d3dl::GetBlitExtension(ctx_.Get());  // null: a context without the Vulkan blit
-    d3dl::QUERY_DESC d;
-    d.Query = d3dl::QUERY_TIMESTAMP_DISJOINT;
-    ok_ = blit_ && d3dl::SUCCEEDED(device_->CreateQuery(&d, disjoint_.GetAddressOf()));
-    d.Query = d3dl::QUERY_TIMESTAMP;
-    ok_ = ok_ && d3dl::SUCCEEDED(device_->CreateQuery(&d, begin_.GetAddressOf())) &&
-          d3dl::SUCCEEDED(device_->CreateQuery(&d, end_.GetAddressOf()));
-  }
-
-  // Times `frames` blits of (0,0,vpW,vpH) of `scene` (the whole dynamic RT in
-  // its own format: UNORM holds linear values, UNORM_SRGB encoded ones) to a
-  // bbW x bbH sRGB target, as the scale pass writes the sRGB back buffer;
-  // returns the times and the last image.
-  bool Run(const Image& scene, uint32_t vpW, uint32_t vpH, uint32_t bbW, uint32_t bbH, int frames,
-           std::vector<double>* ms, Image* image, std::string* error) {
-    const bool rgba8 = scene.format == d3dl::DXGI_FORMAT_R8G8B8A8_UNORM ||
-                       scene.format == d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
-    if (!ok_ || scene.Empty() || !rgba8 || vpW == 0 || vpH == 0 || vpW > scene.width || vpH > scene.height) {
-      *error = "fixed-function blit: no queries or no scene colour";
-      return false;
-    }
-    d3dl::TEXTURE2D_DESC d;
-    d.Width = scene.width;
-    d.Height = scene.height;
-    d.Format = scene.format;
-    d.BindFlags = d3dl::BIND_SHADER_RESOURCE | d3dl::BIND_RENDER_TARGET;
-    d3dl::SUBRESOURCE_DATA init{scene.pixels.data(), scene.width * 4, 0};
-    d3dl::ComPtr<d3dl::Texture2D> src, dst;
-    if (d3dl::FAILED(device_->CreateTexture2D(&d, &init, src.GetAddressOf()))) {
-      *error = "fixed-function blit: cannot create the source texture";
-      return false;
-    }
-    d.Width = bbW;
-    d.Height = bbH;
-    d.Format = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
-    if (d3dl::FAILED(device_->CreateTexture2D(&d, nullptr, dst.GetAddressOf()))) {
-      *error = "fixed-function blit: cannot create the destination texture";
-      return false;
-    }
-    const d3dl::RECT srcRect{0, 0, int32_t(vpW), int32_t(vpH)};
-    const d3dl::RECT dstRect{0, 0, int32_t(bbW), int32_t(bbH)};
-    for (int i = 0; i < frames + 1; ++i) {  // the first one warms up
-      ctx_->Begin(disjoint_.Get());
-      ctx_->End(begin_.Get());
-      blit_->BlitRegion(dst.Get(), dstRect, src.Get(), srcRect, d3dl::FILTER_MIN_MAG_MIP_LINEAR);
-      ctx_->End(end_.Get());
-      ctx_->End(disjoint_.Get());
-      ctx_->Flush();
-      d3dl::QUERY_DATA_TIMESTAMP_DISJOINT dj{};
-      uint64_t t0 = 0, t1 = 0;
-      if (!Wait(disjoint_.Get(), &dj, sizeof(dj)) || !Wait(begin_.Get(), &t0, sizeof(t0)) ||
-          !Wait(end_.Get(), &t1, sizeof(t1))) {
-        *error = "fixed-function blit: the timestamp queries did not complete";
-        return false;
-      }
-      if (i > 0) {
-        ms->push_back(!dj.Disjoint && dj.Frequency > 0 && t1 >= t0
-                          ? double(t1 - t0) * 1000.0 / double(dj.Frequency)
-                          : std::nan(""));
-      }
-    }
-    std::string readError;
-    if (!ReadBack(device_, ctx_.Get(), dst.Get(), 0, image, &readError)) {
-      *error = "fixed-function blit: cannot read the image back: " + readError;
-      return false;
-    }
-    return true;
-  }
-
- private:
-  bool Wait(d3dl::Query* q, void* data, uint32_t size) {
-    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-    for (;;) {
-      const d3dl::HRESULT hr = ctx_->GetData(q, data, size, 0);
-      if (hr == d3dl::S_OK) return true;
-      if (d3dl::FAILED(hr) || std::chrono::steady_clock::now() > until) return false;
-      std::this_thread::yield();
-    }
-  }
-  d3dl::BlitExtension* blit_ = nullptr;
-  d3dl::Device* device_;
-  d3dl::ComPtr<d3dl::DeviceContext> ctx_;
-  d3dl::ComPtr<d3dl::Query> disjoint_, begin_, end_;
-  bool ok_ = false;
-};
-
 // One measured configuration of a running sample: apply, warm up, measure,
 // capture. Returns the row (error against `reference`) and the image.
 BenchRow Measure(Sample& sample, const BenchPlan& plan, const Options& settings,
@@ -177,7 +84,7 @@ BenchRow Measure(Sample& sample, const BenchPlan& plan, const Options& settings,
   const Image image = Capture(sample);
   const ImageF imageF = ToImage(image);
   row.error = CompareImages(imageF, reference);
-  const FlipResult flip = ComputeFlip(reference, imageF);
+  const FlipResult flip = ComputeFlip(reference, imageF, FlipPpd(plan));
   row.flip = flip.valid ? flip.mean : std::nan("");
   if (settings.dynamicResolution) {
     row.viewportW = sample.GetDynamicResolution().GetViewport().Width;
@@ -198,6 +105,20 @@ int StillWarmup(const BenchPlan& plan, Filter filter) {
   return std::max(plan.warmupFrames, int(2 * kUpsampleJitterLength));
 }
 
+// Jitter instability on a still camera: the mean over `pairs` pairs of
+// consecutive frames (the first is `first`, the frame just captured) of the
+// RMS change between them; the reference of a still view does not change.
+constexpr int kStillInstabilityPairs = 2;
+double StillInstability(Sample& sample, ImageF first, int pairs) {
+  std::vector<double> change;
+  for (int i = 0; i < pairs; ++i) {
+    ImageF next = ToImage(Capture(sample));
+    change.push_back(ReprojectedInstability(first, next, first, first, MotionField{}));
+    first = std::move(next);
+  }
+  return BlockMeanCi(change, 1).mean;
+}
+
 // What the measurements of one view share; AddRow measures one configuration
 // with the plan's warm-up and frame counts and records it.
 struct ViewRun {
@@ -212,15 +133,19 @@ struct ViewRun {
   std::vector<std::pair<Options, size_t>> timed = {};
 
   void AddRow(const Options& settings, const std::string& filterName, double scale) {
-    results->rows.push_back(Measure(sample, plan, settings, view.name, filterName, scale, reference,
-                                    StillWarmup(plan, settings.filter), plan.measuredFrames));
+    Image image;
+    BenchRow row = Measure(sample, plan, settings, view.name, filterName, scale, reference,
+                           StillWarmup(plan, settings.filter), plan.measuredFrames, &image);
+    row.instability = StillInstability(sample, ToImage(image), kStillInstabilityPairs);
+    results->Add(row);
     timed.emplace_back(settings, results->rows.size() - 1);
     progress->Step(view.name + " " + filterName + " " + Num2(scale));
   }
 };
 
-// Side-by-side timing: every timed configuration of the view in turn, for
-// plan.timingRounds rounds of a few frames each, so a change of load on the
+// Side-by-side timing: every timed configuration of the view in turn (each
+// round starting one configuration later, each turn warmed up by frames and
+// by time), for plan.timingRounds rounds of a few frames each, so a change of load on the
 // machine spreads over all of them instead of falling on some rows. The rows'
 // GPU and wall times are replaced by these.
 void InterleaveTimes(ViewRun& run) {
@@ -228,9 +153,11 @@ void InterleaveTimes(ViewRun& run) {
   if (plan.timingRounds <= 0) return;
   std::vector<std::vector<std::vector<FrameRecord>>> rounds(run.timed.size());
   for (int r = 0; r < plan.timingRounds; ++r)
-    for (size_t i = 0; i < run.timed.size(); ++i) {
+    for (size_t turn = 0; turn < run.timed.size(); ++turn) {
+      const size_t i = (turn + size_t(r)) % run.timed.size();  // each round starts one later
       run.sample.ApplySettings(run.timed[i].first);
       RenderFrames(run.sample, plan.timingWarmup);
+      WarmUpFor(run.sample, plan.timingWarmupMs);
       rounds[i].push_back(RenderFrames(run.sample, plan.timingFrames));
     }
   for (size_t i = 0; i < run.timed.size(); ++i) FillGpuTimes(rounds[i], &run.results->rows[run.timed[i].second]);
@@ -265,6 +192,70 @@ void MeasureClaims(ViewRun& view, const Options& o) {
 // sample sets animation time = max(time, 0) + frameCount * fixedDt, so with
 // time = ghostTime - (frameCount at capture) * fixedDt the captured frame is
 // at ghostTime exactly, and the reference is rendered there.
+struct GhostRun {
+  const BenchPlan& plan;
+  Sample& sample;
+  const ImageF& reference;
+  std::string viewName;
+  Progress* progress;
+  bool exact = true;  // every capture at plan.ghostTime
+
+  // plan.ghostFrames moving frames of `s`, then the capture at ghostTime.
+  BenchRow Run(const std::string& name, Options s, Image* image) {
+    const int n = plan.ghostFrames;
+    s.camera = 1;  // cinematic
+    s.fixedDt = plan.ghostStep;
+    const int64_t captureFrame = sample.FrameCount() + n;  // n frames, then the capture
+    s.time = plan.ghostTime - double(captureFrame) * plan.ghostStep;
+    BenchRow row = Measure(sample, plan, s, viewName, name, s.scaleX, reference, 0, n, image);
+    row.animTime = std::max(s.time, 0.0) + double(captureFrame) * s.fixedDt;
+    exact = exact && std::abs(row.animTime - plan.ghostTime) < 1e-9;
+    progress->Step(viewName + " " + name);
+    return row;
+  }
+};
+
+void MeasureGhosting(GhostRun& run, const Options& o, BenchResults* results) {
+  const int n = run.plan.ghostFrames;
+  for (Filter f : {Filter::Point, Filter::TAA, Filter::TAABasic, Filter::TAANoiseOffset}) {
+    Options s = o;
+    s.dynamicResolution = true;
+    s.motionBlur = false;  // isolates the history: the reference has no motion blur
+    s.filter = f;
+    s.scaleX = s.scaleY = 0.71f;
+    Image image, still;
+    BenchRow row = run.Run(std::string("ghost ") + FilterOption(f), s, &image);
+    // The same filter settled on the same animation time (camera held
+    // still): the difference is what the motion adds (ghost trails), not
+    // the filter's spatial error.
+    Options h = s;
+    h.fixedDt = 0.0;
+    h.time = run.plan.ghostTime;
+    // An even number of frames between the two captures keeps the TAA
+    // jitter phase (the final RT index flips every frame) the same.
+    const int stillFrames = n + ((n + 1) % 2);
+    Measure(run.sample, run.plan, h, run.viewName, "still", 0.71, run.reference, 0, stillFrames, &still);
+    run.progress->Step(run.viewName + " still " + FilterOption(f));
+    row.ghostFraction = FractionAbove(ToImage(image), ToImage(still), 0.1f);
+    results->Add(row);
+  }
+}
+
+void MeasureMotionBlurClaim(GhostRun& run, Options s, BenchResults* results) {
+  s.dynamicResolution = false;
+  s.motionBlur = true;
+  s.filter = Filter::Point;
+  Image nativeImage, scaledImage;
+  BenchRow native = run.Run("motion-blur native", s, &nativeImage);
+  s.dynamicResolution = true;
+  s.filter = Filter::Bilinear;
+  s.scaleX = s.scaleY = 0.71f;
+  BenchRow scaled = run.Run("motion-blur 0.71", s, &scaledImage);
+  scaled.psnrVsNative = CompareImages(ToImage(scaledImage), ToImage(nativeImage)).psnr;
+  results->Add(native);
+  results->Add(scaled);
+}
+
 bool MeasureMoving(const BenchPlan& plan, BenchResults* results, Progress* progress, std::string* error) {
   const BenchView refView{1, plan.ghostTime, "cinematic moving t=" + Num2(plan.ghostTime)};
   ImageF reference;
@@ -275,69 +266,12 @@ bool MeasureMoving(const BenchPlan& plan, BenchResults* results, Progress* progr
   o.superSampling = false;
   Sample sample;
   if (sample.Init(o, error) != 0) return false;
-  const int n = plan.ghostFrames;
-  auto moving = [&](Options s) {
-    s.camera = 1;  // cinematic
-    s.fixedDt = plan.ghostStep;
-    const int64_t captureFrame = sample.FrameCount() + n;  // n frames, then the capture
-    s.time = plan.ghostTime - double(captureFrame) * plan.ghostStep;
-    return s;
-  };
-  auto animTime = [&](const Options& s, int64_t captureFrame) {
-    return std::max(s.time, 0.0) + double(captureFrame) * s.fixedDt;
-  };
-  bool exact = true;
-  auto run = [&](const std::string& name, Options s, Image* image) {
-    s = moving(s);
-    const int64_t captureFrame = sample.FrameCount() + n;
-    BenchRow row = Measure(sample, plan, s, refView.name, name, s.scaleX, reference, 0, n, image);
-    row.animTime = animTime(s, captureFrame);
-    exact = exact && std::abs(row.animTime - plan.ghostTime) < 1e-9;
-    progress->Step(refView.name + " " + name);
-    return row;
-  };
-  if (plan.ghosting) {
-    for (Filter f : {Filter::Point, Filter::TAA, Filter::TAABasic, Filter::TAANoiseOffset}) {
-      Options s = o;
-      s.dynamicResolution = true;
-      s.motionBlur = false;  // isolates the history: the reference has no motion blur
-      s.filter = f;
-      s.scaleX = s.scaleY = 0.71f;
-      Image image, still;
-      BenchRow row = run(std::string("ghost ") + FilterOption(f), s, &image);
-      // The same filter settled on the same animation time (camera held
-      // still): the difference is what the motion adds (ghost trails), not
-      // the filter's spatial error.
-      Options h = s;
-      h.fixedDt = 0.0;
-      h.time = plan.ghostTime;
-      // An even number of frames between the two captures keeps the TAA
-      // jitter phase (the final RT index flips every frame) the same.
-      const int stillFrames = n + ((n + 1) % 2);
-      Measure(sample, plan, h, refView.name, "still", 0.71, reference, 0, stillFrames, &still);
-      progress->Step(refView.name + " still " + FilterOption(f));
-      row.ghostFraction = FractionAbove(ToImage(image), ToImage(still), 0.1f);
-      results->rows.push_back(row);
-    }
-  }
-  if (plan.claims) {
-    Options s = o;
-    s.dynamicResolution = false;
-    s.motionBlur = true;
-    s.filter = Filter::Point;
-    Image nativeImage, scaledImage;
-    BenchRow native = run("motion-blur native", s, &nativeImage);
-    s.dynamicResolution = true;
-    s.filter = Filter::Bilinear;
-    s.scaleX = s.scaleY = 0.71f;
-    BenchRow scaled = run("motion-blur 0.71", s, &scaledImage);
-    scaled.psnrVsNative = CompareImages(ToImage(scaledImage), ToImage(nativeImage)).psnr;
-    results->rows.push_back(native);
-    results->rows.push_back(scaled);
-  }
+  GhostRun run{plan, sample, reference, refView.name, progress};
+  if (plan.ghosting) MeasureGhosting(run, o, results);
+  if (plan.claims) MeasureMotionBlurClaim(run, o, results);
   results->validationMessages += sample.ValidationMessages();
   sample.Shutdown();
-  if (!exact) {
+  if (!run.exact) {
     *error = "the moving camera's captured frame is not at the reference time (ghostTime too small "
              "for the frames rendered before it?)";
     return false;
@@ -364,7 +298,7 @@ bool AddFixedBlitRow(ViewRun& run, FixedFunctionBlit& blit, float scale, std::st
   row.gpuScale = Summarise(ms);
   row.gpuSamples = int(ms.size());
   row.error = CompareImages(ToImage(image), run.reference);
-  run.results->rows.push_back(row);
+  run.results->Add(row);
   run.progress->Step(run.view.name + " " + kFixedBlit + " " + Num2(scale));
   return true;
 }
@@ -434,7 +368,7 @@ bool MeasureView(const BenchPlan& plan, const BenchView& view, bool firstView, B
                  error.c_str());
     return false;
   }
-  results->rows.push_back(repeat);
+  results->Add(repeat);
   progress->Step(view.name + " reference");
 
   Options o = ViewOptions(plan, view);
@@ -506,6 +440,19 @@ void ChooseBandwidth(const BenchPlan& plan, BenchResults* results) {
   }
 }
 
+// --report-from: the report of a finished run, rendering nothing.
+int RewriteReport(const BenchPlan& plan) {
+  BenchResults results;
+  results.plan = &plan;
+  std::string error;
+  if (!ReloadBenchResults(plan.reportFrom, &results, &error) || !WriteBenchOutputs(results, plan.outDir, &error)) {
+    std::fprintf(stderr, "bench: %s\n", error.c_str());
+    return 1;
+  }
+  std::printf("bench: report of %zu rows rewritten into %s\n", results.rows.size(), plan.outDir.c_str());
+  return 0;
+}
+
 }  // namespace
 
 int RunBench(const BenchPlan& plan) {
@@ -516,17 +463,13 @@ int RunBench(const BenchPlan& plan) {
                  ec.message().c_str());
     return 1;
   }
+  if (!plan.reportFrom.empty()) return RewriteReport(plan);
   BenchResults results;
   results.plan = &plan;
-  if (!plan.reportFrom.empty()) {
-    std::string error;
-    if (!ReloadBenchResults(plan.reportFrom, &results, &error) || !WriteBenchOutputs(results, plan.outDir, &error)) {
-      std::fprintf(stderr, "bench: %s\n", error.c_str());
-      return 1;
-    }
-    std::printf("bench: report of %zu rows rewritten into %s\n", results.rows.size(), plan.outDir.c_str());
-    return 0;
-  }
+  results.flipPpd = FlipPpd(plan);
+  results.flipDisplay = plan.flipPpd > 0 ? "given (--flip-ppd)"
+                                         : "the frame full-screen on a 0.7 m wide, 3840-pixel display seen from 0.7 m";
+  results.partialDir = plan.outDir;
   Progress progress(ProgressSteps(plan));
   const auto started = std::chrono::steady_clock::now();
 
@@ -547,6 +490,7 @@ int RunBench(const BenchPlan& plan) {
     }
   }
   ChooseBandwidth(plan, &results);
+  results.complete = true;
   results.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
@@ -563,6 +507,10 @@ int RunBench(const BenchPlan& plan) {
     return 3;
   }
   return 0;
+}
+
+double FlipPpd(const BenchPlan& plan) {
+  return plan.flipPpd > 0 ? plan.flipPpd : FlipFullScreenPpd(plan.base.width);
 }
 
 int BenchMain(int argc, char** argv) {

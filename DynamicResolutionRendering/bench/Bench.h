@@ -53,6 +53,12 @@ struct BenchPlan {
   int timingRounds = 4;
   int timingWarmup = 2;
   int timingFrames = 6;
+  // Each turn of the interleaved timing (still and moving) warms up for at
+  // least this long besides timingWarmup frames.
+  int timingWarmupMs = 200;
+  // FLIP's pixels per degree; 0: the frame full-screen on FLIP's reference
+  // display (FlipFullScreenPpd of the back-buffer width).
+  double flipPpd = 0;
   uint32_t referenceFactor = 4;
   bool claims = true;          // claim rows on the first view (and motion blur on the cinematic camera)
   bool ghosting = true;        // ghosting rows on the cinematic camera
@@ -81,6 +87,9 @@ struct BenchPlan {
 // Returns 0, or an exit code (2) with message set; message holds usage on --help.
 int ParseBenchCommandLine(const std::vector<std::string>& args, BenchPlan* plan,
                           std::string* message);
+
+// The pixels per degree FLIP uses in this plan.
+double FlipPpd(const BenchPlan& plan);
 
 // Runs the plan and writes the outputs. Returns the process exit code.
 int RunBench(const BenchPlan& plan);

@@ -57,6 +57,11 @@ const char* kBenchUsage =
     "  --ghost-frames N     moving frames before the ghosting capture (default 24,\n"
     "                       quick 6); the camera steps 1/30 s per frame and the\n"
     "                       capture is at animation time 12 s\n"
+    "  --flip-ppd PPD       FLIP's pixels per degree (default: the frame shown full-screen\n"
+    "                       on FLIP's reference display, 0.7 m wide, 3840 pixels, seen\n"
+    "                       from 0.7 m: 67.02 x width / 3840)\n"
+    "  --timing-warmup-ms T each timed turn warms up for at least T ms (default 200,\n"
+    "                       quick 0)\n"
 "  --report-from DIR    rewrite the report into --out from DIR's results.csv/json\n"
     "                       (the same sweep options as that run), rendering nothing\n"
 "  --timing-rounds N    interleaved timing: every configuration of a still view\n"
@@ -68,7 +73,10 @@ const char* kBenchUsage =
     "                       (quick: point, bilinear, taa, taau at 0.5 and 1.0) and native,\n"
     "                       no 2x targets, motion blur off; each frame against the\n"
     "                       reference of its animation time: PSNR, SSIM, FLIP, and\n"
-    "                       flicker (frame-to-frame change of the error image)\n"
+    "                       instability (frame-to-frame change after reprojecting the\n"
+    "                       previous frame with the reference's velocity, less the\n"
+    "                       reference's own change); still rows: the change between\n"
+    "                       consecutive frames (jitter instability)\n"
     "  --moving-frames N    frames compared per sequence (default 60, quick 4)\n"
     "  --moving-warmup N    frames before them (default 8, quick 2)\n"
     "  --moving-speed P     only this speed, in percent (100 = 1/30 s a frame)\n"
@@ -96,7 +104,7 @@ bool ParseInt(const std::string& s, int lo, int hi, int* out) {
 // it narrowed, the counts it set (-1 = the preset's), the sample's options.
 struct BenchArgs {
   bool cameraGiven = false, filterGiven = false, scaleGiven = false, sizeGiven = false;
-  int warmup = -1, warmupMs = -1, frames = -1, ghostFrames = -1;
+  int warmup = -1, warmupMs = -1, timingWarmupMs = -1, frames = -1, ghostFrames = -1;
   int movingFrames = -1, movingWarmup = -1, movingSpeedPercent = 0, timingRounds = -1;
   std::vector<std::string> sampleArgs;
   std::vector<Filter> filterList;  // --filters
@@ -155,6 +163,19 @@ bool ParseFilterName(const std::string& s, Filter* out) {
   return false;
 }
 
+// FLIP's pixels per degree: a number from 1 to 1000.
+bool TakePpd(const std::vector<std::string>& args, size_t* i, double* out, std::string* message) {
+  std::string v;
+  if (!TakeValue(args, i, &v, message)) return false;
+  char* end = nullptr;
+  const double ppd = std::strtod(v.c_str(), &end);
+  if (v.empty() || !end || *end || !(ppd >= 1 && ppd <= 1000)) {
+    *message = "--flip-ppd: '" + v + "' is not a number from 1 to 1000";
+    return false;
+  }
+  return *out = ppd, true;
+}
+
 bool ParseScale(const std::string& s, float* out) {
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
@@ -195,6 +216,8 @@ int ParseBenchArgs(const std::vector<std::string>& args, BenchPlan* plan, BenchA
     else if (a == "--bench-warmup-ms") ok = TakeInt(args, &i, 0, 60000, &parsed->warmupMs, message);
     else if (a == "--bench-warmup") ok = TakeInt(args, &i, 0, 10000, &parsed->warmup, message);
     else if (a == "--bench-frames") ok = TakeInt(args, &i, 1, 10000, &parsed->frames, message);
+    else if (a == "--flip-ppd") ok = TakePpd(args, &i, &plan->flipPpd, message);
+    else if (a == "--timing-warmup-ms") ok = TakeInt(args, &i, 0, 60000, &parsed->timingWarmupMs, message);
     else if (a == "--memory-bandwidth") {
       int gbs = 0;
       ok = TakeInt(args, &i, 1, 100000, &gbs, message);
@@ -306,6 +329,7 @@ int ParseBenchCommandLine(const std::vector<std::string>& args, BenchPlan* plan,
   }
   plan->warmupFrames = parsed.warmup >= 0 ? parsed.warmup : (plan->quick ? 4 : 8);
   plan->warmupMs = parsed.warmupMs >= 0 ? parsed.warmupMs : (plan->quick ? 0 : 500);
+  plan->timingWarmupMs = parsed.timingWarmupMs >= 0 ? parsed.timingWarmupMs : (plan->quick ? 0 : 200);
   plan->measuredFrames = parsed.frames >= 0 ? parsed.frames : (plan->quick ? 6 : 24);
   plan->ghostFrames = parsed.ghostFrames >= 0 ? parsed.ghostFrames : (plan->quick ? 6 : 24);
   ChooseSweep(parsed, plan);

@@ -1,6 +1,7 @@
 #include "bench/BenchCommon.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <unistd.h>
@@ -68,11 +69,30 @@ MeanCi BlockMeanCi(const std::vector<double>& perFrame, int blocks) {
   return r;
 }
 
+MeanCi PairedDifferenceCi(const std::vector<double>& a, const std::vector<double>& b, int blocks) {
+  std::vector<double> d;
+  for (size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+    if (std::isfinite(a[i]) && std::isfinite(b[i])) d.push_back(a[i] - b[i]);
+  return BlockMeanCi(d, blocks);
+}
+
+int SideOf(const MeanCi& d, double threshold) {
+  if (!std::isfinite(d.mean) || !std::isfinite(d.halfWidth)) return 0;
+  if (d.mean - d.halfWidth > threshold) return 1;
+  if (d.mean + d.halfWidth < threshold) return -1;
+  return 0;
+}
+
 std::vector<FrameRecord> RenderFrames(Sample& sample, int frames) {
   const size_t before = sample.Frames().size();
   for (int i = 0; i < frames; ++i) sample.RenderFrame();
   const auto& all = sample.Frames();
   return std::vector<FrameRecord>(all.begin() + std::ptrdiff_t(std::min(before, all.size())), all.end());
+}
+
+void WarmUpFor(Sample& sample, int ms) {
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - start < std::chrono::milliseconds(ms)) sample.RenderFrame();
 }
 
 Image Capture(Sample& sample) {
@@ -101,7 +121,9 @@ void FillGpuTimes(const std::vector<std::vector<FrameRecord>>& rounds, BenchRow*
   std::vector<double> f, c, sc, p, scl, wall;
   // A result lags gpuFrameDelay frames; a record without a new result
   // repeats an older one and is not a sample.
+  row->roundFrameMs.clear(), row->roundClearMs.clear(), row->roundScaleMs.clear();
   for (const std::vector<FrameRecord>& records : rounds) {
+  const size_t before = f.size();
   const int64_t firstMeasured = records.empty() ? 0 : records.front().frame;
   for (const FrameRecord& r : records) {
     wall.push_back(r.cpuFrameMs);
@@ -112,6 +134,14 @@ void FillGpuTimes(const std::vector<std::vector<FrameRecord>>& rounds, BenchRow*
     p.push_back(r.gpuPostP);
     scl.push_back(r.gpuScale);
   }
+  if (rounds.size() > 1) {
+    auto median = [&](const std::vector<double>& v) {
+      return Percentile(std::vector<double>(v.begin() + std::ptrdiff_t(before), v.end()), 0.5);
+    };
+    row->roundFrameMs.push_back(median(f));
+    row->roundClearMs.push_back(median(c));
+    row->roundScaleMs.push_back(median(scl));
+  }
   }
   row->gpuSamples = int(f.size());
   row->gpuFrame = Summarise(f);
@@ -120,6 +150,14 @@ void FillGpuTimes(const std::vector<std::vector<FrameRecord>>& rounds, BenchRow*
   row->gpuPost = Summarise(p);
   row->gpuScale = Summarise(scl);
   row->wall = Summarise(wall);
+}
+
+double RoundSpread(const std::vector<double>& perRound) {
+  double lo = INFINITY, hi = -INFINITY;
+  int n = 0;
+  for (double v : perRound)
+    if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v), ++n;
+  return n >= 2 ? hi - lo : std::nan("");
 }
 
 Progress::Progress(size_t total) : total_(total), tty_(isatty(2)) {}

@@ -24,11 +24,22 @@ struct MeanCi {
   double mean, halfWidth;
 };
 MeanCi BlockMeanCi(const std::vector<double>& perFrame, int blocks);
+// The paired difference a[i] - b[i] (pairs where both are finite): its mean
+// and the 95 % interval from the means of `blocks` consecutive blocks of
+// pairs (blocks = pairs: per pair, as for views). The pairs must be matched:
+// the same frame of two sequences of the same animation times, or the same view.
+MeanCi PairedDifferenceCi(const std::vector<double>& a, const std::vector<double>& b, int blocks);
+// Where the interval lies against `threshold`: +1 wholly above, -1 wholly
+// below, 0 it spans the threshold (or is unknown): cannot decide.
+int SideOf(const MeanCi& d, double threshold);
 // The two-sided 95 % Student t quantile for `dof` degrees of freedom.
 double StudentT95(int dof);
 
 // Renders `frames` frames and returns the records they produced.
 std::vector<FrameRecord> RenderFrames(Sample& sample, int frames);
+// Renders frames until `ms` milliseconds have passed (none for ms <= 0): a
+// warm-up by time, since GPU clocks fall while the CPU computes metrics.
+void WarmUpFor(Sample& sample, int ms);
 // Renders one frame and returns its back buffer (without GUI).
 Image Capture(Sample& sample);
 // The sample's options for one view: headless, manual control, no GUI, the
@@ -38,6 +49,9 @@ Options ViewOptions(const BenchPlan& plan, const BenchView& view);
 // belong to one of them; gpuSamples counts the distinct results.
 // `rounds`: runs of consecutive frames (the delay check is per run).
 void FillGpuTimes(const std::vector<std::vector<FrameRecord>>& rounds, BenchRow* row);
+
+// Largest minus smallest of the finite per-round medians (NaN with fewer than 2).
+double RoundSpread(const std::vector<double>& perRound);
 
 class Progress {
  public:

@@ -1,7 +1,5 @@
 #include "bench/BenchReport.h"
 
-#include "Json.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,23 +11,15 @@
 #include "Options.h"
 #include "analysis/Plot.h"
 #include "bench/Bench.h"
+#include "bench/BenchColumns.h"
+#include "bench/BenchCommon.h"
 #include "bench/BenchReportSections.h"
 
 namespace drr {
 namespace {
 
-std::string Num(double v, int decimals = 4) {
-  if (std::isnan(v)) return "";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[64];
-  std::snprintf(buf, sizeof(buf), "%.*f", decimals, v);
-  return buf;
-}
+std::string Num(double v, int decimals = 4) { return FormatNumber(v, decimals); }
 
-// JSON has no infinity: identical images report "psnr": null with "identical": true.
-std::string JsonNum(double v, int decimals = 6) {
-  return std::isfinite(v) ? Num(v, decimals) : "null";
-}
 
 
 // Mean over views of a row value, for one filter and scale (NaN if none).
@@ -74,31 +64,9 @@ bool WriteCsv(const BenchResults& res, const std::string& path, std::string* err
     *error = "cannot write " + path;
     return false;
   }
-  out << "view,filter,scale,viewport_w,viewport_h,psnr_db,ssim,max_abs_error,mse,valid,"
-         "gpu_frame_ms,gpu_frame_p25,gpu_frame_p75,gpu_clear_ms,gpu_scene_ms,gpu_post_ms,"
-         "gpu_scale_ms,gpu_scale_p25,gpu_scale_p75,wall_ms,wall_p25,wall_p75,anim_time,"
-         "ghost_fraction,psnr_vs_native_db,gpu_samples,moving,speed,quality_frames,supersampling,"
-         "flip,flip_ci95,psnr_ci95,flicker_rms\n";
-  for (const auto& r : res.rows) {
-    out << '"' << r.view << "\"," << r.filter << ',' << Num(r.scale, 3) << ',' << r.viewportW
-        << ',' << r.viewportH << ',' << Num(r.error.psnr, 3) << ',' << Num(r.error.ssim, 5)
-        << ',' << Num(r.error.maxAbsError, 5) << ',' << Num(r.error.mse, 8) << ','
-        << (r.error.valid ? 1 : 0) << ',' << Num(r.gpuFrame.median) << ','
-        << Num(r.gpuFrame.p25) << ',' << Num(r.gpuFrame.p75) << ',' << Num(r.gpuClear.median)
-        << ',' << Num(r.gpuScene.median) << ',' << Num(r.gpuPost.median) << ','
-        << Num(r.gpuScale.median) << ',' << Num(r.gpuScale.p25) << ',' << Num(r.gpuScale.p75)
-        << ',' << Num(r.wall.median) << ',' << Num(r.wall.p25) << ',' << Num(r.wall.p75) << ','
-        << Num(r.animTime, 6) << ',' << Num(r.ghostFraction, 6) << ',' << Num(r.psnrVsNative, 3)
-        << ',' << r.gpuSamples << ',' << (r.moving ? 1 : 0) << ',' << Num(r.speed, 3) << ','
-        << r.qualityFrames << ',' << (r.superSampling ? 1 : 0) << ',' << Num(r.flip, 6) << ','
-        << Num(r.flipCi, 6) << ',' << Num(r.psnrCi, 3) << ',' << Num(r.flicker, 6) << '\n';
-  }
+  out << CsvHeader() << '\n';
+  for (const auto& r : res.rows) out << CsvLine(r) << '\n';
   return bool(out);
-}
-
-std::string StatJson(const Stat& s) {
-  return "{\"median\": " + JsonNum(s.median) + ", \"p25\": " + JsonNum(s.p25) +
-         ", \"p75\": " + JsonNum(s.p75) + "}";
 }
 
 bool WriteJson(const BenchResults& res, const std::string& path, std::string* error) {
@@ -107,41 +75,7 @@ bool WriteJson(const BenchResults& res, const std::string& path, std::string* er
     *error = "cannot write " + path;
     return false;
   }
-  const BenchPlan& plan = *res.plan;
-  out << "{\n  \"adapter\": " << JsonQuote(res.adapter) << ",\n  \"driver\": "
-      << JsonQuote(res.driver) << ",\n  \"date\": " << JsonQuote(Today())
-      << ",\n  \"quick\": " << (plan.quick ? "true" : "false") << ",\n  \"width\": "
-      << plan.base.width << ",\n  \"height\": " << plan.base.height
-      << ",\n  \"reference_factor\": " << plan.referenceFactor
-      << ",\n  \"warmup_frames\": " << plan.warmupFrames << ",\n  \"warmup_min_ms\": " << plan.warmupMs
-      << ",\n  \"measured_frames\": " << plan.measuredFrames << ",\n  \"seconds\": "
-      << Num(res.seconds, 2) << ",\n  \"validation_messages\": " << res.validationMessages
-      << ",\n  \"memory_bandwidth_gbs\": " << JsonNum(res.bandwidthGBs)
-      << ",\n  \"memory_bandwidth_source\": " << JsonQuote(res.bandwidthSource)
-      << ",\n  \"options\": " << OptionsToJson(plan.base) << ",\n  \"rows\": [\n";
-  for (size_t i = 0; i < res.rows.size(); ++i) {
-    const auto& r = res.rows[i];
-    out << "    {\"view\": " << JsonQuote(r.view) << ", \"filter\": " << JsonQuote(r.filter)
-        << ", \"scale\": " << Num(r.scale, 3) << ", \"viewport\": [" << r.viewportW << ", "
-        << r.viewportH << "], \"valid\": " << (r.error.valid ? "true" : "false")
-        << ", \"identical\": " << (r.error.valid && r.error.mse == 0 ? "true" : "false")
-        << ", \"psnr_db\": " << JsonNum(r.error.psnr) << ", \"ssim\": " << JsonNum(r.error.ssim)
-        << ", \"max_abs_error\": " << JsonNum(r.error.maxAbsError)
-        << ", \"gpu_ms\": {\"frame\": " << StatJson(r.gpuFrame)
-        << ", \"clear\": " << StatJson(r.gpuClear) << ", \"scene\": " << StatJson(r.gpuScene)
-        << ", \"post\": " << StatJson(r.gpuPost) << ", \"scale\": " << StatJson(r.gpuScale)
-        << "}, \"gpu_samples\": " << r.gpuSamples
-        << ", \"wall_ms\": " << StatJson(r.wall) << ", \"anim_time\": " << JsonNum(r.animTime)
-        << ", \"ghost_fraction\": " << JsonNum(r.ghostFraction)
-        << ", \"psnr_vs_native_db\": " << JsonNum(r.psnrVsNative)
-        << ", \"moving\": " << (r.moving ? "true" : "false") << ", \"speed\": " << JsonNum(r.speed)
-        << ", \"quality_frames\": " << r.qualityFrames
-        << ", \"supersampling\": " << (r.superSampling ? "true" : "false") << ", \"flip\": " << JsonNum(r.flip)
-        << ", \"flip_ci95\": " << JsonNum(r.flipCi) << ", \"psnr_ci95\": " << JsonNum(r.psnrCi)
-        << ", \"flicker_rms\": " << JsonNum(r.flicker) << "}" << (i + 1 < res.rows.size() ? "," : "")
-        << "\n";
-  }
-  out << "  ]\n}\n";
+  out << BenchJson(res, Today()).dump(2) << '\n';
   return bool(out);
 }
 
@@ -251,10 +185,14 @@ void WriteTaaSettled(const BenchResults& res, std::ostringstream& md) {
   md << "\n\n";
 }
 
+}  // namespace
+
 void ClaimLine(std::ostringstream& md, const std::string& claim, const std::string& ours,
                const std::string& verdict) {
   md << "| " << claim << " | " << ours << " | " << verdict << " |\n";
 }
+
+namespace {
 
 // Scale-pass cost of the filters relative to each other.
 void ClaimScalePassRatios(const BenchResults& res, std::ostringstream& md) {
@@ -297,6 +235,18 @@ void ClaimScalePassRatios(const BenchResults& res, std::ostringstream& md) {
   ClaimLine(md, "TAA (the velocity-reading one) costs 2.75x point", o2.str(), v);
 }
 
+// A time verdict only where the difference of two rows is larger than the
+// spread of either row over its interleaved timing rounds: else the reason
+// it cannot decide ("" when it can).
+std::string InsideRoundSpread(double difference, const std::vector<double>& a, const std::vector<double>& b) {
+  const double spread = std::max(RoundSpread(a), RoundSpread(b));
+  if (!std::isfinite(RoundSpread(a)) || !std::isfinite(RoundSpread(b)))
+    return "cannot decide (fewer than 2 timing rounds: no spread of repeated runs)";
+  if (std::abs(difference) > spread) return "";
+  return "cannot decide (the difference, " + Num(std::abs(difference), 3) + " ms, is inside the spread of repeated rounds, " +
+         Num(spread, 3) + " ms)";
+}
+
 void ClaimPsClear(const BenchResults& res, std::ostringstream& md) {
   const BenchRow* api = FindRow(res, "point api-clear");
   const BenchRow* ps = FindRow(res, "point ps-clear");
@@ -304,8 +254,10 @@ void ClaimPsClear(const BenchResults& res, std::ostringstream& md) {
   std::ostringstream o;
   o << "clear: ps " << Num(p, 3) << " vs api " << Num(a, 3) << " (frame " << Num(Median(ps, &BenchRow::gpuFrame), 3)
     << " vs " << Num(Median(api, &BenchRow::gpuFrame), 3) << ")";
+  const std::string noise = InsideRoundSpread(p - a, api ? api->roundClearMs : std::vector<double>{},
+                                              ps ? ps->roundClearMs : std::vector<double>{});
   ClaimLine(md, "Pixel-shader clear of the viewport beats the API clear at 0.71x", o.str(),
-            !(std::isfinite(a) && std::isfinite(p)) ? "cannot measure" : p < a ? "agree" : "disagree");
+            !(std::isfinite(a) && std::isfinite(p)) ? "cannot measure" : !noise.empty() ? noise : p < a ? "agree" : "disagree");
 }
 
 // Super sampling: is the extra cost mostly clears?
@@ -339,8 +291,13 @@ void ClaimFastTaa(const BenchResults& res, std::ostringstream& md) {
   std::ostringstream o;
   o << "scale pass: fast " << Num(fast, 3) << ", velocity-reading " << Num(vel, 3) << "; saving "
     << Num(100 * saving, 0) << " %";
+  const BenchRow* fastRow = FindRow(res, "taa fast (motion blur on)");
+  const BenchRow* velRow = FindRow(res, "taa velocity (motion blur off)");
+  const std::string noise = InsideRoundSpread(fast - vel, fastRow ? fastRow->roundScaleMs : std::vector<double>{},
+                                              velRow ? velRow->roundScaleMs : std::vector<double>{});
   ClaimLine(md, "Fast TAA (velocity in motion-blur alpha) ~40 % faster than the velocity-reading TAA", o.str(),
             !std::isfinite(saving) ? "cannot measure"
+            : !noise.empty()       ? noise
             : std::abs(saving - 0.40) <= 0.15 ? "agree (within 15 points of 40 %)"
                                                : "disagree (not within 15 points of 40 %)");
 }
@@ -361,77 +318,6 @@ void ClaimMotionBlur(const BenchResults& res, std::ostringstream& md) {
                                              : "disagree (image differs: > 2 dB and < 30 dB vs native)";
   }
   ClaimLine(md, "Motion blur at 0.71x: nearly the same image as native, shorter frame", o.str(), v);
-}
-
-std::string PsnrFlip(const QualityPoint& q) {
-  return Num(q.psnr, 2) + (std::isfinite(q.psnrCi) ? " ± " + Num(q.psnrCi, 2) : std::string()) + " dB / FLIP " + Num(q.flip, 4);
-}
-
-// "agree", "disagree" or "cannot decide (PSNR and FLIP disagree)" from what
-// each metric says.
-std::string BothMetrics(bool psnrSays, bool flipSays) {
-  if (psnrSays && flipSays) return "agree (PSNR and FLIP)";
-  if (!psnrSays && !flipSays) return "disagree (PSNR and FLIP)";
-  return std::string("cannot decide (PSNR says ") + (psnrSays ? "yes" : "no") + ", FLIP " + (flipSays ? "yes" : "no") + ")";
-}
-
-// TAA quality, judged on the moving camera (the still rows hold a settled
-// history of identical frames); the still numbers beside them.
-void ClaimTaaQuality(const BenchResults& res, std::ostringstream& md) {
-  const double speed = ReportSpeed(res);
-  const QualityPoint t71 = MovingPoint(res, speed, "taa", 0.71), t10 = MovingPoint(res, speed, "taa", 1.0);
-  const QualityPoint nat = MovingPoint(res, speed, "native", 1.0), sym10 = MovingPoint(res, speed, kTaaSymmetric, 1.0);
-  const QualityPoint s71 = StillPoint(res, "taa", 0.71), sNat = StillPoint(res, "native", 1.0);
-  std::ostringstream o;
-  o << "moving x" << Num(speed, 2) << " (" << nat.samples << " frames): taa 0.71 " << PsnrFlip(t71) << ", native "
-    << PsnrFlip(nat) << "; still (" << sNat.samples << " views): taa 0.71 " << PsnrFlip(s71) << ", native " << PsnrFlip(sNat);
-  std::string v = "cannot measure (no moving rows)";
-  if (std::isfinite(t71.psnr) && std::isfinite(nat.psnr))
-    v = BothMetrics(nat.psnr - t71.psnr <= 1.5, t71.flip <= 1.1 * nat.flip) +
-        "; criteria: within 1.5 dB of native, FLIP at most 1.1x native's";
-  ClaimLine(md, "TAA at 0.71x gives almost full-resolution quality (moving camera)", o.str(), v);
-  std::ostringstream o2;
-  o2 << "moving: taa 1.0 (original's jitter 0/0.5 px) " << PsnrFlip(t10) << "; symmetric jitter " << PsnrFlip(sym10)
-     << "; native " << PsnrFlip(nat);
-  v = "cannot measure (no moving rows)";
-  if (std::isfinite(t10.psnr) && std::isfinite(nat.psnr)) {
-    v = "original's jitter: " + BothMetrics(t10.psnr > nat.psnr, t10.flip < nat.flip);
-    if (std::isfinite(sym10.psnr)) v += "; symmetric jitter: " + BothMetrics(sym10.psnr > nat.psnr, sym10.flip < nat.flip);
-  }
-  ClaimLine(md, "TAA at >= 1.0x acts as anti-aliasing (better than native)", o2.str(), v);
-}
-
-// Bicubic against bilinear: still (mean over views, interval over views) and
-// moving. A difference inside the interval, or PSNR and FLIP pointing
-// different ways, cannot decide the claim.
-void ClaimBicubicQuality(const BenchResults& res, std::ostringstream& md) {
-  std::ostringstream o;
-  std::string v;
-  int better = 0, undecided = 0, worse = 0, negligible = 0;
-  auto judge = [&](const QualityPoint& bc, const QualityPoint& bl, const std::string& where) {
-    if (!std::isfinite(bc.psnr) || !std::isfinite(bl.psnr)) return;
-    const double d = bc.psnr - bl.psnr, ci = std::max(bc.psnrCi, bl.psnrCi), df = bc.flip - bl.flip;
-    o << where << ": " << Num(d, 2) << " dB" << (std::isfinite(ci) ? " (±" + Num(ci, 2) + ")" : std::string()) << ", FLIP "
-      << Num(df, 4) << "; ";
-    const bool psnrBetter = d > 0, flipBetter = df < 0;
-    if (std::abs(d) < 0.1 && std::abs(df) < 0.001) ++negligible;
-    else if (psnrBetter != flipBetter || (std::isfinite(ci) && std::abs(d) < ci)) ++undecided;
-    else if (psnrBetter) ++better;
-    else ++worse;
-  };
-  for (float s : res.plan->scales)
-    if (s <= 1.0f) judge(StillPoint(res, "bicubic", s), StillPoint(res, "bilinear", s), "still " + Num(s, 2));
-  const double speed = ReportSpeed(res);
-  for (float s : res.plan->movingScales)
-    judge(MovingPoint(res, speed, "bicubic", s), MovingPoint(res, speed, "bilinear", s), "moving " + Num(s, 2));
-  const int total = better + worse + undecided + negligible;
-  v = "better at " + std::to_string(better) + ", worse at " + std::to_string(worse) + ", under 0.1 dB and 0.001 FLIP at " +
-      std::to_string(negligible) + ", cannot decide at " + std::to_string(undecided) +
-      " (difference inside the interval, or PSNR and FLIP disagree) of " + std::to_string(total) + " scale points";
-  if (total == 0) v = "cannot measure";
-  else if ((undecided + negligible) * 2 >= total) v = "cannot decide: " + v;
-  else v = (better > worse ? "partly agree (better, not only at 0.5x): " : "disagree: ") + v;
-  ClaimLine(md, "Bicubic only slightly better than bilinear, and only at 0.5x", "bicubic - bilinear: " + o.str(), v);
 }
 
 // Figure 11: frame time grows with the scale.
@@ -498,18 +384,10 @@ void WriteGhosting(const BenchResults& res, std::ostringstream& md) {
                                                       : " (expected taa-basic)\n\n");
 }
 
-bool WriteSummary(const BenchResults& res, const std::string& path, std::string* error) {
+// The still PSNR table and the scale-pass cost table with the blit and the
+// bandwidth bound.
+void WritePsnrAndCost(const BenchResults& res, std::ostringstream& md) {
   const BenchPlan& plan = *res.plan;
-  std::ostringstream md;
-  md << "## " << (plan.quick ? "Quick" : "Full") << " sweep on " << res.adapter << "\n\n"
-     << "Driver " << res.driver << ", " << Today() << ", back buffer " << plan.base.width << "x"
-     << plan.base.height << ", reference " << plan.referenceFactor << "x"
-     << plan.referenceFactor << " super sampling, " << plan.warmupFrames << " warm-up frames (at least "
-     << plan.warmupMs << " ms) + "
-     << plan.measuredFrames << " measured frames per configuration, " << res.rows.size()
-     << " configurations in " << Num(res.seconds, 1) << " s, " << res.validationMessages
-     << " validation messages.\n\n";
-
   md << "### PSNR (dB, mean over views) by filter and scale\n\n| filter |";
   for (float s : plan.scales) md << ' ' << Num(s, 2) << " |";
   md << "\n| --- |";
@@ -555,6 +433,21 @@ bool WriteSummary(const BenchResults& res, const std::string& path, std::string*
   for (float s : plan.scales)
     md << ' ' << Num(s, 2) << ": " << Num(MeanPsnr(res, kFixedBlit, s), 2) << " dB;";
   md << "\n\n";
+}
+
+bool WriteSummary(const BenchResults& res, const std::string& path, std::string* error) {
+  const BenchPlan& plan = *res.plan;
+  std::ostringstream md;
+  md << "## " << (plan.quick ? "Quick" : "Full") << " sweep on " << res.adapter << "\n\n"
+     << "Driver " << res.driver << ", " << Today() << ", back buffer " << plan.base.width << "x"
+     << plan.base.height << ", reference " << plan.referenceFactor << "x"
+     << plan.referenceFactor << " super sampling, " << plan.warmupFrames << " warm-up frames (at least "
+     << plan.warmupMs << " ms) + "
+     << plan.measuredFrames << " measured frames per configuration, " << res.rows.size()
+     << " configurations in " << Num(res.seconds, 1) << " s, " << res.validationMessages
+     << " validation messages.\n\n";
+
+  WritePsnrAndCost(res, md);
   WriteStillQuality(res, md);
   WriteMovingQuality(res, md);
   WriteAblations(res, md);
@@ -585,6 +478,18 @@ bool WriteSummary(const BenchResults& res, const std::string& path, std::string*
 }
 
 }  // namespace
+
+void BenchResults::Add(BenchRow row) {
+  rows.push_back(std::move(row));
+  if (partialDir.empty() || plan == nullptr) return;
+  std::string error;
+  if (!WriteCsv(*this, partialDir + "/results.csv", &error) || !WriteJson(*this, partialDir + "/results.json", &error))
+    std::fprintf(stderr, "\nbench: %s (the partial results are not kept)\n", error.c_str());
+}
+
+std::string FlipName(const BenchResults& res) {
+  return std::isfinite(res.flipPpd) ? "FLIP (" + Num(res.flipPpd, 2) + " ppd)" : std::string("FLIP (67 ppd, before the ppd field)");
+}
 
 double ArticleScaleRatio(const std::string& filter) {
   static const std::map<std::string, double> ratios = {

@@ -40,13 +40,25 @@ struct BenchRow {
   double speed = 0.0;
   int qualityFrames = 1;       // distinct frames behind the image numbers
   bool superSampling = false;  // 2x render targets allowed in this row
-  // FLIP (mean per-pixel, LDR, 67 ppd; lower is better); moving rows: mean
-  // over frames, with the 95 % interval half-widths of PSNR and FLIP over
-  // blocks of frames. Flicker: TemporalErrorRms averaged over frame pairs.
+  // FLIP (mean per-pixel, LDR, at BenchResults::flipPpd; lower is better);
+  // moving rows: mean over frames, with the 95 % interval half-widths of
+  // PSNR and FLIP over blocks of frames. Instability (TemporalStability.h):
+  // moving rows, the mean over frame pairs of ReprojectedInstability with the
+  // reference's velocity; still rows, the mean RMS change between consecutive
+  // frames of a still camera (jitter instability). flicker: the former
+  // measure, the error image's frame-to-frame change WITHOUT motion
+  // compensation (it follows the error's size; kept in the data only).
   double flip = std::numeric_limits<double>::quiet_NaN();
   double flipCi = std::numeric_limits<double>::quiet_NaN();
   double psnrCi = std::numeric_limits<double>::quiet_NaN();
   double flicker = std::numeric_limits<double>::quiet_NaN();
+  double instability = std::numeric_limits<double>::quiet_NaN();
+  // Moving rows: the per-frame values behind the means (results.json only),
+  // instability from the second frame on. Empty on still rows (one per view).
+  std::vector<double> framePsnr, frameFlip, frameInstability;
+  // Interleaved timing: the median of each round (results.json only), so a
+  // time verdict can be held against the spread of repeated rounds.
+  std::vector<double> roundFrameMs, roundClearMs, roundScaleMs;
 };
 
 // Filter names of the rows that are not part of the filter x scale sweep.
@@ -75,6 +87,13 @@ struct BenchResults {
   // unknown), and where the figure comes from.
   double bandwidthGBs = std::numeric_limits<double>::quiet_NaN();
   std::string bandwidthSource;
+  double flipPpd = std::numeric_limits<double>::quiet_NaN();  // FLIP's pixels per degree in this run
+  std::string flipDisplay;  // how flipPpd was chosen
+  // When set, results.csv and results.json are rewritten into this folder as
+  // each row is added (Add), so an interrupted run keeps what it measured.
+  std::string partialDir;
+  bool complete = false;  // every planned row measured
+  void Add(BenchRow row);
 };
 
 // The article's scale-pass cost ratios to point filtering at 0.71x (Japanese

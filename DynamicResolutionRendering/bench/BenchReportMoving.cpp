@@ -1,5 +1,5 @@
 // summary.md sections on still and moving quality (PSNR with intervals, FLIP,
-// flicker), the ablations, iso-time and iso-quality tables, and the labelled
+// instability), the ablations, iso-time and iso-quality tables, and the labelled
 // Pareto fronts (still and moving).
 #include <algorithm>
 #include <cmath>
@@ -28,12 +28,13 @@ std::string FormatCell(double v, int decimals) {
 }
 
 QualityPoint StillPoint(const BenchResults& res, const std::string& filter, double scale) {
-  std::vector<double> psnr, flip, frame;
+  std::vector<double> psnr, flip, frame, instability;
   QualityPoint q{filter, scale};
   for (const BenchRow& r : res.rows) {
     if (r.moving || r.filter != filter || !Near(r.scale, scale) || !std::isfinite(r.error.psnr)) continue;
     psnr.push_back(r.error.psnr);
     flip.push_back(r.flip);
+    instability.push_back(r.instability);
     frame.push_back(r.gpuFrame.median);
     q.gpuSamples = q.gpuSamples == 0 ? r.gpuSamples : std::min(q.gpuSamples, r.gpuSamples);
   }
@@ -41,6 +42,7 @@ QualityPoint StillPoint(const BenchResults& res, const std::string& filter, doub
   const MeanCi p = BlockMeanCi(psnr, int(psnr.size())), f = BlockMeanCi(flip, int(flip.size()));
   q.psnr = p.mean, q.psnrCi = p.halfWidth, q.flip = f.mean, q.flipCi = f.halfWidth;
   q.frameMs = BlockMeanCi(frame, 1).mean;
+  q.instability = BlockMeanCi(instability, 1).mean;
   q.samples = int(psnr.size());
   return q;
 }
@@ -49,7 +51,7 @@ QualityPoint MovingPoint(const BenchResults& res, double speed, const std::strin
   QualityPoint q{filter, scale};
   for (const BenchRow& r : res.rows) {
     if (!r.moving || !Near(r.speed, speed) || r.filter != filter || !Near(r.scale, scale)) continue;
-    q.psnr = r.error.psnr, q.psnrCi = r.psnrCi, q.flip = r.flip, q.flipCi = r.flipCi, q.flicker = r.flicker;
+    q.psnr = r.error.psnr, q.psnrCi = r.psnrCi, q.flip = r.flip, q.flipCi = r.flipCi, q.instability = r.instability;
     q.frameMs = r.gpuFrame.median, q.samples = r.qualityFrames, q.gpuSamples = r.gpuSamples;
   }
   return q;
@@ -87,17 +89,18 @@ std::vector<QualityPoint> SweepPoints(const BenchResults& res, bool moving, doub
 
 void WriteStillQuality(const BenchResults& res, std::ostringstream& md) {
   const BenchPlan& plan = *res.plan;
-  md << "### Still camera: PSNR (dB) and FLIP by filter and scale\n\n"
+  md << "### Still camera: PSNR (dB) and " << FlipName(res) << " by filter and scale\n\n"
         "Each view a frozen animation time; mean over the " << plan.views.size()
      << " view(s), with the 95 % interval over views (Student t; one view: none). Rows at or below 1.0 "
         "without 2x targets; scales above 1.0 are super-sampling rows (2x targets allowed). "
-        "Cell: PSNR ± interval / FLIP (lower is better).\n\n| filter |";
+        "Cell: PSNR ± interval / FLIP (lower is better) / jitter instability (RMS change between consecutive frames, x1000).\n\n| filter |";
   for (float s : plan.scales) md << ' ' << N(s, 2) << (s > 1.0f ? " (2x)" : "") << " |";
   md << "\n| --- |";
   for (size_t i = 0; i < plan.scales.size(); ++i) md << " ---: |";
   md << '\n';
   auto cell = [&](const QualityPoint& q) {
-    md << ' ' << N(q.psnr, 2) << (std::isfinite(q.psnrCi) ? " ± " + N(q.psnrCi, 2) : "") << " / " << N(q.flip, 4) << " |";
+    md << ' ' << N(q.psnr, 2) << (std::isfinite(q.psnrCi) ? " ± " + N(q.psnrCi, 2) : "") << " / " << N(q.flip, 4) << " / "
+       << N(1000 * q.instability, 1) << " |";
   };
   for (Filter f : plan.filters) {
     md << "| " << FilterOption(f) << " |";
@@ -114,18 +117,20 @@ void WriteStillQuality(const BenchResults& res, std::ostringstream& md) {
 void WriteMovingQuality(const BenchResults& res, std::ostringstream& md) {
   const BenchPlan& plan = *res.plan;
   for (double speed : MovingSpeeds(res)) {
-    md << "### Moving camera x" << N(speed, 2) << ": PSNR (dB), FLIP, flicker\n\n"
+    md << "### Moving camera x" << N(speed, 2) << ": PSNR (dB), " << FlipName(res) << ", instability\n\n"
        << "The cinematic camera moving at " << N(speed, 2) << " x its animation speed (" << N(speed / 30.0, 4)
        << " s of animation a frame), " << plan.movingWarmup << " warm-up frames then " << plan.movingFrames
        << " frames, each against the reference of its own animation time; motion blur off, no 2x targets. "
-          "Cell: mean PSNR over frames ± 95 % interval (over 6 blocks of frames) / mean FLIP / flicker "
-          "(RMS frame-to-frame change of the error image, x1000; lower is better).\n\n| filter |";
+          "Cell: mean PSNR over frames ± 95 % interval (over 6 blocks of frames) / mean FLIP / instability "
+          "(RMS of the frame-to-frame change after reprojecting the previous frame with the reference's "
+          "velocity, less the reference's own change, x1000; 0 for an image that moves with the scene, "
+          "lower is better).\n\n| filter |";
     for (float s : plan.movingScales) md << ' ' << N(s, 2) << " |";
     md << "\n| --- |";
     for (size_t i = 0; i < plan.movingScales.size(); ++i) md << " ---: |";
     md << '\n';
     auto cell = [&](const QualityPoint& q) {
-      md << ' ' << N(q.psnr, 2) << " ± " << N(q.psnrCi, 2) << " / " << N(q.flip, 4) << " / " << N(1000 * q.flicker, 1) << " |";
+      md << ' ' << N(q.psnr, 2) << " ± " << N(q.psnrCi, 2) << " / " << N(q.flip, 4) << " / " << N(1000 * q.instability, 1) << " |";
     };
     for (Filter f : plan.movingFilters) {
       md << "| " << FilterOption(f) << " |";
@@ -140,7 +145,8 @@ void WriteMovingQuality(const BenchResults& res, std::ostringstream& md) {
 }
 
 void WriteAblations(const BenchResults& res, std::ostringstream& md) {
-  md << "### Ablations\n\n| what | camera | scale | PSNR dB | FLIP | flicker x1000 | frame ms | scale-pass ms | frames / GPU samples |\n"
+  md << "### Ablations\n\n| what | camera | scale | PSNR dB | " << FlipName(res)
+     << " | instability x1000 | frame ms | scale-pass ms | frames / GPU samples |\n"
         "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n";
   const std::string firstView = res.plan->views.empty() ? "" : res.plan->views.front().name;
   const double speed = ReportSpeed(res);
@@ -156,7 +162,7 @@ void WriteAblations(const BenchResults& res, std::ostringstream& md) {
     const std::string what = r.filter == "taa" ? "taa (asymmetric jitter, velocity-reading)" : r.filter;
     md << "| " << what << " | " << (r.moving ? "moving x" + N(r.speed, 2) : "still, " + r.view) << " | " << N(r.scale, 2)
        << " | " << N(r.error.psnr, 2) << (std::isfinite(r.psnrCi) ? " ± " + N(r.psnrCi, 2) : "") << " | " << N(r.flip, 4)
-       << " | " << N(1000 * r.flicker, 1) << " | " << N(r.gpuFrame.median, 3) << " | " << N(r.gpuScale.median, 3) << " | "
+       << " | " << N(1000 * r.instability, 1) << " | " << N(r.gpuFrame.median, 3) << " | " << N(r.gpuScale.median, 3) << " | "
        << r.qualityFrames << " / " << r.gpuSamples << " |\n";
   }
   md << "\nTexture mip bias: `taa` samples the scene's textures with the original's MipLODBias -0.5, `" << kTaaNoMipBias
@@ -196,7 +202,7 @@ void WriteIso(const std::vector<QualityPoint>& pts, const std::string& kind, std
 }
 
 void WriteIsoTables(const BenchResults& res, std::ostringstream& md) {
-  md << "### Iso-time and iso-quality (frame GPU time median; FLIP)\n\n"
+  md << "### Iso-time and iso-quality (frame GPU time median; " << FlipName(res) << ")\n\n"
         "Times are medians of the rows' own frames; on a loaded machine they move between rows, so read them "
         "as ratios within this run. Native = dynamic resolution off.\n\n";
   WriteIso(SweepPoints(res, false, 0), "Still camera (mean over views)", md);

@@ -19,7 +19,7 @@ struct QualityPoint {
   double scale = 1.0;
   double psnr = std::numeric_limits<double>::quiet_NaN(), psnrCi = std::numeric_limits<double>::quiet_NaN();
   double flip = std::numeric_limits<double>::quiet_NaN(), flipCi = std::numeric_limits<double>::quiet_NaN();
-  double flicker = std::numeric_limits<double>::quiet_NaN();
+  double instability = std::numeric_limits<double>::quiet_NaN();  // TemporalStability.h
   double frameMs = std::numeric_limits<double>::quiet_NaN();
   int samples = 0;     // views (still) or frames (moving) behind the image numbers
   int gpuSamples = 0;  // distinct GPU results (still: the fewest of the views)
@@ -30,6 +30,8 @@ QualityPoint MovingPoint(const BenchResults& res, double speed, const std::strin
 std::vector<double> MovingSpeeds(const BenchResults& res);
 double ReportSpeed(const BenchResults& res);  // 1 if measured, else the first speed; NaN: none
 
+// "FLIP (5.59 ppd)": the metric's name with the pixels per degree of the run.
+std::string FlipName(const BenchResults& res);
 // A table cell: v with `decimals` decimals, "-" for NaN.
 std::string FormatCell(double v, int decimals);
 // Two scales of the plan are the same scale (they come from parsed decimals).
@@ -40,6 +42,13 @@ void WriteMovingQuality(const BenchResults& res, std::ostringstream& md);
 void WriteAblations(const BenchResults& res, std::ostringstream& md);
 void WriteIsoTables(const BenchResults& res, std::ostringstream& md);
 bool WriteFrontPlots(const BenchResults& res, const std::string& dir, std::string* error);
+
+// One row of the claims table (BenchReport.cpp).
+void ClaimLine(std::ostringstream& md, const std::string& claim, const std::string& ours, const std::string& verdict);
+// The image-quality claims judged on paired intervals (BenchReportPaired.cpp):
+// TAA at 0.71 against native, TAA at 1.0 against native, bicubic against bilinear.
+void ClaimTaaQuality(const BenchResults& res, std::ostringstream& md);
+void ClaimBicubicQuality(const BenchResults& res, std::ostringstream& md);
 
 // The scale pass's bandwidth bound in ms (BenchReport.cpp): the viewport
 // read and the back buffer written once, 4 bytes a pixel each.

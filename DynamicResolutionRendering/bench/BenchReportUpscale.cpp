@@ -87,7 +87,7 @@ void WriteGoal(const BenchResults& res, double speed, std::ostringstream& md) {
 // the cost scale: still and moving image, scale pass against point.
 void WriteUpscalerTable(const BenchResults& res, double speed, float scale, std::ostringstream& md) {
   const BenchPlan& plan = *res.plan;
-  md << "| filter | still PSNR / FLIP | moving PSNR / FLIP / flicker | still scale pass x point | x bandwidth bound |\n"
+  md << "| filter | still PSNR / " << FlipName(res) << " | moving PSNR / FLIP / instability | still scale pass x point | x bandwidth bound |\n"
         "| --- | ---: | ---: | ---: | ---: |\n";
   for (Filter f : plan.filters) {
     if (int(f) < int(Filter::UpscaleNearest) && f != Filter::Bilinear && f != Filter::TAA) continue;
@@ -95,7 +95,7 @@ void WriteUpscalerTable(const BenchResults& res, double speed, float scale, std:
     const QualityPoint mv = MovingPoint(res, speed, FilterOption(f), scale);
     const PassCost c = CostOf(res, 0, FilterOption(f), scale), cp = CostOf(res, 0, "point", scale);
     md << "| " << FilterOption(f) << " | " << N(st.psnr, 2) << " / " << N(st.flip, 4) << " | " << N(mv.psnr, 2) << " / "
-       << N(mv.flip, 4) << " / " << N(1000 * mv.flicker, 1) << " | " << N(c.scaleMs / cp.scaleMs, 2) << " | "
+       << N(mv.flip, 4) << " / " << N(1000 * mv.instability, 1) << " | " << N(c.scaleMs / cp.scaleMs, 2) << " | "
        << N(c.scaleMs / ScalePassBoundMs(res, c.viewportW, c.viewportH), 1) << " |\n";
   }
   md << '\n';

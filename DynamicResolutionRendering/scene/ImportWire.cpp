@@ -1,10 +1,13 @@
 #include "scene/ImportWire.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <type_traits>
 
 #include <glm/gtc/type_ptr.hpp>
+
+#include "scene/DdsBlocks.h"
 
 namespace drr {
 
@@ -291,10 +294,31 @@ void WireWriteTexture(const TextureData& t, std::vector<uint8_t>* out) {
   Header(w, 0);
   w.PutString(t.source);
   w.Put(uint8_t(t.kind)), w.Put(uint8_t(t.hasAlpha));
-  const TextureMip empty;
-  const TextureMip& m = t.mips.empty() ? empty : t.mips[0];  // the parent builds the chain
-  w.Put(m.width), w.Put(m.height), w.PutArray(m.rgba);
+  w.Put(uint32_t(t.format)), w.Put(uint8_t(t.mipsFromFile));
+  // Decoded images send mip 0 (the parent builds the chain); DDS files all their mips.
+  const size_t count = t.mipsFromFile ? t.mips.size() : std::min<size_t>(t.mips.size(), 1);
+  w.Put(uint64_t(count));
+  for (size_t i = 0; i < count; ++i) w.Put(t.mips[i].width), w.Put(t.mips[i].height), w.PutArray(t.mips[i].rgba);
 }
+
+namespace {
+
+// Each mip half the size of the one before (at least 1) with exactly the bytes its format needs.
+std::string CheckTextureMips(const TextureData& d, uint32_t maxDimension) {
+  const uint32_t w = d.Width(), h = d.Height();
+  if (d.mips.empty() || d.mips.size() > 32 || w == 0 || h == 0 || w > maxDimension || h > maxDimension)
+    return std::to_string(d.mips.size()) + " mips, " + std::to_string(w) + "x" + std::to_string(h);
+  for (size_t i = 0; i < d.mips.size(); ++i) {
+    const TextureMip& m = d.mips[i];
+    if (m.width != std::max(1u, w >> i) || m.height != std::max(1u, h >> i) ||
+        m.rgba.size() != TextureMipBytes(d.format, m.width, m.height))
+      return "mip " + std::to_string(i) + ": " + std::to_string(m.width) + "x" + std::to_string(m.height) + ", " +
+             std::to_string(m.rgba.size()) + " bytes";
+  }
+  return "";
+}
+
+}  // namespace
 
 bool WireReadTexture(const std::vector<uint8_t>& in, uint32_t maxDimension, TextureData* t, std::string* error) {
   Reader r{in};
@@ -302,24 +326,30 @@ bool WireReadTexture(const std::vector<uint8_t>& in, uint32_t maxDimension, Text
   TextureData d;
   d.source = r.GetString();
   uint8_t kind = r.Get<uint8_t>();
-  r.Get<uint8_t>();  // the worker's hasAlpha: recomputed below from the texels
-  TextureMip m;
-  m.width = r.Get<uint32_t>(), m.height = r.Get<uint32_t>();
-  m.rgba = r.GetArray<uint8_t>();
-  if (!r.ok || r.pos != in.size() || kind > uint8_t(TextureKind::Specular)) {
+  d.hasAlpha = r.Get<uint8_t>() != 0;  // recomputed below for RGBA8 texels
+  d.format = d3dl::DXGI_FORMAT(r.Get<uint32_t>());
+  d.mipsFromFile = r.Get<uint8_t>() != 0;
+  const size_t count = r.Count(16);  // each mip: two sizes and an array length at least
+  for (size_t i = 0; i < count && r.ok; ++i) {
+    TextureMip m;
+    m.width = r.Get<uint32_t>(), m.height = r.Get<uint32_t>();
+    m.rgba = r.GetArray<uint8_t>();
+    d.mips.push_back(std::move(m));
+  }
+  if (!r.ok || r.pos != in.size() || kind > uint8_t(TextureKind::Specular) || !IsTextureDataFormat(d.format)) {
     *error = "the import worker's reply is truncated or malformed";
     return false;
   }
-  if (m.width == 0 || m.height == 0 || m.width > maxDimension || m.height > maxDimension ||
-      uint64_t(m.width) * m.height * 4 != m.rgba.size()) {
-    *error = "the import worker returned an image of inconsistent size (" + std::to_string(m.width) + "x" +
-             std::to_string(m.height) + ", " + std::to_string(m.rgba.size()) + " bytes)";
+  if (std::string bad = CheckTextureMips(d, maxDimension); !bad.empty()) {
+    *error = "the import worker returned an image of inconsistent size (" + bad + ")";
     return false;
   }
-  for (size_t i = 3; i < m.rgba.size() && !d.hasAlpha; i += 4) d.hasAlpha = m.rgba[i] < 255;
+  if (!BcBlockBytes(d.format)) {
+    const auto& m = d.mips[0].rgba;
+    d.hasAlpha = false;
+    for (size_t i = 3; i < m.size() && !d.hasAlpha; i += 4) d.hasAlpha = m[i] < 255;
+  }
   d.kind = TextureKind(kind);
-  d.format = TextureFormatFor(d.kind);
-  d.mips.push_back(std::move(m));
   *t = std::move(d);
   return true;
 }

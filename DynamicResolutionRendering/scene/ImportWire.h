@@ -16,7 +16,7 @@ namespace drr {
 
 // The first bytes of every reply; a reply without them is not the worker's.
 inline constexpr uint32_t kImportWireMagic = 0x49525244;  // "DRRI"
-inline constexpr uint32_t kImportWireVersion = 1;
+inline constexpr uint32_t kImportWireVersion = 2;
 
 // A reply: success with a payload, or failure with the worker's message.
 void WireWriteError(const std::string& message, std::vector<uint8_t>* out);

@@ -6,7 +6,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <mutex>
+#include <sstream>
 #include <vector>
 
 #include <fcntl.h>
@@ -50,6 +52,21 @@ std::vector<std::string> WorkerEnvironment(const ImportLimits& limits) {
   return env;
 }
 
+// CPU time (user + system) that process pid has used, in clock ticks
+// (fields 14 and 15 of /proc/<pid>/stat); -1 when it cannot be read.
+long long ProcessCpuTicks(pid_t pid) {
+  std::ifstream f("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  std::getline(f, line);
+  const size_t nameEnd = line.rfind(')');  // the name may hold spaces
+  if (nameEnd == std::string::npos) return -1;
+  std::istringstream fields(line.substr(nameEnd + 1));
+  std::string skipped;
+  for (int i = 3; i < 14; ++i) fields >> skipped;
+  long long user = 0, system = 0;
+  return (fields >> user >> system) ? user + system : -1;
+}
+
 // The worker serves one request after another over a socket (a socket, not
 // pipes, so that writing to a worker that died is an error, not SIGPIPE).
 // It is started on the first request, kept for the next ones (starting it
@@ -60,13 +77,16 @@ class Worker {
   ~Worker() { Stop(); }
   // Sends the request's fields and reads the reply; false with *error set
   // (naming path) when the worker died, passed a limit or could not start.
-  bool Request(const std::string& path, const std::vector<std::string>& fields, const ImportLimits& limits,
+  // caps: the worker's limits; CPU and wall time of this request are those
+  // for path's size (ImportLimitsForFile).
+  bool Request(const std::string& path, const std::vector<std::string>& fields, const ImportLimits& caps,
                std::vector<uint8_t>* reply, std::string* error);
 
  private:
-  enum class Stop_ { None, Timeout, TooLarge, Broken };
+  enum class Stop_ { None, Timeout, CpuTime, TooLarge, Broken };
   bool Start(const ImportLimits& limits, std::string* error);
   Stop_ Exchange(const std::string& request, const ImportLimits& limits, std::vector<uint8_t>* reply);
+  bool PastCpuLimit(long long startTicks, uint32_t cpuSeconds) const;
   int Stop(bool kill = false);  // the wait status
   pid_t pid_ = -1;
   int fd_ = -1;
@@ -117,9 +137,19 @@ int Worker::Stop(bool kill) {
   return status;
 }
 
+// Whether the worker has used more than cpuSeconds of CPU since startTicks.
+// The worker's own RLIMIT_CPU (its caps) stays as the backstop.
+bool Worker::PastCpuLimit(long long startTicks, uint32_t cpuSeconds) const {
+  static const long ticksPerSecond = sysconf(_SC_CLK_TCK);
+  const long long now = ProcessCpuTicks(pid_);
+  return startTicks >= 0 && now >= 0 && now - startTicks > (long long)cpuSeconds * ticksPerSecond;
+}
+
 // Writes the request, then reads the reply (a 64-bit length, then the bytes)
-// within the wall-time and size limits.
+// within the CPU-time, wall-time and size limits; the CPU time is looked at
+// every tenth of a second while the worker has not answered.
 Worker::Stop_ Worker::Exchange(const std::string& request, const ImportLimits& limits, std::vector<uint8_t>* reply) {
+  const long long cpuStart = ProcessCpuTicks(pid_);
   if (send(fd_, request.data(), request.size(), MSG_NOSIGNAL) != ssize_t(request.size())) return Stop_::Broken;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(limits.wallSeconds);
   uint64_t length = 0;
@@ -129,8 +159,9 @@ Worker::Stop_ Worker::Exchange(const std::string& request, const ImportLimits& l
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) return Stop_::Timeout;
     pollfd p{fd_, POLLIN, 0};
-    const int pr = poll(&p, 1, int(std::min<int64_t>(left.count(), 1000)));
+    const int pr = poll(&p, 1, int(std::min<int64_t>(left.count(), 100)));
     if (pr < 0 && errno != EINTR) return Stop_::Broken;
+    if (pr == 0 && PastCpuLimit(cpuStart, limits.cpuSeconds)) return Stop_::CpuTime;
     if (pr <= 0) continue;
     const size_t want = headerRead < 8 ? 8 - headerRead : std::min<uint64_t>(sizeof buf, length - reply->size());
     const ssize_t n = recv(fd_, buf, want, 0);
@@ -152,9 +183,13 @@ std::string SignalText(int sig) {
   return "signal " + std::to_string(sig) + (d ? std::string(": ") + d : std::string());
 }
 
-// Why the worker ended without a usable reply, as a sentence.
-std::string Failure(bool timeout, bool tooLarge, int status, const ImportLimits& limits) {
+// Why the worker ended without a usable reply, as a sentence; limits are
+// those of this file.
+std::string Failure(bool timeout, bool cpuTime, bool tooLarge, int status, const ImportLimits& limits) {
   if (timeout) return "the import did not finish within " + std::to_string(limits.wallSeconds) + " s (killed)";
+  if (cpuTime)
+    return "the import used more than its " + std::to_string(limits.cpuSeconds) +
+           " s of CPU time (the limit for a file of this size; killed)";
   if (tooLarge) return "the decoded data exceeds " + std::to_string(limits.replyMiB) + " MiB (killed)";
   if (WIFSIGNALED(status)) {
     const int sig = WTERMSIG(status);
@@ -168,7 +203,7 @@ std::string Failure(bool timeout, bool tooLarge, int status, const ImportLimits&
   return "the import worker gave no reply";
 }
 
-bool Worker::Request(const std::string& path, const std::vector<std::string>& fields, const ImportLimits& limits,
+bool Worker::Request(const std::string& path, const std::vector<std::string>& fields, const ImportLimits& caps,
                      std::vector<uint8_t>* reply, std::string* error) {
   std::string request;
   for (const auto& f : fields) {
@@ -179,13 +214,14 @@ bool Worker::Request(const std::string& path, const std::vector<std::string>& fi
     request += (request.empty() ? "" : "\t") + f;
   }
   request += '\n';
-  const bool sameLimits = limits.memoryMiB == limits_.memoryMiB && limits.cpuSeconds == limits_.cpuSeconds &&
-                          limits.wallSeconds == limits_.wallSeconds && limits.replyMiB == limits_.replyMiB;
+  const bool sameLimits = caps.memoryMiB == limits_.memoryMiB && caps.cpuSeconds == limits_.cpuSeconds &&
+                          caps.wallSeconds == limits_.wallSeconds && caps.replyMiB == limits_.replyMiB;
   if (pid_ >= 0 && !sameLimits) Stop();
-  if (pid_ < 0 && !Start(limits, error)) {
+  if (pid_ < 0 && !Start(caps, error)) {
     *error = path + ": " + *error;
     return false;
   }
+  const ImportLimits limits = ImportLimitsForFile(caps, path);
   const Stop_ stop = Exchange(request, limits, reply);
   if (stop == Stop_::None) {
     // A worker's error reply (not status 0) may follow damage: start afresh next time.
@@ -193,7 +229,8 @@ bool Worker::Request(const std::string& path, const std::vector<std::string>& fi
     return true;
   }
   const int status = Stop(stop != Stop_::Broken);
-  *error = path + ": " + Failure(stop == Stop_::Timeout, stop == Stop_::TooLarge, status, limits);
+  *error = path + ": " +
+           Failure(stop == Stop_::Timeout, stop == Stop_::CpuTime, stop == Stop_::TooLarge, status, limits);
   reply->clear();
   return false;
 }
@@ -217,6 +254,30 @@ ImportLimits ImportLimits::FromEnvironment() {
   l.replyMiB = std::min<uint64_t>(EnvNumber("DRR_IMPORT_REPLY_MB", l.replyMiB), 1 << 20);
   l.memoryMiB = std::min<uint64_t>(l.memoryMiB, 1 << 24);
   return l;
+}
+
+uint64_t ImportInputBytes(const std::string& path) {
+  constexpr int kMostEntriesLookedAt = 4096;  // a huge folder costs no more than this
+  std::error_code ec;
+  const fs::path file(path);
+  uint64_t total = fs::file_size(file, ec);
+  if (ec) return 0;
+  const std::string stem = file.stem().string();
+  const fs::path folder = file.has_parent_path() ? file.parent_path() : fs::path(".");
+  int looked = 0;
+  for (fs::directory_iterator it(folder, ec), end; !ec && it != end && looked < kMostEntriesLookedAt;
+       it.increment(ec), ++looked) {
+    const std::string name = it->path().filename().string();
+    if (name == file.filename().string() || name.rfind(stem, 0) != 0) continue;
+    std::error_code sizeError;
+    const uint64_t size = it->is_regular_file(sizeError) ? it->file_size(sizeError) : 0;
+    if (!sizeError) total += size;
+  }
+  return total;
+}
+
+ImportLimits ImportLimitsForFile(const ImportLimits& caps, const std::string& path) {
+  return caps.ForInput(ImportInputBytes(path));
 }
 
 std::string ImportWorkerPath() {

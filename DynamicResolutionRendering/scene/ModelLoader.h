@@ -104,6 +104,10 @@ struct ModelLoadOptions {
   uint64_t maxVertices = 50'000'000;   // per model, larger is rejected
   uint64_t maxTriangles = 50'000'000;
   bool animationsOnly = false;         // skip meshes and materials (an animation file)
+  // SDKMESH vertices (SdkMeshModel.h): false reads them as the original's one input layout does
+  // (tangent and binormal at bytes 32 and 44 whatever the declaration says); true reads every
+  // element where the file's declaration puts it.
+  bool sdkmeshDeclaredLayout = false;
 };
 
 // Returns false with error naming the file on failure (Assimp import error,

@@ -13,6 +13,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "d3dl/D3DLike.h"
+#include "scene/DdsBlocks.h"
 #include "scene/IsolatedImport.h"
 #include "scene/ModelLoader.h"
 #include "scene/SceneDescription.h"
@@ -131,8 +132,13 @@ d3dl::PixelShader* SceneImpl::Variant(int v) {
   return ps[v].Get();
 }
 
-ComPtr<d3dl::ShaderResourceView> SceneImpl::Upload(const std::shared_ptr<const TextureData>& t, std::string* error) {
-  if (auto it = srvs.find(t.get()); it != srvs.end()) return it->second;
+ComPtr<d3dl::ShaderResourceView> SceneImpl::Upload(const std::shared_ptr<const TextureData>& loaded,
+                                                   std::string* error) {
+  if (auto it = srvs.find(loaded.get()); it != srvs.end()) return it->second;
+  // Block-compressed data as it is where the device samples it, else expanded to RGBA8 on the CPU.
+  const bool samples = device->CheckFormatSupport(loaded->format, d3dl::BIND_SHADER_RESOURCE);
+  const auto t = TextureForDevice(loaded, samples, error);
+  if (!t) return nullptr;
   d3dl::TEXTURE2D_DESC td;
   td.Width = t->Width();
   td.Height = t->Height();
@@ -143,7 +149,7 @@ ComPtr<d3dl::ShaderResourceView> SceneImpl::Upload(const std::shared_ptr<const T
   std::vector<d3dl::SUBRESOURCE_DATA> init(t->mips.size());
   for (size_t i = 0; i < t->mips.size(); ++i) {
     init[i].pSysMem = t->mips[i].rgba.data();
-    init[i].SysMemPitch = t->mips[i].width * 4;
+    init[i].SysMemPitch = UINT(TextureRowPitch(t->format, t->mips[i].width));
   }
   ComPtr<d3dl::Texture2D> tex;
   ComPtr<d3dl::ShaderResourceView> srv;
@@ -154,7 +160,8 @@ ComPtr<d3dl::ShaderResourceView> SceneImpl::Upload(const std::shared_ptr<const T
   }
   tex->SetDebugName(t->source.c_str());
   gpuTextureBytes += t->Bytes();
-  srvs[t.get()] = srv;
+  gpuTextureBytesAsRgba8 += t->BytesAsRgba8();
+  srvs[loaded.get()] = srv;
   return srv;
 }
 
@@ -484,12 +491,19 @@ CameraPose Scene::Camera(int i) const {
     // model's own cameras (the port's addition) keep their field of view.
     if (c.fileFov && cd.fovY > glm::radians(1.f) && cd.fovY < glm::radians(170.f)) pose.fovY = cd.fovY;
   } else {
-    // The original views from its camera model's last node with a mesh.
+    // The original views from its camera model's last node with a mesh, with the inverse of its
+    // world matrix: a frame scaled by s (its files' cameras: 10) divides view depths by s, which
+    // moves its 20 / 400000 clip planes to 20 s / 400000 s in world units.
     for (size_t n = e.model.nodes.size(); n-- > 0;)
       if (!e.model.nodes[n].meshes.empty() && n < e.globals.size()) {
         w = w * e.globals[n];
         break;
       }
+    const float depthScale = glm::length(glm::vec3(w[2]));
+    if (std::isfinite(depthScale) && depthScale > 1e-3f && depthScale < 1e3f) {
+      pose.nearZ *= depthScale;
+      pose.farZ *= depthScale;
+    }
   }
   glm::vec3 wp = glm::vec3(w * glm::vec4(p, 1.f));
   glm::vec3 wf = glm::normalize(glm::vec3(w * glm::vec4(look, 0.f)));
@@ -502,6 +516,7 @@ CameraPose Scene::Camera(int i) const {
 SceneStats Scene::Stats() const {
   SceneStats s = impl_->stats;
   s.textureBytes = impl_->gpuTextureBytes;
+  s.textureBytesAsRgba8 = impl_->gpuTextureBytesAsRgba8;
   s.shaderVariantsUsed = 0;
   for (auto& p : impl_->ps) s.shaderVariantsUsed += p ? 1 : 0;
   for (auto& p : impl_->gbufferPs) s.shaderVariantsUsed += p ? 1 : 0;

@@ -101,6 +101,7 @@ SceneLightingValues SceneLighting(bool lit);
 struct SceneStats {
   uint32_t drawsIssued = 0, drawsCulled = 0, shaderVariantsUsed = 0, texturesLoaded = 0;
   uint64_t textureBytes = 0, vertexBytes = 0, indexBytes = 0;
+  uint64_t textureBytesAsRgba8 = 0;  // the uploaded textures as RGBA8 (textureBytes is less where BC data stays compressed)
   uint64_t triangles = 0;  // of the whole scene (drawn or not)
   uint32_t tessellatedDraws = 0;  // draws through the hull/domain shaders (--tessellation)
   uint64_t patchesSubmitted = 0;  // their input triangles (the hull shader culls some)

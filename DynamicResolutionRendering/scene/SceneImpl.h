@@ -183,6 +183,7 @@ struct SceneImpl {
   std::map<std::string, std::vector<GpuMesh>> uploaded;  // one upload per distinct file
   std::map<const TextureData*, ComPtr<d3dl::ShaderResourceView>> srvs;
   uint64_t gpuTextureBytes = 0;
+  uint64_t gpuTextureBytesAsRgba8 = 0;  // the same textures expanded to RGBA8
 
   void Warn(const std::string& w);
   bool CreateShaders(std::string* error);

@@ -8,6 +8,8 @@
 
 #include "imageio/ImageFile.h"
 #include "imageio/Srgb.h"
+#include "scene/DdsBlocks.h"
+#include "scene/DdsReader.h"
 
 namespace drr {
 namespace fs = std::filesystem;
@@ -28,6 +30,12 @@ d3dl::DXGI_FORMAT TextureFormatFor(TextureKind k) {
 uint64_t TextureData::Bytes() const {
   uint64_t b = 0;
   for (const auto& m : mips) b += m.rgba.size();
+  return b;
+}
+
+uint64_t TextureData::BytesAsRgba8() const {
+  uint64_t b = 0;
+  for (const auto& m : mips) b += uint64_t(m.width) * m.height * 4;
   return b;
 }
 
@@ -158,10 +166,16 @@ bool Guarded(const std::string& name, std::string* error, F step) {
   }
 }
 
+bool HasDdsExtension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".dds";
+}
+
 }  // namespace
 
 void GenerateMipChain(TextureData* tex) {
-  if (tex->mips.empty()) return;
+  if (tex->mips.empty() || tex->mipsFromFile || BcBlockBytes(tex->format)) return;
   tex->mips.resize(1);
   while (tex->mips.back().width > 1 || tex->mips.back().height > 1)
     tex->mips.push_back(Downsample(tex->mips.back(), tex->kind));
@@ -194,6 +208,12 @@ bool LoadTextureFile(const std::string& path, TextureKind kind, const TextureLoa
     return false;
   }
   return Guarded(path, error, [&] {
+    if (HasDdsExtension(path)) {
+      DdsImage dds;
+      if (!ReadDdsFile(path, opts.maxDimension, &dds, error)) return false;
+      TextureFromDds(std::move(dds), path, kind, opts, out);
+      return true;
+    }
     ImageFileData img;
     std::string reason;
     if (!ReadImageFile(path, &img, &reason, opts.maxDimension)) {
@@ -214,6 +234,14 @@ bool LoadTextureMemory(const void* data, size_t size, const std::string& formatH
   for (auto& c : hint) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (hint == "jpeg") hint = "jpg";
   return Guarded(name, error, [&] {
+    if (hint == "dds" || IsDdsData(static_cast<const uint8_t*>(data), size)) {
+      // Embedded textures leave the import worker as RGBA8 (mip 0): expand here.
+      DdsImage dds;
+      if (!ReadDds(static_cast<const uint8_t*>(data), size, name, opts.maxDimension, &dds, error)) return false;
+      TextureData t;
+      TextureFromDds(std::move(dds), name, kind, opts, &t);
+      return ExpandToRgba8(t, out, error);
+    }
     ImageFileData img;
     std::string reason;
     if (!ReadImageMemory(data, size, "embedded." + hint, &img, &reason, opts.maxDimension)) {

@@ -15,7 +15,8 @@
 // usage: drr_arenagen --out <dir> [--detail small|large] [--seed N]
 //
 // Textures, meshes and the glTF writer live in ArenaTextures, ArenaMesh and
-// ArenaGltf; this file lays out the scene and writes its files.
+// ArenaGltf; this file lays out the scene and writes its files. The small
+// SDKMESH set of the reader tests (ArenaGenSdkMesh.h) goes into <out>/sdkmesh.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -30,6 +31,8 @@
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
 
+#include "ArenaGenDds.h"
+#include "ArenaGenSdkMesh.h"
 #include "ArenaGltf.h"
 #include "ArenaMath.h"
 #include "ArenaMesh.h"
@@ -517,6 +520,10 @@ int Run(const Detail& d, const fs::path& out, uint64_t seed) {
     return 1;
   }
   if (!WriteSceneDescription(out, d, seed, triTotal)) return 1;
+  if (std::string error; !sdkgen::WriteSdkMeshSet(out / "sdkmesh", &error)) {
+    fprintf(stderr, "drr_arenagen: %s\n", error.c_str());
+    return 1;
+  }
   printf("drr_arenagen: wrote the %s Arena (%llu triangles) to %s\n", d.name, (unsigned long long)triTotal, out.string().c_str());
   return 0;
 }
@@ -540,5 +547,6 @@ int main(int argc, char** argv) {
     else return Usage();
   }
   if (outDir.empty() || (detail != "small" && detail != "large")) return Usage();
-  return Run(detail == "small" ? kSmall : kLarge, outDir, seed);
+  const int rc = Run(detail == "small" ? kSmall : kLarge, outDir, seed);
+  return rc != 0 ? rc : arena::WriteArenaDdsSet(outDir);
 }

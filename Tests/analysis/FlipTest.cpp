@@ -77,6 +77,42 @@ TEST(Flip, FilterRadiiAndPixelsPerDegree) {
   EXPECT_EQ(drr::FlipFeatureRadius(30.0), 4);  // 3.69
 }
 
+TEST(Flip, FullScreenOnTheReferenceDisplay) {
+  // The frame stretched over FLIP's 0.7 m, 3840-pixel display seen from 0.7 m:
+  // ppd = 0.7 m x (w / 0.7 m) x pi / 180 = w pi / 180.
+  EXPECT_NEAR(drr::FlipFullScreenPpd(3840), 67.02, 0.01);
+  EXPECT_NEAR(drr::FlipFullScreenPpd(320), 320 * 3.14159265358979 / 180, 1e-9);  // 5.585
+  EXPECT_NEAR(drr::FlipFullScreenPpd(1920), 33.51, 0.01);
+  // At 5.585 ppd both filters reach one pixel: CSF 3 x 0.04502 x 5.585 = 0.754,
+  // features 3 x 0.041 x 5.585 = 0.687.
+  EXPECT_EQ(drr::FlipCsfRadius(drr::FlipFullScreenPpd(320)), 1);
+  EXPECT_EQ(drr::FlipFeatureRadius(drr::FlipFullScreenPpd(320)), 1);
+}
+
+TEST(Flip, AtTheBenchPpdUniformErrorIsUnchangedAndEdgesStayLocal) {
+  const double ppd = drr::FlipFullScreenPpd(320);
+  // Normalised filters keep a uniform image: the same mapped colour error as at 67 ppd.
+  const auto grey = Uniform(24, 16, 0.5f, 0.5f, 0.5f), grey2 = Uniform(24, 16, 0.52f, 0.5f, 0.5f);
+  const double expected = drr::FlipColorError(drr::FlipHyAB(drr::FlipHunt(drr::FlipSrgbToLab({0.5, 0.5, 0.5})),
+                                                            drr::FlipHunt(drr::FlipSrgbToLab({0.52, 0.5, 0.5}))));
+  EXPECT_NEAR(drr::ComputeFlip(grey, grey2, ppd).mean, expected, 1e-4);
+  // An edge moved by a pixel (columns 30 -> 31): with 1-pixel filters only
+  // columns 28..32 can differ (the changed column 30, one filter tap, one
+  // feature tap); at 67 ppd the error reaches 19 columns on either side.
+  const uint32_t w = 64, h = 8;
+  const auto a = Step(w, h, 30), b = Step(w, h, 31);
+  const auto low = drr::ComputeFlip(a, b, ppd, true), high = drr::ComputeFlip(a, b, 67.0, true);
+  ASSERT_TRUE(low.valid && high.valid);
+  for (uint32_t x = 0; x < w; ++x) {
+    if (x < 28 || x > 32) {
+      EXPECT_EQ(low.map.pixels[4 * w + x], 0.0f) << x;
+    }
+  }
+  EXPECT_GT(low.map.pixels[4 * w + 30], 0.5f);
+  EXPECT_GT(high.map.pixels[4 * w + 25], 0.0f);
+  EXPECT_LT(low.mean, high.mean);
+}
+
 TEST(Flip, IdenticalImagesGiveZero) {
   const auto a = Step(40, 30, 17);
   const auto r = drr::ComputeFlip(a, a);

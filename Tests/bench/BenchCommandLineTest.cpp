@@ -148,3 +148,30 @@ TEST(BenchCommandLine, FilterAndScaleLists) {
     EXPECT_NE(m.find(c.expected), std::string::npos) << m;
   }
 }
+
+TEST(BenchCommandLine, FlipPpdFromTheDisplayOrGiven) {
+  BenchPlan plan;
+  std::string m;
+  ASSERT_EQ(Parse({"--quick"}, &plan, &m), 0) << m;
+  // 320 pixels full-screen on FLIP's 0.7 m, 3840-pixel display at 0.7 m: 320 pi / 180.
+  EXPECT_NEAR(drr::FlipPpd(plan), 5.585, 0.001);
+  BenchPlan given;
+  ASSERT_EQ(Parse({"--flip-ppd", "33.5"}, &given, &m), 0) << m;
+  EXPECT_DOUBLE_EQ(drr::FlipPpd(given), 33.5);
+  for (const char* bad : {"0", "-3", "abc", "1001"}) {
+    BenchPlan p;
+    EXPECT_EQ(Parse({"--flip-ppd", bad}, &p, &m), 2) << bad;
+    EXPECT_NE(m.find("1 to 1000"), std::string::npos) << m;
+  }
+}
+
+TEST(BenchCommandLine, TimingWarmUpByTime) {
+  BenchPlan full, quick, given;
+  std::string m;
+  ASSERT_EQ(Parse({}, &full, &m), 0) << m;
+  EXPECT_EQ(full.timingWarmupMs, 200);
+  ASSERT_EQ(Parse({"--quick"}, &quick, &m), 0) << m;
+  EXPECT_EQ(quick.timingWarmupMs, 0);
+  ASSERT_EQ(Parse({"--quick", "--timing-warmup-ms", "50"}, &given, &m), 0) << m;
+  EXPECT_EQ(given.timingWarmupMs, 50);
+}

@@ -1,4 +1,6 @@
-// Fuzz target: the sample's command line (arguments split at NUL or newline).
+// Fuzz target: the sample's command line (arguments split at NUL or newline),
+// and the report's options JSON of what it accepted (any bytes in a path,
+// invalid UTF-8 included, must be written without throwing).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -14,6 +16,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   drr::Options o;
   std::string message;
-  drr::ParseCommandLine(args, &o, &message);
+  if (drr::ParseCommandLine(args, &o, &message) == drr::ParseStatus::Ok) (void)drr::OptionsToJson(o);
   return 0;
 }

@@ -5,8 +5,11 @@
 #include <set>
 #include <string>
 
+#include <sstream>
+
 #include "Fixes.h"
 #include "GuiLogic.h"
+#include "OptionTable.h"
 #include "ZoomBox.h"
 
 using namespace drr;
@@ -162,8 +165,11 @@ TEST(GuiText, HelpLinesAndFixHelpText) {
   fix.Set(Fix::HelpText, true);
   std::vector<std::string> fixed = HelpLines(fix);
   ASSERT_EQ(fixed.size(), original.size());
-  for (size_t i = 0; i < original.size(); ++i)
-    if (i != 2 && i != 3) EXPECT_EQ(fixed[i], original[i]) << i;
+  for (size_t i = 0; i < original.size(); ++i) {
+    if (i != 2 && i != 3) {
+      EXPECT_EQ(fixed[i], original[i]) << i;
+    }
+  }
   EXPECT_EQ(fixed[2], "Reload shaders: F4");
   EXPECT_EQ(fixed[3], "Zoom box centre: Right Mouse Button");
   // Other fixes leave the help alone.
@@ -182,6 +188,74 @@ TEST(GuiFixes, OneCheckboxPerTableRowAllOff) {
     EXPECT_FALSE(toggles[i].on) << toggles[i].name;
   }
   for (const FixToggle& t : FixToggles(FixSet::All())) EXPECT_TRUE(t.on) << t.name;
+}
+
+// ---------------------------------------------------------------------------
+// The widgets of the settings rows (OptionTable.h).
+
+// A slider's range is its row's, which is the command line's: the ends are
+// accepted by the parser and a step beyond them is refused.
+TEST(GuiSettings, SlidersTakeTheCommandLinesRange) {
+  int sliders = 0;
+  for (const OptionRow& row : OptionRows()) {
+    if (row.widget != Widget::SliderInt && row.widget != Widget::SliderFloat) continue;
+    ++sliders;
+    const GuiSlider s = SliderOf(row);
+    for (const auto& [value, ok] : {std::pair{double(s.lo), true}, std::pair{double(s.hi), true},
+                                    std::pair{double(s.lo) - 0.5, false}, std::pair{double(s.hi) + 0.5, false}}) {
+      std::ostringstream text;
+      text << value;
+      Options o;
+      std::string m;
+      EXPECT_EQ(ParseCommandLine({row.name, text.str()}, &o, &m) == ParseStatus::Ok, ok)
+          << row.label << " " << value << ": " << m;
+    }
+  }
+  EXPECT_GE(sliders, 6);
+  // The three that once disagreed with the command line.
+  auto slider = [](auto field) { return SliderOf(*FindOptionOf(field)); };
+  EXPECT_EQ(slider(&Options::secondaryScreenPercentage).lo, 25.0f);
+  EXPECT_EQ(slider(&Options::secondaryScreenPercentage).hi, 100.0f);
+  EXPECT_EQ(slider(&Options::mipBias).lo, -4.0f);
+  EXPECT_EQ(slider(&Options::mipBias).hi, 4.0f);
+  EXPECT_EQ(slider(&Options::tessPixelsPerEdge).hi, 256.0f);
+  EXPECT_TRUE(slider(&Options::tessPixelsPerEdge).logarithmic);
+  EXPECT_FALSE(slider(&Options::secondaryScreenPercentage).logarithmic);
+}
+
+// Change detection covers exactly the settings that have a widget: a change
+// of any of them is applied, a change of the others (size, frames, paths) is not.
+TEST(GuiSettings, ChangeDetectionFollowsTheWidgetRows) {
+  int detected = 0;
+  for (const OptionRow& row : OptionRows()) {
+    if (row.field.index() == 0) continue;
+    Options a, b;
+    if (row.kind == OptionKind::Fixes) b.fixes = FixSet::All();
+    else if (row.kind == OptionKind::Path) b.*std::get<std::string Options::*>(row.field) = "x";
+    else if (row.kind == OptionKind::Choice) SetFieldNumber(row, &b, (int(FieldNumber(row, a)) + 1) % row.choices.count);
+    else SetFieldNumber(row, &b, FieldNumber(row, a) == 0 ? 1 : 0);
+    ASSERT_TRUE(FieldsDiffer(row, a, b)) << (row.name ? row.name : row.label);
+    EXPECT_EQ(SettingsDiffer(a, b), row.widget != Widget::None) << (row.name ? row.name : row.label);
+    detected += SettingsDiffer(a, b);
+  }
+  EXPECT_GE(detected, 25);
+}
+
+// The port's sections: one per group with a GUI title, in the table's order,
+// each with a widget; the original's widgets are not in them.
+TEST(GuiSettings, PortSectionsAreTheGroupsWithAGuiTitle) {
+  std::vector<std::string> titles;
+  for (const OptionGroup& g : OptionGroups()) {
+    if (!g.heading->label) continue;
+    titles.push_back(g.heading->label);
+    int widgets = 0;
+    for (const OptionRow& row : g.rows) widgets += row.widget != Widget::None && !row.original;
+    EXPECT_GT(widgets, 0) << titles.back();
+  }
+  const std::vector<std::string> expected = {"Resolution control (port)", "Upscaling (port)",
+                                             "Deferred shading (port)",   "Tessellation (port)",
+                                             "Port fixes",                "Recording threads (port)"};
+  EXPECT_EQ(titles, expected);
 }
 
 // ---------------------------------------------------------------------------

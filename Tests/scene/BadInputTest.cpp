@@ -59,7 +59,9 @@ TEST(BadInput, NaNVerticesAreDroppedWithAMessage) {
     }
   EXPECT_TRUE(std::isfinite(m.meshes[0].sphereRadius));
   // Either Assimp's FindInvalidData or our repair removed them; when ours did, it says so.
-  if (!m.warnings.empty()) EXPECT_TRUE(Contains(m.warnings, "non-finite")) << m.warnings.front();
+  if (!m.warnings.empty()) {
+    EXPECT_TRUE(Contains(m.warnings, "non-finite")) << m.warnings.front();
+  }
   fs::remove_all(dir);
 }
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# run_testmodels.sh <drr_model_probe> <models dir> <shard> <shards> [log]
+# run_testmodels.sh <drr_model_probe> <models dir> <shard> <shards> [log] [stride]
 # Loads every model file (by the extensions Assimp imports) of the models
-# folder that falls in this shard with drr_model_probe, each in its own process
+# folder that falls in this shard with drr_model_probe (with a stride N > 1,
+# a fixed sample: the 1st, (N+1)-th, (2N+1)-th... file in name order), each in its own process
 # under `timeout`, and classifies it: loaded (exit 0), clean failure (exit 1
 # with an "error:" message), crash (killed by a signal or any other exit),
 # hang (timeout). Exits non-zero if anything crashed or hung. The probe decodes
@@ -9,7 +10,7 @@
 # script's, so a file that hangs Assimp is a clean failure; the log records the
 # peak RSS of probe + worker per file (GNU time, when installed).
 set -u
-probe=$1; dir=$2; shard=${3:-0}; shards=${4:-1}; log=${5:-/dev/null}
+probe=$1; dir=$2; shard=${3:-0}; shards=${4:-1}; log=${5:-/dev/null}; stride=${6:-1}
 limit=${DRR_PROBE_TIMEOUT:-60}
 export DRR_IMPORT_CPU_SECONDS=${DRR_IMPORT_CPU_SECONDS:-10} DRR_IMPORT_TIMEOUT_SECONDS=${DRR_IMPORT_TIMEOUT_SECONDS:-20}
 export DRR_IMPORT_MEMORY_MB=${DRR_IMPORT_MEMORY_MB:-4096}
@@ -27,7 +28,8 @@ for f in "${files[@]}"; do
   base=${f##*/}; ext=${base##*.}; ext=${ext,,}
   [[ "$base" == *.* && -n "${ok_ext[$ext]:-}" ]] || continue
   idx=$((idx + 1))
-  (( (idx - 1) % shards == shard )) || continue
+  (( (idx - 1) % stride == 0 )) || continue
+  (( ((idx - 1) / stride) % shards == shard )) || continue
   n=$((n + 1))
   : > "$rssfile"
   out=$(timeout -k 5 "$limit" "${timecmd[@]}" "$probe" --quiet ${DRR_PROBE_ARGS:-} "$f" 2>&1); rc=$?
@@ -45,5 +47,5 @@ for f in "${files[@]}"; do
   fi
 done
 secs=$(( $(date +%s) - start ))
-echo "assimp-testmodels shard $shard/$shards: $n files: $loaded loaded, $failed clean failures, $crashed crashes, $hung hangs, peak RSS $((peak / 1024)) MiB (${secs}s, limit ${limit}s per file; log: $log)"
+echo "assimp-testmodels shard $shard/$shards (every ${stride}. file): $n files: $loaded loaded, $failed clean failures, $crashed crashes, $hung hangs, peak RSS $((peak / 1024)) MiB (${secs}s, limit ${limit}s per file; log: $log)"
 (( crashed == 0 && hung == 0 ))
