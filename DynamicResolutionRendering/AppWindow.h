@@ -44,7 +44,8 @@ class AppWindow {
   // Per frame: the window test's scripted step for `frame`, events, a
   // deferred full-screen request; Ready with the framebuffer size.
   Frame BeginFrame(int64_t frame, bool windowTest, uint32_t testW, uint32_t testH, uint32_t* fbW, uint32_t* fbH);
-  void WaitWhileMinimised();
+  // Blocks until the next window event (scripted: at most 20 ms).
+  void WaitWhileMinimised(bool scripted);
 
  private:
   void WindowTestStep(int64_t frame, uint32_t testW, uint32_t testH);

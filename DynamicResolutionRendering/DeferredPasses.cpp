@@ -208,12 +208,12 @@ void DeferredPasses::FullScreen(d3dl::DeviceContext* ctx, d3dl::PixelShader* ps)
 
 void DeferredPasses::Render(d3dl::DeviceContext* ctx, const FrameSetup& s, const SceneTargets& t,
                             RenderTargetSet& rts, Scene& scene, const SceneRenderParams& params,
-                            const DeferredFrame& f, FramePasses& passes) {
+                            const DeferredFrame& f, FrameProfiler& profiler) {
   ctx->BeginEvent("Deferred");
-  passes.Timers().scene.Start(ctx);
+  profiler.Timers().scene.Start(ctx);
   DeferredConstants c{};
   Shadows(ctx, scene, f, c);
-  if (c.shadow.x > 0) passes.CountPass("ShadowMaps");
+  if (c.shadow.x > 0) profiler.CountPass("ShadowMaps");
   // G-buffer: diffuse, specular, normal, then the velocity the forward path would write.
   d3dl::RenderTargetView* gbuffer[4] = {rts[RT::GBufferDiffuse].rtv.Get(), rts[RT::GBufferSpecular].rtv.Get(),
                                         rts[RT::GBufferNormal].rtv.Get(), t.rtv[1]};
@@ -223,7 +223,7 @@ void DeferredPasses::Render(d3dl::DeviceContext* ctx, const FrameSetup& s, const
   gp.gbuffer = true;
   gp.writeVelocity = t.rtv[1] != nullptr;
   scene.Render(ctx, gp);
-  passes.CountPass("GBuffer");
+  profiler.CountPass("GBuffer");
   // The passes below read the depth target: unbind it first.
   FillConstants(s, rts, scene, params, f, c);
   d3dl::MAPPED_SUBRESOURCE map;
@@ -242,7 +242,7 @@ void DeferredPasses::Render(d3dl::DeviceContext* ctx, const FrameSetup& s, const
     FullScreen(ctx, m_SSAO.Get());
     d3dl::ShaderResourceView* none[2] = {};
     ctx->PSSetShaderResources(0, 2, none);
-    passes.CountPass("SSAO");
+    profiler.CountPass("SSAO");
     ctx->EndEvent();
   }
   ctx->BeginEvent("Lighting");
@@ -258,9 +258,9 @@ void DeferredPasses::Render(d3dl::DeviceContext* ctx, const FrameSetup& s, const
   FullScreen(ctx, m_Lighting.Get());
   d3dl::ShaderResourceView* none[6] = {};
   ctx->PSSetShaderResources(0, 6, none);
-  passes.CountPass("Lighting");
+  profiler.CountPass("Lighting");
   ctx->EndEvent();
-  passes.Timers().scene.Stop(ctx);
+  profiler.Timers().scene.Stop(ctx);
   ctx->EndEvent();
 }
 

@@ -11,6 +11,7 @@
 
 #include <glm/glm.hpp>
 
+#include "FrameProfiler.h"
 #include "FramePasses.h"
 #include "RenderTargets.h"
 #include "ShaderLibrary.h"
@@ -58,9 +59,9 @@ class DeferredPasses {
   void Release();
 
   // Shadows, G-buffer, SSAO and lighting into t.rtv[0] inside s.sceneViewport
-  // (scene timer, passes counted in FramePasses' passes_run).
+  // (scene timer and pass counts in the profiler).
   void Render(d3dl::DeviceContext* ctx, const FrameSetup& s, const SceneTargets& t, RenderTargetSet& rts,
-              Scene& scene, const SceneRenderParams& params, const DeferredFrame& f, FramePasses& passes);
+              Scene& scene, const SceneRenderParams& params, const DeferredFrame& f, FrameProfiler& profiler);
 
   // The shadow-map array's bytes (a 1x1 placeholder without shadowed spots) and the slices in use.
   uint64_t ShadowMapBytes() const;

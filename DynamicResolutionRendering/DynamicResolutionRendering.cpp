@@ -55,9 +55,17 @@ int Sample::Init(const Options& options, std::string* error) {
   if (m_Options.headless && (options.windowTest || options.fullscreen))
     Warn(std::string(options.windowTest ? "--window-test" : "--fullscreen") + " is ignored without a window (--headless)");
   m_Gui.enabled = options.gui;
+  // Per-frame records: streamed to a temporary file for the report, else in
+  // memory for in-process callers (Run turns them off without a report).
+  if (!m_Log.SetRecords(options.report.empty() ? FrameRecords::Memory : FrameRecords::Stream))
+    Warn("cannot create a temporary file for the report's frame records: the report lists none");
 
   if (!m_Device.Create(options.validation, m_Window, options.width, options.height, error)) return 1;
-  if (!m_Passes.Init(m_Device.Device(), m_Shaders, error)) return 1;
+  if (!m_Profiler.Init(m_Device.Device())) {
+    *error = "cannot create the GPU timer queries";
+    return 1;
+  }
+  if (!m_Passes.Init(m_Device.Device(), m_Shaders, &m_Profiler, error)) return 1;
   if (!m_Deferred.Init(m_Device.Device(), m_Shaders, error)) return 1;
   if (!LoadScene(error)) return 1;
   if (options.camera >= m_Cameras.Count()) {
@@ -168,25 +176,14 @@ bool Sample::ReloadShaders() {
 
 // ---------------------------------------------------------------------------
 // Render targets
-bool Sample::TAAActive() const {
-  // The original tested `enabled && TAA || TAA_NO || TAA_BASIC`; only a TAA
-  // mode with dynamic resolution on uses the two final targets.
-  return m_Options.dynamicResolution && IsTAA(m_Options.filter);
-}
-
-RenderTargetPlan Sample::Plan() const {
-  RenderTargetPlan p{m_Options.dynamicResolution, m_Options.superSampling, m_Options.motionBlur, TAAActive(),
-                     m_Options.fixes.Has(Fix::SrgbTargets), m_Device.Width(), m_Device.Height()};
-  // Upscaling (Docs/Upscaling.md): TAAU's history and the secondary upscale's output size.
-  p.taau = m_Options.dynamicResolution && IsTemporalUpsample(m_Options.filter);
-  p.sharpenPass = m_Options.dynamicResolution && HasSharpenPass(m_Options.filter);
-  const double secondary = m_Options.dynamicResolution ? m_Options.secondaryScreenPercentage / 100.0 : 1.0;
-  p.outputW = std::max(1u, uint32_t(std::lround(m_Device.Width() * secondary)));
-  p.outputH = std::max(1u, uint32_t(std::lround(m_Device.Height() * secondary)));
-  // Deferred shading (Docs/Deferred.md): the G-buffer exists only with it.
-  p.deferred = m_Options.renderer == Renderer::Deferred;
-  p.ssao = p.deferred && m_Options.ssao;
-  return p;
+FramePlan Sample::PlanNow() const {
+  FrameInputs in;
+  in.backBufferW = m_Device.Width();
+  in.backBufferH = m_Device.Height();
+  in.guiDrawn = m_Gui.enabled;
+  if (m_Scene)
+    for (const SceneLight& l : m_Scene->Lights()) in.shadowedLights += l.shadow;
+  return PlanFrame(m_Options, in);
 }
 
 bool Sample::InitDynamicResolution() {
@@ -194,7 +191,7 @@ bool Sample::InitDynamicResolution() {
   const float maxScaling = m_Options.superSampling ? 2.0f : 1.0f;
   m_DynamicResolution.InitializeResolutionParameters(m_Device.Width(), m_Device.Height(), kMaxRTSize, kMaxRTSize,
                                                      maxScaling);
-  const bool ok = m_Targets.Allocate(m_Device.Device(), Plan(), m_DynamicResolution.GetDynamicBufferWidth(),
+  const bool ok = m_Targets.Allocate(m_Device.Device(), PlanNow().targets, m_DynamicResolution.GetDynamicBufferWidth(),
                                      m_DynamicResolution.GetDynamicBufferHeight());
   if (ok) m_Targets.ZeroContents(m_Device.Context());
   m_History.current = 0;
@@ -234,7 +231,7 @@ void Sample::ApplySettings(const Options& o) {
     m_History.valid = false;
   }
   m_Options.camera = m_Cameras.Current();
-  if (!(Plan() == m_Targets.Plan())) InitDynamicResolution();
+  if (!(PlanNow().targets == m_Targets.Plan())) InitDynamicResolution();
   if (scaleChanged || m_Options.control == ControlMode::Manual)
     m_DynamicResolution.SetScale(m_Options.scaleX, m_Options.scaleY);
 }
@@ -287,16 +284,7 @@ void Sample::OnFrameMove(double elapsed) {
   m_Scene->Update(m_AnimationTime);
   // The original moves its first-person camera only while not paused.
   if (!m_Options.pause) m_Cameras.UpdateFirstPerson(m_Window.Handle(), !GuiInput::WantsKeyboard(), elapsed);
-  m_History.current = FlipsTargets() ? 1 - m_History.current : 0;
-}
-
-// The original flips the final/velocity pair when `enabled && TAA || TAA_NO ||
-// TAA_BASIC`: by operator precedence TAA Noise Offset and TAA Basic flip it
-// with dynamic resolution off too, where a paused scene then alternates
-// between its last two frames. The taa-flip fix flips only when TAA runs.
-bool Sample::FlipsTargets() const {
-  if (m_Options.fixes.Has(Fix::TaaFlip)) return TAAActive();
-  return TAAActive() || m_Options.filter == Filter::TAANoiseOffset || m_Options.filter == Filter::TAABasic;
+  m_History.current = PlanNow().flipsTargets ? 1 - m_History.current : 0;
 }
 
 void Sample::ControlResolution(double innerFrameSeconds, double frameSeconds, double gpuScale) {
@@ -320,7 +308,7 @@ void Sample::ControlResolution(double innerFrameSeconds, double frameSeconds, do
 // Which law runs when, on which GPU result (Feed in ResolutionController.h).
 void Sample::RunResolutionControl() {
   if (!m_Options.dynamicResolution || m_Options.control == ControlMode::Manual) return;
-  const AveragedGPUTimer& timer = m_Passes.Timers().frame;
+  const AveragedGPUTimer& timer = m_Profiler.Timers().frame;
   if (FeedFor(m_Options.law) == Feed::Original) {
     // The original: every frame from the first, on the 10-result average of
     // the inner-frame timer (0 until the first average) and 1 / DXUTGetFPS(),
@@ -337,13 +325,12 @@ void Sample::RunResolutionControl() {
       m_Controller = MakeController(m_Options.law, m_LawLatency);
     }
     // The result measured frame m_FrameCount - delay, rendered at that frame's scale.
-    const double measuredScale = m_Log.ScaleOfFrame(m_FrameCount - int64_t(timer.LastDelayFrames()));
-    ControlResolution(timer.LastMs() / 1000.0, m_LastFrameSeconds, measuredScale);
+    ControlResolution(timer.LastMs() / 1000.0, m_LastFrameSeconds, m_Profiler.ScaleOfLastResult(m_FrameCount));
   }
 }
 
 void Sample::UpdateStats() {
-  const FrameTimers& t = m_Passes.Timers();
+  const FrameTimers& t = m_Profiler.Timers();
   m_Stats.timing = {t.frame.AverageMs(), t.clear.AverageMs(), t.scene.AverageMs(), t.postP.AverageMs(),
                     t.scale.AverageMs(), m_RefreshHz};
   m_Stats.scaleX = m_DynamicResolution.GetScaleX();
@@ -351,10 +338,10 @@ void Sample::UpdateStats() {
 }
 
 // The frame's viewports, TAA jitter, ratios, target indices and constants.
-FrameSetup Sample::MakeFrameSetup() {
+FrameSetup Sample::MakeFrameSetup(const FramePlan& plan) {
   FrameSetup s;
   s.dynamic = m_Options.dynamicResolution;
-  s.taa = TAAActive();
+  s.taa = plan.TAA();
   s.motionBlur = m_Options.motionBlur;
   s.psClear = m_Options.psClear;
   s.markOutside = m_Options.debugMarkerOutside;
@@ -365,11 +352,11 @@ FrameSetup Sample::MakeFrameSetup() {
   s.backBufferViewport = {0, 0, float(m_Device.Width()), float(m_Device.Height()), 0, 1};
   s.sceneViewport = s.dynamic ? d3dl::VIEWPORT{v.TopLeftX, v.TopLeftY, v.Width, v.Height, v.MinDepth, v.MaxDepth}
                               : s.backBufferViewport;
-  const RenderTargetPlan& plan = m_Targets.Plan();
-  s.taau = plan.taau;
-  s.secondary = plan.dynamic && plan.Secondary();
+  const RenderTargetPlan& targets = m_Targets.Plan();
+  s.taau = targets.taau;
+  s.secondary = targets.dynamic && targets.Secondary();
   s.holdJitter = m_Options.pause;
-  s.outputViewport = s.secondary ? d3dl::VIEWPORT{0, 0, float(plan.outputW), float(plan.outputH), 0, 1}
+  s.outputViewport = s.secondary ? d3dl::VIEWPORT{0, 0, float(targets.outputW), float(targets.outputH), 0, 1}
                                  : s.backBufferViewport;
   m_History.Advance(s, s.dynamic ? glm::vec2(dr.GetRTScaleX(), dr.GetRTScaleY()) : glm::vec2(1.f),
                     m_Options.symmetricTAA);
@@ -388,7 +375,7 @@ SceneRenderParams Sample::SceneParams() const {
   p.proj = glm::perspectiveRH_ZO(pose.fovY, aspect, pose.nearZ, pose.farZ);
   // Jitter in pixels (x right, y down) -> NDC (+Y up).
   p.jitterNdc = glm::vec2(2.0f * m_History.jitterCurr.x, -2.0f * m_History.jitterCurr.y);
-  p.mipBiasSampler = TAAActive() && m_Options.taaMipBias;
+  p.mipBiasSampler = PlanNow().TAA() && m_Options.taaMipBias;
   // TAAU's automatic view mip bias: log2(screen percentage) + the user's bias.
   if (m_Targets.Plan().taau && m_Options.autoMipBias)
     p.viewMipBias = std::log2(m_DynamicResolution.GetScaleX()) + float(m_Options.mipBias);
@@ -413,16 +400,17 @@ SceneRenderParams Sample::SceneParams() const {
 void Sample::OnFrameRender(double elapsed) {
   d3dl::DeviceContext* ctx = m_Device.Context();
   // Re-create the targets when an option that decides them changed (GUI).
-  if (!(Plan() == m_Targets.Plan())) {
+  const FramePlan plan = PlanNow();
+  if (!(plan.targets == m_Targets.Plan())) {
     InitDynamicResolution();
-    if (TAAActive()) m_History.current = 1;
+    if (plan.TAA()) m_History.current = 1;
   }
-  FrameTimers& timers = m_Passes.Timers();
-  timers.Update(ctx);
+  FrameTimers& timers = m_Profiler.Timers();
+  m_Profiler.Poll(ctx);
   RunResolutionControl();
   if (timers.scene.NewAverage()) UpdateStats();  // as the original: after the control, when the scene timer completes a block
 
-  const FrameSetup setup = MakeFrameSetup();
+  const FrameSetup setup = MakeFrameSetup(plan);
   const BackBuffer bb = m_Device.Back();
   const SceneTargets scene = ChooseSceneTargets(m_Targets, setup, bb);
   SceneRenderParams params = SceneParams();
@@ -433,7 +421,7 @@ void Sample::OnFrameRender(double elapsed) {
   timers.frame.Start(ctx);
   m_Passes.Clear(ctx, setup, m_Targets, scene);
   if (m_Targets.Plan().deferred) m_Deferred.Render(ctx, setup, scene, m_Targets, *m_Scene, params,
-                                                   MakeDeferredFrame(setup), m_Passes);
+                                                   MakeDeferredFrame(setup), m_Profiler);
   else m_Passes.Scene(ctx, setup, scene, *m_Scene, params);
   m_ResetVelocityHistory = false;
   if (m_Log.Capturing()) {
@@ -516,7 +504,7 @@ void Sample::RenderGui(double elapsed) {
   }
   v.apply = [this](const Options& o) { ApplySettings(o); };
   m_Gui.Build(v);
-  if (m_Gui.Drawn()) m_Passes.CountPass("GUI");
+  if (m_Gui.Drawn()) m_Profiler.CountPass("GUI");
   const d3dl::VIEWPORT viewport{0, 0, float(m_Device.Width()), float(m_Device.Height()), 0, 1};
   m_Gui.Render(m_Device.Context(), m_Device.Back().rtv, viewport);
 }
@@ -535,9 +523,10 @@ bool Sample::RenderFrame() {
   switch (m_Window.BeginFrame(m_FrameCount, m_Options.windowTest, m_Options.width, m_Options.height, &fbW, &fbH)) {
     case AppWindow::Frame::Closed: return false;
     case AppWindow::Frame::Minimised:
-      m_Log.AddMinimised(m_FrameCount++, m_Window.Fullscreen());  // render nothing, wait a little
+      m_Profiler.EndFrame(m_FrameCount, 0.0f);
+      m_Log.AddMinimised(m_FrameCount++, m_Window.Fullscreen());  // render nothing, wait for an event
       ++m_MinimisedFrames;
-      m_Window.WaitWhileMinimised();
+      m_Window.WaitWhileMinimised(m_Options.windowTest);
       return true;
     case AppWindow::Frame::Ready: break;
   }
@@ -560,8 +549,9 @@ bool Sample::RenderFrame() {
     return false;
   }
   m_Log.Resolve(m_Device.Device(), m_Device.Context());
+  m_Profiler.EndFrame(m_FrameCount, m_DynamicResolution.GetScaleX());
   m_Log.AddRendered(m_FrameCount++, m_DynamicResolution, m_Options.dynamicResolution, m_Device.Back(),
-                    m_Window.Fullscreen(), elapsed, m_Passes.Timers());
+                    m_Window.Fullscreen(), elapsed, m_Profiler.Timers());
   RunGuiActions();
   return true;
 }
@@ -583,7 +573,7 @@ bool Sample::WriteReport(const std::string& path, std::string* error) const {
   info.dynamicRT[1] = m_DynamicResolution.GetDynamicBufferHeight();
   info.targets = &m_Targets;
   info.zoomBoxBytes = m_Passes.GetZoomBoxBytes();
-  info.passesRun = &m_Passes.PassesRun();
+  info.passesRun = &m_Profiler.PassesRun();
   info.validationMessages = ValidationMessages();
   info.framesRendered = m_FrameCount - m_MinimisedFrames;
   info.framesMinimised = m_MinimisedFrames;
@@ -598,6 +588,9 @@ bool Sample::WriteReport(const std::string& path, std::string* error) const {
 int Sample::Run() {
   const int64_t frames = m_Options.EffectiveFrames();
   const bool wantShot = !m_Options.screenshot.empty();
+  // The application loop reads no record itself: without a report none is
+  // kept, so memory stays flat however long the sample runs.
+  if (m_Log.Records() == FrameRecords::Memory) m_Log.SetRecords(FrameRecords::Off);
   while (frames < 0 || m_FrameCount < frames) {
     if (wantShot && frames >= 0 && m_FrameCount == frames - 1) RequestCapture();
     if (!RenderFrame()) break;
@@ -648,6 +641,7 @@ bool Sample::Shutdown() {
   m_Gui.Release();
   m_Passes.Release();
   m_Deferred.Release();
+  m_Profiler.Release();
   ReleaseDynamicResolution();
   const bool clean = m_Device.Release();
   m_Window.Destroy();

@@ -23,7 +23,9 @@
 #include "DeviceResources.h"
 #include "DynamicResolution.h"
 #include "FrameLog.h"
+#include "FrameProfiler.h"
 #include "FramePasses.h"
+#include "FramePlan.h"
 #include "GuiPanel.h"
 #include "Options.h"
 #include "ResolutionController.h"
@@ -72,7 +74,7 @@ class Sample {
   uint64_t ValidationMessages() const;
   const DynamicResolution& GetDynamicResolution() const { return m_DynamicResolution; }
   uint64_t RenderTargetBytes() const;
-  const std::map<std::string, uint64_t>& PassesRun() const { return m_Passes.PassesRun(); }
+  const std::map<std::string, uint64_t>& PassesRun() const { return m_Profiler.PassesRun(); }
   const RenderTargetSet& Targets() const { return m_Targets; }
   const DeferredPasses& Deferred() const { return m_Deferred; }
   // The deferred renderer's line of --stats (G-buffer targets and bytes, shadow maps, lights).
@@ -131,11 +133,10 @@ class Sample {
 
   bool LoadScene(std::string* error);
   bool ResizeSwapChain(uint32_t w, uint32_t h);
-  bool TAAActive() const;
-  bool FlipsTargets() const;
-  RenderTargetPlan Plan() const;
+  // This frame's plan (FramePlan.h) from the settings and the back buffer.
+  FramePlan PlanNow() const;
   void RunResolutionControl();
-  FrameSetup MakeFrameSetup();
+  FrameSetup MakeFrameSetup(const FramePlan& plan);
   SceneRenderParams SceneParams() const;
   void RenderGui(double elapsed);
   void RunGuiActions();
@@ -153,6 +154,7 @@ class Sample {
   TemporalHistory m_History;  // the TAA ping-pong of the final/velocity targets
   bool m_ResetVelocityHistory = true;  // the scene's previous matrices restart (first frame, resize)
 
+  FrameProfiler m_Profiler;  // GPU timers, pass counts, the scale of recent frames
   FramePasses m_Passes;
   DeferredPasses m_Deferred;  // --renderer deferred (Docs/Deferred.md)
   DeferredFrame MakeDeferredFrame(const FrameSetup& s) const;

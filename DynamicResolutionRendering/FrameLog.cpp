@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "imageio/ImageFile.h"
 #include "imageio/Srgb.h"
@@ -46,13 +47,7 @@ void FrameLog::AddRendered(int64_t frame, const DynamicResolution& dr, bool dyna
   r.gpuScene = t.scene.LastMs();
   r.gpuPostP = t.postP.LastMs();
   r.gpuScale = t.scale.LastMs();
-  m_Frames.push_back(r);
-}
-
-double FrameLog::ScaleOfFrame(int64_t frame) const {
-  for (auto it = m_Frames.rbegin(); it != m_Frames.rend() && it->frame >= frame; ++it)  // a few steps back
-    if (it->frame == frame) return it->rendered ? it->scaleX : 0.0;
-  return 0.0;
+  Add(r);
 }
 
 void FrameLog::AddMinimised(int64_t frame, bool fullscreen) {
@@ -60,7 +55,52 @@ void FrameLog::AddMinimised(int64_t frame, bool fullscreen) {
   r.frame = frame;
   r.rendered = false;
   r.fullscreen = fullscreen;
-  m_Frames.push_back(r);
+  Add(r);
+}
+
+bool FrameLog::SetRecords(FrameRecords mode) {
+  m_Frames.clear();
+  m_Frames.shrink_to_fit();
+  m_Stream.reset();
+  m_StreamFailed = false;
+  m_Mode = mode;
+  if (mode == FrameRecords::Stream) {
+    m_Stream.reset(std::tmpfile());
+    if (!m_Stream) {
+      m_Mode = FrameRecords::Off;
+      return false;
+    }
+  }
+  return true;
+}
+
+void FrameLog::Add(const FrameRecord& r) {
+  if (m_Mode == FrameRecords::Memory) m_Frames.push_back(r);
+  else if (m_Mode == FrameRecords::Stream && std::fwrite(&r, sizeof r, 1, m_Stream.get()) != 1) m_StreamFailed = true;
+}
+
+std::vector<FrameRecord> FrameLog::AllFrames() const {
+  if (m_Mode != FrameRecords::Stream) return m_Frames;
+  std::vector<FrameRecord> all;
+  ForEachFrame([&](const FrameRecord& r) { all.push_back(r); });
+  return all;
+}
+
+void FrameLog::ForEachFrame(const std::function<void(const FrameRecord&)>& visit) const {
+  if (m_Mode != FrameRecords::Stream) {
+    for (const FrameRecord& r : m_Frames) visit(r);
+    return;
+  }
+  // Read back in blocks; the file stays positioned at its end for the next Add.
+  std::FILE* f = m_Stream.get();
+  std::fflush(f);
+  const long end = std::ftell(f);
+  std::rewind(f);
+  FrameRecord block[256];
+  size_t n = 0;
+  while ((n = std::fread(block, sizeof(FrameRecord), std::size(block), f)) > 0)
+    for (size_t i = 0; i < n; ++i) visit(block[i]);
+  std::fseek(f, end, SEEK_SET);
 }
 
 bool FrameLog::BeginFrame() {

@@ -1,16 +1,20 @@
 // What the sample records about its frames and hands to tests, scripts and
-// users: one record per frame, the captures (back buffer with and without the
+// users: one record per frame (kept as FrameRecords says), the captures (back buffer with and without the
 // GUI, the scene's colour and velocity targets), the screenshot and the JSON
 // report.
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
+#include <functional>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "DeviceResources.h"
 #include "DynamicResolution.h"
-#include "FramePasses.h"
+#include "FrameProfiler.h"
 #include "Options.h"
 #include "Readback.h"
 #include "RenderTargets.h"
@@ -56,16 +60,27 @@ struct ReportInfo {
   const GuiLayout* gui = nullptr;  // the panel's place when it was drawn (GuiLogic.h)
 };
 
+// Where the per-frame records go. Memory: a vector that in-process callers
+// read (Frames()), for runs of bounded length (tests, the bench). Stream: an
+// anonymous temporary file the report reads back at the end, so resident
+// memory stays flat however long the run; Frames() stays empty. Off: no
+// records (a run without a report).
+enum class FrameRecords { Memory, Stream, Off };
+
 class FrameLog {
  public:
+  // Switches the records' storage; records already kept are dropped.
+  // False (and Off) when the temporary file cannot be created.
+  bool SetRecords(FrameRecords mode);
+  FrameRecords Records() const { return m_Mode; }
   // A rendered frame: scales, viewport, sizes and the latest GPU results.
   void AddRendered(int64_t frame, const DynamicResolution& dr, bool dynamic, const BackBuffer& bb, bool fullscreen,
                    double elapsedSeconds, const FrameTimers& timers);
   void AddMinimised(int64_t frame, bool fullscreen);
   const std::vector<FrameRecord>& Frames() const { return m_Frames; }
-  // Scale X that rendered frame `frame` used; 0 when no rendered record has
-  // it (so a delayed GPU result can be paired with its own frame's scale).
-  double ScaleOfFrame(int64_t frame) const;
+  // Every record kept, in frame order, from memory or the stream.
+  void ForEachFrame(const std::function<void(const FrameRecord&)>& visit) const;
+  std::vector<FrameRecord> AllFrames() const;  // the same, copied (for the report, after the run)
 
   // Captures: requested for the next frame, queued as copies during it,
   // read once the frame was presented.
@@ -85,7 +100,14 @@ class FrameLog {
     d3dl::ComPtr<d3dl::Texture2D> staging;
     Capture kind;
   };
+  void Add(const FrameRecord& r);
+  struct CloseFile {
+    void operator()(std::FILE* f) const { std::fclose(f); }
+  };
+  FrameRecords m_Mode = FrameRecords::Memory;
   std::vector<FrameRecord> m_Frames;
+  std::unique_ptr<std::FILE, CloseFile> m_Stream;
+  bool m_StreamFailed = false;
   bool m_Requested = false, m_Capturing = false;
   std::vector<Pending> m_Pending;
   Image m_Captured[int(Capture::Count)];

@@ -70,24 +70,10 @@ struct FramePasses::Shaders {
 FramePasses::FramePasses() = default;
 FramePasses::~FramePasses() = default;
 
-bool FrameTimers::Init(d3dl::Device* device) {
-  for (AveragedGPUTimer* t : {&frame, &clear, &scene, &postP, &scale})
-    if (d3dl::FAILED(t->Init(device))) return false;
-  return true;
-}
-
-void FrameTimers::Release() {
-  for (AveragedGPUTimer* t : {&frame, &clear, &scene, &postP, &scale}) t->Release();
-}
-
-bool FrameTimers::Update(d3dl::DeviceContext* ctx) {
-  const bool newAverage = frame.Update(ctx);
-  for (AveragedGPUTimer* t : {&clear, &scene, &postP, &scale}) t->Update(ctx);
-  return newAverage;
-}
-
-bool FramePasses::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* error) {
+bool FramePasses::Init(d3dl::Device* device, const ShaderLibrary& shaders, FrameProfiler* profiler,
+                       std::string* error) {
   m_Device = device;
+  m_Profiler = profiler;
   size_t compiled = 0;
   if (!LoadShaders(shaders, false, error, &compiled)) return false;
   d3dl::BUFFER_DESC cb;
@@ -126,10 +112,6 @@ bool FramePasses::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::
     *error = "cannot create the lookup/noise textures";
     return false;
   }
-  if (!m_Timers.Init(device)) {
-    *error = "cannot create the GPU timer queries";
-    return false;
-  }
   return m_ZoomBox.Init(device, shaders, error);
 }
 
@@ -164,7 +146,6 @@ bool FramePasses::LoadShaders(const ShaderLibrary& lib, bool fromSource, std::st
 
 void FramePasses::Release() {
   m_ZoomBox.Release();
-  m_Timers.Release();
   m_CubicLookup.Release();
   m_Noise.Release();
   m_Shaders.reset();
@@ -283,13 +264,13 @@ void FramePasses::Clear(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTar
   }
   // None (debug) shows the whole RT. With the fix its final target is zeroed
   // before the scene; the original zeroes it after (MotionBlur).
-  if (s.dynamic && s.filter == Filter::None && s.fixes.Has(Fix::NoneShowsRT)) {
+  if (s.dynamic && KindOf(s.filter) == FilterKind::Debug && s.fixes.Has(Fix::NoneShowsRT)) {
     ctx->ClearRenderTargetView(rts.Final(s.cur).rtv.Get(), kZero);
     CountPass("ClearFinalNone");
   }
   // Depth always with the API (it may be hierarchical).
   ctx->BeginEvent("Clear");
-  m_Timers.clear.Start(ctx);
+  m_Profiler->Timers().clear.Start(ctx);
   ctx->ClearDepthStencilView(t.dsv, d3dl::CLEAR_DEPTH, 1.0f, 0);
   if (s.psClear) {
     ctx->OMSetRenderTargets(t.count, t.rtv, nullptr);
@@ -311,28 +292,28 @@ void FramePasses::Clear(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTar
     ctx->ClearRenderTargetView(t.rtv[0], s.dc.clearColor);
     CountPass("ClearAPI");
   }
-  m_Timers.clear.Stop(ctx);
+  m_Profiler->Timers().clear.Stop(ctx);
   ctx->EndEvent();
 }
 
 void FramePasses::Scene(d3dl::DeviceContext* ctx, const FrameSetup& s, const SceneTargets& t, drr::Scene& scene,
                         const SceneRenderParams& params) {
   ctx->BeginEvent("Scene");
-  m_Timers.scene.Start(ctx);
+  m_Profiler->Timers().scene.Start(ctx);
   ctx->OMSetRenderTargets(t.count, t.rtv, t.dsv);
   ctx->RSSetViewports(1, &s.sceneViewport);
   scene.Render(ctx, params);
-  m_Timers.scene.Stop(ctx);
+  m_Profiler->Timers().scene.Stop(ctx);
   ctx->EndEvent();
   CountPass("Scene");
 }
 
 void FramePasses::MotionBlur(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
                              const BackBuffer& bb) {
-  m_Timers.postP.Start(ctx);
+  m_Profiler->Timers().postP.Start(ctx);
   // None (debug): the original zeroes the final target here, after the scene
   // drew into it (so without motion blur None shows black; fix none-shows-rt).
-  if (s.dynamic && s.filter == Filter::None && !s.fixes.Has(Fix::NoneShowsRT)) {
+  if (s.dynamic && KindOf(s.filter) == FilterKind::Debug && !s.fixes.Has(Fix::NoneShowsRT)) {
     ctx->ClearRenderTargetView(rts.Final(s.cur).rtv.Get(), kZero);
     CountPass("ClearFinalNone");
   }
@@ -356,7 +337,7 @@ void FramePasses::MotionBlur(d3dl::DeviceContext* ctx, const FrameSetup& s, Rend
     UnbindPixelSRVs(ctx);
     ctx->EndEvent();
   }
-  m_Timers.postP.Stop(ctx);
+  m_Profiler->Timers().postP.Stop(ctx);
 }
 
 // The resolve filter's shader; the fast TAA variants read the velocity that
@@ -369,7 +350,7 @@ d3dl::PixelShader* FramePasses::ResolveShader(const FrameSetup& s, const char** 
 }
 
 void FramePasses::Scale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb) {
-  m_Timers.scale.Start(ctx);
+  m_Profiler->Timers().scale.Start(ctx);
   if (s.dynamic) {
     d3dl::RenderTargetView* out = s.secondary ? rts[RT::UpscaleOutput].rtv.Get() : bb.rtv;
     if (s.taau) {
@@ -382,7 +363,7 @@ void FramePasses::Scale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTar
     }
     if (s.secondary) SecondaryUpscale(ctx, s, rts, bb);
   }
-  m_Timers.scale.Stop(ctx);
+  m_Profiler->Timers().scale.Stop(ctx);
 }
 
 // The resolve filter into target (the back buffer, or the secondary upscale's source).
@@ -392,8 +373,9 @@ void FramePasses::Resolve(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderT
   ctx->OMSetRenderTargets(1, &target, nullptr);
   ctx->RSSetViewports(1, &s.outputViewport);
   DynamicConstants rc = s.dc;
-  if (s.filter == Filter::None) rc.ratioCurr[0] = rc.ratioCurr[1] = rc.ratioPrev[0] = rc.ratioPrev[1] = 1.0f;
-  if (s.filter == Filter::Noise) {
+  const FilterInfo& filter = GetFilterInfo(s.filter);
+  if (filter.kind == FilterKind::Debug) rc.ratioCurr[0] = rc.ratioCurr[1] = rc.ratioPrev[0] = rc.ratioPrev[1] = 1.0f;
+  if (filter.noisePerFrame) {
     // The original draws a new offset (two rand() calls) each Noise frame.
     const auto offset = m_Noise.NextOffset();
     rc.noiseOffset[0] = offset[0];
@@ -415,7 +397,7 @@ void FramePasses::Resolve(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderT
                                       m_CubicLookup.GetSRV()};
   ctx->PSSetShaderResources(0, 6, srv);
   d3dl::SamplerState* samplers[3] = {
-      GetFilterInfo(s.filter).linearSampler ? m_SamplerLinear.Get() : m_SamplerPoint.Get(), m_SamplerLinear.Get(),
+      filter.linearSampler ? m_SamplerLinear.Get() : m_SamplerPoint.Get(), m_SamplerLinear.Get(),
       m_SamplerLinearWrap.Get()};
   ctx->PSSetSamplers(0, 3, samplers);
   const char* pass = nullptr;

@@ -11,7 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "DeviceResources.h"
-#include "GPUTimer.h"
+#include "FrameProfiler.h"
 #include "Options.h"
 #include "RenderTargets.h"
 #include "ShaderLibrary.h"
@@ -63,14 +63,6 @@ static_assert(sizeof(UpscaleConstants) == 80);
 // centred on 0 (dynamic pixels, each axis in (-0.5, 0.5)).
 constexpr uint32_t kUpsampleJitterLength = 16;
 glm::vec2 UpsampleJitter(uint32_t index);
-
-// The original's five GPU timers.
-struct FrameTimers {
-  AveragedGPUTimer frame{10}, clear{10}, scene{10}, postP{10}, scale{10};
-  bool Init(d3dl::Device* device);
-  void Release();
-  bool Update(d3dl::DeviceContext* ctx);  // true when the frame timer has a new average
-};
 
 // What the coordinator decided for this frame.
 struct FrameSetup {
@@ -126,7 +118,8 @@ class FramePasses {
  public:
   FramePasses();
   ~FramePasses();
-  bool Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* error);
+  // The passes time themselves and count their runs in profiler.
+  bool Init(d3dl::Device* device, const ShaderLibrary& shaders, FrameProfiler* profiler, std::string* error);
   // Loads every post-processing shader, replacing the old set only when all
   // succeeded; *compiled counts those compiled from HLSL.
   bool LoadShaders(const ShaderLibrary& shaders, bool fromSource, std::string* error, size_t* compiled);
@@ -143,11 +136,8 @@ class FramePasses {
   void SecondaryUpscale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb);
   void Sharpen(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, d3dl::RenderTargetView* target);
 
-  FrameTimers& Timers() { return m_Timers; }
   ZoomBox& GetZoomBox() { return m_ZoomBox; }
   uint64_t GetZoomBoxBytes() const { return m_ZoomBox.Bytes(); }
-  const std::map<std::string, uint64_t>& PassesRun() const { return m_PassesRun; }
-  void CountPass(const char* name) { ++m_PassesRun[name]; }
 
  private:
   struct Shaders;  // FramePasses.cpp: the post shaders, by name
@@ -156,6 +146,7 @@ class FramePasses {
   d3dl::PixelShader* ResolveShader(const FrameSetup& s, const char** pass) const;
   void Resolve(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, d3dl::RenderTargetView* target);
   void SetUpscaleConstants(d3dl::DeviceContext* ctx, const UpscaleConstants& uc);
+  void CountPass(const char* name) { m_Profiler->CountPass(name); }
 
   d3dl::Device* m_Device = nullptr;
   std::unique_ptr<Shaders> m_Shaders;
@@ -166,8 +157,7 @@ class FramePasses {
   CubicFilterLookupTable m_CubicLookup;
   NoiseTexture m_Noise;
   ZoomBox m_ZoomBox;
-  FrameTimers m_Timers;
-  std::map<std::string, uint64_t> m_PassesRun;
+  FrameProfiler* m_Profiler = nullptr;
 };
 
 }  // namespace drr

@@ -151,8 +151,12 @@ bool FrameLog::WriteReport(const std::string& path, const ReportInfo& info, std:
     *error = "cannot write " + path + ": " + std::strerror(errno);
     return false;
   }
-  WriteLines(f, Report(info, m_Frames));
+  WriteLines(f, Report(info, AllFrames()));
   f.flush();
+  if (m_StreamFailed) {
+    *error = "cannot write " + path + ": the frame records' temporary file failed (disk full?)";
+    return false;
+  }
   if (!f) {
     *error = "cannot write " + path + " (disk full or write error)";
     return false;

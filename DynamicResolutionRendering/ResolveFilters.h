@@ -34,6 +34,13 @@ enum class Filter : int {
   Count
 };
 
+// What a filter does to the frame, which decides the passes and targets
+// (FramePlan): Debug shows the whole dynamic RT (None); Spatial scales the
+// viewport in one pass; SpatialSharpen adds a sharpening pass over an
+// output-size target; TemporalAA is the original's TAA (two final targets,
+// jitter); TemporalUpsample is TAAU (output-resolution history).
+enum class FilterKind { Debug, Spatial, SpatialSharpen, TemporalAA, TemporalUpsample };
+
 struct FilterInfo {
   const char* name;        // GUI ("Temporal AA")
   const char* option;      // command line ("taa")
@@ -42,22 +49,24 @@ struct FilterInfo {
   const char* pass;        // in the report's passes_run
   const char* fastPass;
   bool linearSampler;      // s0 linear instead of point, as the original binds for Bilinear and Bicubic
-  bool temporal;           // reads the previous frame (two final targets, jitter)
+  FilterKind kind;
+  bool noisePerFrame = false;  // Noise: a new noise offset each frame (the original's two rand() calls)
 };
 
 const FilterInfo& GetFilterInfo(Filter f);
 inline const char* FilterName(Filter f) { return GetFilterInfo(f).name; }
 inline const char* FilterOption(Filter f) { return GetFilterInfo(f).option; }
-inline bool IsTAA(Filter f) { return GetFilterInfo(f).temporal; }
+inline FilterKind KindOf(Filter f) { return GetFilterInfo(f).kind; }
+inline bool IsTAA(Filter f) { return KindOf(f) == FilterKind::TemporalAA; }
 
 // r.Upscale.Quality: the engine's numbering 0..5 (its documentation's 1..6).
 constexpr int kUpscaleQualities = 6;
 inline Filter UpscaleQualityFilter(int quality) { return Filter(int(Filter::UpscaleNearest) + quality); }
 // The temporal upsample keeps its own history at output resolution; it is
 // not one of the original's TAA modes (IsTAA is false for it).
-inline bool IsTemporalUpsample(Filter f) { return f == Filter::TAAU; }
+inline bool IsTemporalUpsample(Filter f) { return KindOf(f) == FilterKind::TemporalUpsample; }
 // The edge-adaptive upscale writes an output-size target that its sharpening pass reads.
-inline bool HasSharpenPass(Filter f) { return f == Filter::UpscaleEdgeAdaptive; }
+inline bool HasSharpenPass(Filter f) { return KindOf(f) == FilterKind::SpatialSharpen; }
 
 // The document's table of primary screen percentages: what each range is
 // for. The sample's scales run from 1 % to 200 % (with super sampling);

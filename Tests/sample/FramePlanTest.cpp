@@ -1,0 +1,243 @@
+// PlanFrame on the CPU for every mode of scripts/mode-matrix.sh: the render
+// targets the frame needs and the passes it records. The expected lists are
+// what the sample allocated and counted (its report's render_targets and
+// passes_run) for the same command lines before the frame plan existed, so a
+// difference is a change of behaviour.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "FramePlan.h"
+#include "Options.h"
+
+using namespace drr;
+
+namespace {
+struct Mode {
+  const char* name;
+  const char* args;  // on top of the matrix's common options
+  std::vector<std::string> targets, passes;
+};
+
+// name, options, targets (RenderTargetSet::Name), passes (sorted)
+const Mode kModes[] = {
+    {"none", "--filter none",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearFinalNone", "ClearPS", "MotionBlurDynamic", "ResolveNone", "Scene"}},
+    {"point", "--filter point",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolvePoint", "Scene"}},
+    {"bilinear", "--filter bilinear",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveBilinear", "Scene"}},
+    {"bicubic", "--filter bicubic",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveBicubic", "Scene"}},
+    {"noise", "--filter noise",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveNoise", "Scene"}},
+    {"noise-offset", "--filter noise-offset",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveNoiseOffset", "Scene"}},
+    {"taa", "--filter taa",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveTAAFast", "Scene"}},
+    {"taa-noise-offset", "--filter taa-noise-offset",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveTAANoiseOffsetFast", "Scene"}},
+    {"taa-basic", "--filter taa-basic",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveTAABasic", "Scene"}},
+    {"bicubic-bspline", "--filter bicubic-bspline",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveBicubicBSpline", "Scene"}},
+    {"upscale-q0", "--upscale-quality 0",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "Scene", "UpscaleNearest"}},
+    {"upscale-q1", "--upscale-quality 1",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "Scene", "UpscaleBilinear"}},
+    {"upscale-q2", "--upscale-quality 2",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "Scene", "UpscaleDirectional"}},
+    {"upscale-q3", "--upscale-quality 3",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "Scene", "UpscaleCatmullRom"}},
+    {"upscale-q4", "--upscale-quality 4",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "Scene", "UpscaleLanczos3"}},
+    {"upscale-q5", "--upscale-quality 5",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "Scene", "UpscaleGaussianUnsharp"}},
+    {"taau", "--temporal-upsampling",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "upscale history[0]", "upscale history[1]"},
+     {"ClearPS", "MotionBlurDynamic", "Scene", "TemporalUpsample"}},
+    {"edge-adaptive", "--filter upscale-edge-adaptive",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "upscale sharpen input"},
+     {"ClearPS", "MotionBlurDynamic", "Scene", "Sharpen", "UpscaleEdgeAdaptive"}},
+    {"none-nomb", "--filter none --no-motion-blur",
+     {"g_DepthDynamic", "g_FinalRTDynamic[0]"},
+     {"ClearFinalNone", "ClearPS", "ResolveNone", "Scene"}},
+    {"bicubic-nomb", "--filter bicubic --no-motion-blur",
+     {"g_DepthDynamic", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "ResolveBicubic", "Scene"}},
+    {"taa-nomb", "--filter taa --no-motion-blur",
+     {"g_DepthDynamic", "g_VelocityDynamic[0]", "g_VelocityDynamic[1]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]"},
+     {"ClearPS", "ResolveTAA", "Scene"}},
+    {"taa-noise-offset-nomb", "--filter taa-noise-offset --no-motion-blur",
+     {"g_DepthDynamic", "g_VelocityDynamic[0]", "g_VelocityDynamic[1]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]"},
+     {"ClearPS", "ResolveTAANoiseOffset", "Scene"}},
+    {"taau-nomb", "--filter taau --no-motion-blur",
+     {"g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "upscale history[0]", "upscale history[1]"},
+     {"ClearPS", "Scene", "TemporalUpsample"}},
+    {"taa-apiclear", "--filter taa --no-ps-clear",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]"},
+     {"ClearAPI", "MotionBlurDynamic", "ResolveTAAFast", "Scene"}},
+    {"bilinear-apiclear-nomb", "--filter bilinear --no-ps-clear --no-motion-blur",
+     {"g_DepthDynamic", "g_FinalRTDynamic[0]"},
+     {"ClearAPI", "ResolveBilinear", "Scene"}},
+    {"ss-bicubic", "--supersampling --scale 1.4 --filter bicubic",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveBicubic", "Scene"}},
+    {"ss-taa", "--supersampling --scale 1.3 --filter taa",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveTAAFast", "Scene"}},
+    {"zoom-bilinear", "--filter bilinear --zoom",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveBilinear", "Scene", "ZoomBox"}},
+    {"zoom-taau", "--filter taau --zoom",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "upscale history[0]", "upscale history[1]"},
+     {"ClearPS", "MotionBlurDynamic", "Scene", "TemporalUpsample", "ZoomBox"}},
+    {"deferred-taa", "--renderer deferred --filter taa",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]", "g_GBufferDiffuse", "g_GBufferSpecular", "g_GBufferNormal", "g_GBufferAO"},
+     {"ClearPS", "GBuffer", "Lighting", "MotionBlurDynamic", "ResolveTAAFast", "SSAO"}},
+    {"deferred-bilinear-nossao", "--renderer deferred --no-ssao --filter bilinear",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_GBufferDiffuse", "g_GBufferSpecular", "g_GBufferNormal"},
+     {"ClearPS", "GBuffer", "Lighting", "MotionBlurDynamic", "ResolveBilinear"}},
+    {"deferred-taau", "--renderer deferred --filter taau",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "upscale history[0]", "upscale history[1]", "g_GBufferDiffuse", "g_GBufferSpecular", "g_GBufferNormal", "g_GBufferAO"},
+     {"ClearPS", "GBuffer", "Lighting", "MotionBlurDynamic", "SSAO", "TemporalUpsample"}},
+    {"deferred-full", "--renderer deferred --no-dynamic-resolution",
+     {"g_ColorFull", "g_VelocityFull", "g_DepthFull", "g_GBufferDiffuse", "g_GBufferSpecular", "g_GBufferNormal", "g_GBufferAO"},
+     {"ClearPS", "GBuffer", "Lighting", "MotionBlurFull", "SSAO"}},
+    {"tessellation", "--tessellation --filter taa",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveTAAFast", "Scene"}},
+    {"fix-all-taa", "--fix all --filter taa",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveTAAFast", "Scene"}},
+    {"fix-all-none", "--fix all --filter none",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearFinalNone", "ClearPS", "MotionBlurDynamic", "ResolveNone", "Scene"}},
+    {"fix-all-taa-basic-full", "--fix all --no-dynamic-resolution --filter taa-basic",
+     {"g_ColorFull", "g_VelocityFull", "g_DepthFull"},
+     {"ClearPS", "MotionBlurFull", "Scene"}},
+    {"secondary75-catmull", "--secondary-screen-percentage 75 --upscale-quality 3",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "upscale output"},
+     {"ClearPS", "MotionBlurDynamic", "Scene", "SecondaryUpscale", "UpscaleCatmullRom"}},
+    {"secondary60-taau", "--secondary-screen-percentage 60 --filter taau",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "upscale history[0]", "upscale history[1]"},
+     {"ClearPS", "MotionBlurDynamic", "Scene", "SecondaryUpscale", "TemporalUpsample"}},
+    {"secondary75-edge", "--secondary-screen-percentage 75 --filter upscale-edge-adaptive",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "upscale output", "upscale sharpen input"},
+     {"ClearPS", "MotionBlurDynamic", "Scene", "SecondaryUpscale", "Sharpen", "UpscaleEdgeAdaptive"}},
+    {"full-mb", "--no-dynamic-resolution",
+     {"g_ColorFull", "g_VelocityFull", "g_DepthFull"},
+     {"ClearPS", "MotionBlurFull", "Scene"}},
+    {"full-nomb", "--no-dynamic-resolution --no-motion-blur",
+     {"g_DepthFull"},
+     {"ClearPS", "Scene"}},
+    {"full-taa-basic", "--no-dynamic-resolution --filter taa-basic",
+     {"g_ColorFull", "g_VelocityFull", "g_DepthFull"},
+     {"ClearPS", "MotionBlurFull", "Scene"}},
+    {"full-apiclear", "--no-dynamic-resolution --no-ps-clear",
+     {"g_ColorFull", "g_VelocityFull", "g_DepthFull"},
+     {"ClearAPI", "MotionBlurFull", "Scene"}},
+    {"taa-paused", "--filter taa --pause",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveTAAFast", "Scene"}},
+    {"taa-symmetric", "--filter taa --symmetric-taa",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveTAAFast", "Scene"}},
+    {"marker-bilinear", "--filter bilinear --debug-marker-outside",
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"ClearPS", "MotionBlurDynamic", "ResolveBilinear", "Scene"}},
+};
+
+Options Parse(const char* extra) {
+  std::vector<std::string> args = {"--headless", "--width", "320", "--height", "180", "--frames", "20", "--time", "5",
+                                   "--fixed-dt", "0.02", "--control", "manual", "--scale", "0.71", "--no-gui"};
+  std::istringstream words(extra);
+  for (std::string w; words >> w;) args.push_back(w);
+  Options o;
+  std::string message;
+  EXPECT_EQ(ParseCommandLine(args, &o, &message), ParseStatus::Ok) << extra << ": " << message;
+  return o;
+}
+
+FrameInputs MatrixInputs() {
+  FrameInputs in;
+  in.backBufferW = 320;
+  in.backBufferH = 180;
+  return in;  // the Arena has no shadowed spot light; no GUI
+}
+}  // namespace
+
+class FramePlanModes : public ::testing::TestWithParam<Mode> {};
+
+TEST_P(FramePlanModes, TargetsAndPassesAsTheSampleRan) {
+  const Mode& m = GetParam();
+  const FramePlan plan = PlanFrame(Parse(m.args), MatrixInputs());
+  std::vector<std::string> targets;
+  for (RT rt : plan.NeededTargets()) targets.push_back(RenderTargetSet::Name(rt));
+  EXPECT_EQ(targets, m.targets) << m.name;
+  std::vector<std::string> passes = plan.passes;
+  std::sort(passes.begin(), passes.end());
+  EXPECT_EQ(passes, m.passes) << m.name;
+  // Each pass once a frame.
+  EXPECT_EQ(std::adjacent_find(passes.begin(), passes.end()), passes.end()) << m.name;
+}
+
+INSTANTIATE_TEST_SUITE_P(Matrix, FramePlanModes, ::testing::ValuesIn(kModes),
+                         [](const ::testing::TestParamInfo<Mode>& info) {
+                           std::string n = info.param.name;
+                           std::replace(n.begin(), n.end(), '-', '_');
+                           return n;
+                         });
+
+TEST(FramePlan, PassOrderOfTheDeferredTemporalUpsampleWithZoomAndGui) {
+  Options o = Parse("--renderer deferred --filter taau --secondary-screen-percentage 60 --zoom");
+  FrameInputs in = MatrixInputs();
+  in.shadowedLights = 2;
+  in.guiDrawn = true;
+  const FramePlan plan = PlanFrame(o, in);
+  const std::vector<std::string> expected = {"ClearPS", "ShadowMaps", "GBuffer", "SSAO", "Lighting",
+                                             "MotionBlurDynamic", "TemporalUpsample", "SecondaryUpscale",
+                                             "ZoomBox", "GUI"};
+  EXPECT_EQ(plan.passes, expected);
+  EXPECT_TRUE(plan.TAAU());
+  EXPECT_TRUE(plan.secondary);
+  EXPECT_FALSE(plan.flipsTargets);
+}
+
+TEST(FramePlan, NoneClearsItsFinalTargetBeforeTheSceneOnlyWithTheFix) {
+  const FramePlan original = PlanFrame(Parse("--filter none"), MatrixInputs());
+  const FramePlan fixed = PlanFrame(Parse("--filter none --fix none-shows-rt"), MatrixInputs());
+  EXPECT_EQ(original.passes, (std::vector<std::string>{"ClearPS", "Scene", "ClearFinalNone", "MotionBlurDynamic",
+                                                       "ResolveNone"}));
+  EXPECT_EQ(fixed.passes, (std::vector<std::string>{"ClearFinalNone", "ClearPS", "Scene", "MotionBlurDynamic",
+                                                    "ResolveNone"}));
+}
+
+TEST(FramePlan, TheOriginalsFlipQuirkAndItsFix) {
+  // TAA Basic flips the final pair with dynamic resolution off (operator
+  // precedence in the original); the taa-flip fix flips only when TAA runs.
+  EXPECT_TRUE(PlanFrame(Parse("--no-dynamic-resolution --filter taa-basic"), MatrixInputs()).flipsTargets);
+  EXPECT_FALSE(PlanFrame(Parse("--no-dynamic-resolution --filter taa-basic --fix taa-flip"), MatrixInputs()).flipsTargets);
+  EXPECT_FALSE(PlanFrame(Parse("--no-dynamic-resolution --filter taa"), MatrixInputs()).flipsTargets);
+  EXPECT_TRUE(PlanFrame(Parse("--filter taa"), MatrixInputs()).flipsTargets);
+  EXPECT_FALSE(PlanFrame(Parse("--filter taau"), MatrixInputs()).flipsTargets);
+}
