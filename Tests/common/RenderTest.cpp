@@ -88,6 +88,19 @@ RenderTarget RenderTest::MakeRenderTarget(uint32_t w, uint32_t h, DXGI_FORMAT fo
   return rt;
 }
 
+DepthTarget RenderTest::MakeDepthTarget(uint32_t w, uint32_t h) {
+  DepthTarget d;
+  TEXTURE2D_DESC td;
+  td.Width = w;
+  td.Height = h;
+  td.Format = DXGI_FORMAT_D32_FLOAT;
+  td.BindFlags = BIND_DEPTH_STENCIL;
+  EXPECT_EQ(device_->CreateTexture2D(&td, nullptr, d.texture.ReleaseAndGetAddressOf()), S_OK);
+  if (!d.texture) return d;
+  EXPECT_EQ(device_->CreateDepthStencilView(d.texture.Get(), nullptr, d.dsv.ReleaseAndGetAddressOf()), S_OK);
+  return d;
+}
+
 void RenderTest::SetViewport(uint32_t w, uint32_t h) {
   VIEWPORT vp;
   vp.Width = float(w);

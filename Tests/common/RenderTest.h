@@ -36,6 +36,11 @@ namespace drrtest {
 // a texture with its views.
 using Image = drr::Image;
 using RenderTarget = drr::RenderTarget;
+// A depth texture and its view (MakeDepthTarget).
+struct DepthTarget {
+  d3dl::ComPtr<d3dl::Texture2D> texture;
+  d3dl::ComPtr<d3dl::DepthStencilView> dsv;
+};
 
 class RenderTest : public ::testing::Test {
  public:
@@ -68,6 +73,8 @@ class RenderTest : public ::testing::Test {
   // width x height render target (+SRV) of `format`, optionally with a full mip chain.
   RenderTarget MakeRenderTarget(uint32_t width, uint32_t height,
                                 d3dl::DXGI_FORMAT format = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM);
+  // width x height D32_FLOAT depth texture and its view.
+  DepthTarget MakeDepthTarget(uint32_t width, uint32_t height);
   // Sets a full-target viewport for width x height.
   void SetViewport(uint32_t width, uint32_t height);
 

@@ -35,15 +35,7 @@ class SceneThreads : public drrtest::RenderTest {
     drrtest::RenderTarget specular = MakeRenderTarget(kW, kH, d3dl::DXGI_FORMAT_R8G8B8A8_UNORM);
     drrtest::RenderTarget normal = MakeRenderTarget(kW, kH, d3dl::DXGI_FORMAT_R10G10B10A2_UNORM);
     drrtest::RenderTarget velocity = MakeRenderTarget(kW, kH, d3dl::DXGI_FORMAT_R16G16_FLOAT);
-    d3dl::TEXTURE2D_DESC dd;
-    dd.Width = kW;
-    dd.Height = kH;
-    dd.Format = d3dl::DXGI_FORMAT_D32_FLOAT;
-    dd.BindFlags = d3dl::BIND_DEPTH_STENCIL;
-    d3dl::ComPtr<d3dl::Texture2D> depth;
-    d3dl::ComPtr<d3dl::DepthStencilView> dsv;
-    EXPECT_EQ(device()->CreateTexture2D(&dd, nullptr, depth.GetAddressOf()), d3dl::S_OK);
-    EXPECT_EQ(device()->CreateDepthStencilView(depth.Get(), nullptr, dsv.GetAddressOf()), d3dl::S_OK);
+    const drrtest::DepthTarget depth = MakeDepthTarget(kW, kH);
     std::vector<Frame> frames;
     for (int i = 0; i < 6; ++i) {
       const bool taau = i >= 3;
@@ -74,13 +66,13 @@ class SceneThreads : public drrtest::RenderTest {
       const float clear[4] = {0.f, 0.1f, 0.1f, 1.f}, zero[4] = {};
       context()->ClearRenderTargetView(colour.rtv.Get(), clear);
       context()->ClearRenderTargetView(velocity.rtv.Get(), zero);
-      context()->ClearDepthStencilView(dsv.Get(), d3dl::CLEAR_DEPTH, 1.f, 0);
+      context()->ClearDepthStencilView(depth.dsv.Get(), d3dl::CLEAR_DEPTH, 1.f, 0);
       context()->ClearRenderTargetView(specular.rtv.Get(), zero);
       context()->ClearRenderTargetView(normal.rtv.Get(), zero);
       d3dl::RenderTargetView* forward[2] = {colour.rtv.Get(), velocity.rtv.Get()};
       d3dl::RenderTargetView* gbuffer[4] = {colour.rtv.Get(), specular.rtv.Get(), normal.rtv.Get(), velocity.rtv.Get()};
-      if (p.gbuffer) context()->OMSetRenderTargets(4, gbuffer, dsv.Get());
-      else context()->OMSetRenderTargets(2, forward, dsv.Get());
+      if (p.gbuffer) context()->OMSetRenderTargets(4, gbuffer, depth.dsv.Get());
+      else context()->OMSetRenderTargets(2, forward, depth.dsv.Get());
       SetViewport(kW, kH);
       scene->Render(context(), p);
       context()->OMSetRenderTargets(0, nullptr, nullptr);

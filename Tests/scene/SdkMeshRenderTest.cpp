@@ -22,21 +22,13 @@ class SdkMeshRender : public drrtest::RenderTest {
   drrtest::Image RenderAt(Scene& scene, double t, uint32_t w, uint32_t h) {
     drrtest::RenderTarget color = MakeRenderTarget(w, h, d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB);
     drrtest::RenderTarget velocity = MakeRenderTarget(w, h, d3dl::DXGI_FORMAT_R16G16_FLOAT);
-    d3dl::TEXTURE2D_DESC dd;
-    dd.Width = w;
-    dd.Height = h;
-    dd.Format = d3dl::DXGI_FORMAT_D32_FLOAT;
-    dd.BindFlags = d3dl::BIND_DEPTH_STENCIL;
-    d3dl::ComPtr<d3dl::Texture2D> depth;
-    d3dl::ComPtr<d3dl::DepthStencilView> dsv;
-    EXPECT_EQ(device()->CreateTexture2D(&dd, nullptr, depth.GetAddressOf()), d3dl::S_OK);
-    EXPECT_EQ(device()->CreateDepthStencilView(depth.Get(), nullptr, dsv.GetAddressOf()), d3dl::S_OK);
+    const drrtest::DepthTarget depth = MakeDepthTarget(w, h);
     const float clear[4] = {0.f, 0.f, 0.f, 1.f}, zero[4] = {};
     context()->ClearRenderTargetView(color.rtv.Get(), clear);
     context()->ClearRenderTargetView(velocity.rtv.Get(), zero);
-    context()->ClearDepthStencilView(dsv.Get(), d3dl::CLEAR_DEPTH, 1.f, 0);
+    context()->ClearDepthStencilView(depth.dsv.Get(), d3dl::CLEAR_DEPTH, 1.f, 0);
     d3dl::RenderTargetView* rtvs[2] = {color.rtv.Get(), velocity.rtv.Get()};
-    context()->OMSetRenderTargets(2, rtvs, dsv.Get());
+    context()->OMSetRenderTargets(2, rtvs, depth.dsv.Get());
     SetViewport(w, h);
     scene.Update(t);
     const CameraPose pose = scene.Camera(0);
