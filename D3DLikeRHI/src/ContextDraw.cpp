@@ -255,7 +255,6 @@ void ContextImpl::BindVertexBuffers(VkCommandBuffer cmd) {
     VkDeviceSize off = 0, stride = v.stride;
     if (b && b->storage() == Storage::Ring) {
       const RingAlloc& ring = DynRing(b);
-      if (!rec_ && !b->RingFromFrame(dev_->CurrentSerial()) && ring.buffer) ErrorOnce(OnceError::StaleDynamicBuffer);
       if (ring.buffer) {
         buf = ring.buffer;
         off = ring.offset + v.offset;
@@ -275,9 +274,13 @@ void ContextImpl::BindVertexBuffers(VkCommandBuffer cmd) {
 bool ContextImpl::BindIndexBuffer(VkCommandBuffer cmd) {
   const InputAssemblerState& ia = state_.ia;
   const BufferImpl* ib = ia.indexBuffer.Get();
-  const bool ring = ib->storage() == Storage::Ring;
-  VkBuffer buf = ring ? DynRing(ib).buffer : ib->vkBuffer();
-  VkDeviceSize off = (ring ? DynRing(ib).offset : 0) + ia.indexOffset;
+  VkBuffer buf = ib->vkBuffer();
+  VkDeviceSize off = ia.indexOffset;
+  if (ib->storage() == Storage::Ring) {
+    const RingAlloc& ring = DynRing(ib);
+    buf = ring.buffer;
+    off += ring.offset;
+  }
   if (!buf) return ErrorOnce(OnceError::IndexBufferNeverMapped), false;
   vkCmdBindIndexBuffer(cmd, buf, off, ia.indexType);
   return true;
