@@ -236,7 +236,7 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   // ContextCompute.cpp
   void SetUavs(ComPtr<UAVImpl>* slots, const char* fn, UINT start, UINT num, UnorderedAccessView* const* views);
   bool CommitCompute();
-  bool UavsBound(const ProgramLayout& p, ShaderStage stage);
+  bool CheckUavs(const ProgramLayout& p, ShaderStage stage);
   void UseShaderViews(const ProgramLayout& p, ShaderStage stage);
   UAVImpl* UavAt(ShaderStage s, uint32_t slot) const { return Stage(s).uavs[slot].Get(); }
   void ClearUav(UAVImpl* v, const VkClearColorValue& value, uint32_t fill);

@@ -93,8 +93,9 @@ void DeferredContext::Reject(const char* fn, bool portLimit) {
 void DeferredContext::UpdateSubresource(Resource* dst, UINT sub, const BOX* box, const void* data, UINT rowPitch,
                                         UINT) {
   BOX region;
-  if (!ValidateUpdateSubresource(*dev_, dst, sub, box, data, rowPitch, &region)) return;
-  if (ValidateDeferredUpdate(*dev_, dst)) UpdateConstantsInList(AsBuffer(dst), box, data);
+  const ResourceInfo info = DescribeResource(dst);
+  if (!ValidateUpdateSubresource(*dev_, info, sub, box, data, rowPitch, &region)) return;
+  if (ValidateDeferredUpdate(*dev_, info)) UpdateConstantsInList(AsBuffer(dst), box, data);
 }
 
 // A new list: its own command pool, secondary buffer, descriptor pools and
@@ -312,7 +313,7 @@ const RingAlloc& DeferredContext::DynRing(const BufferImpl* b) {
 HRESULT DeferredContext::Map(Resource* resource, UINT sub, MAP type, UINT, MAPPED_SUBRESOURCE* mapped) {
   BufferImpl* b = AsBuffer(resource);
   ListRecording::Slice* e = b ? FindListSlice(b) : nullptr;
-  const HRESULT hr = ValidateDeferredMap(*dev_, resource, sub, type, mapped, e && e->discarded);
+  const HRESULT hr = ValidateDeferredMap(*dev_, DescribeResource(resource), sub, type, mapped, e && e->discarded);
   if (mapped) *mapped = {};
   if (FAILED(hr)) return hr;
   if (type == MAP_WRITE_DISCARD && !(e = NewListSlice(b, true, true))) return E_OUTOFMEMORY;

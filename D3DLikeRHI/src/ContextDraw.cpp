@@ -165,8 +165,7 @@ bool ContextImpl::CommitSlow(bool indexed) {
     if (!program_) return ErrorOnce(OnceError::ProgramLayoutFailed), false;
     dirty_ |= kDescriptors | kConstants;
   }
-  if (program_->HasUavs() && !dev_->features().fragmentStores) return ErrorOnce(OnceError::NoFragmentStores), false;
-  if (program_->HasUavs() && !UavsBound(*program_, ShaderStage::Pixel)) return ErrorOnce(OnceError::UnboundUav), false;
+  if (program_->HasUavs() && !CheckUavs(*program_, ShaderStage::Pixel)) return false;
   UseDrawResources(indexed);
   HoldDrawState(indexed);
   if (HasPendingBarriers()) FlushBarriers();
@@ -367,7 +366,7 @@ bool ContextImpl::WriteSet(const ProgramLayout& p, BoundDescriptors& d) {
     writes[nw++].pImageInfo = &imgInfo[ni++];
   }
   // Buffer SRVs (dummy when unbound) and UAVs
-  // (bound with the right kind: UavsBound checked it).
+  // (bound with the right kind: CheckUavs checked it).
   for (const auto& s : p.bufferSrvs) {
     const SRVImpl* v = Stage(s.stage).shaderResources[s.slot].Get();
     const bool buffer = v && v->v.buf;
