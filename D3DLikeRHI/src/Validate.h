@@ -101,10 +101,11 @@ HRESULT ValidateHeadlessSwapChain(ValidationDevice& dev, const SWAP_CHAIN_DESC& 
 // ---- context calls (ValidateContext.cpp)
 // "<stage><fn>: slots a..b out of range (0..count-1)".
 bool ValidateSlots(ValidationDevice& dev, const char* stage, const char* fn, UINT start, UINT num, UINT count);
-// The buffer to bind, or nullptr (logged) when it lacks the bind flag.
-BufferImpl* CheckedVertexBuffer(ValidationDevice& dev, Buffer* buffer, UINT slot);
-BufferImpl* CheckedConstantBuffer(ValidationDevice& dev, ShaderStage stage, Buffer* buffer, UINT slot);
-BufferImpl* CheckedIndexBuffer(ValidationDevice& dev, Buffer* buffer, DXGI_FORMAT format);
+// Whether a buffer (`desc`; null: unbinding) may be bound; false (logged)
+// when it lacks the bind flag (the slot is then unbound).
+bool ValidateVertexBuffer(ValidationDevice& dev, const BUFFER_DESC* desc, UINT slot);
+bool ValidateConstantBuffer(ValidationDevice& dev, ShaderStage stage, const BUFFER_DESC* desc, UINT slot);
+bool ValidateIndexBuffer(ValidationDevice& dev, const BUFFER_DESC* desc, DXGI_FORMAT format);
 bool ValidateViewports(ValidationDevice& dev, UINT num, const VIEWPORT* viewports);
 bool ValidateScissorRects(ValidationDevice& dev, UINT num, const RECT* rects);
 bool ValidateRenderTargets(ValidationDevice& dev, UINT num, RenderTargetView* const* rtvs);

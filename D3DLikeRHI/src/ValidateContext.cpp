@@ -15,32 +15,29 @@ bool ValidateSlots(ValidationDevice& dev, const char* stage, const char* fn, UIN
   return false;
 }
 
-BufferImpl* CheckedVertexBuffer(ValidationDevice& dev, Buffer* buffer, UINT slot) {
-  auto* b = static_cast<BufferImpl*>(buffer);
-  if (!b || b->HasBindFlag(BIND_VERTEX_BUFFER)) return b;
+bool ValidateVertexBuffer(ValidationDevice& dev, const BUFFER_DESC* desc, UINT slot) {
+  if (!desc || (desc->BindFlags & BIND_VERTEX_BUFFER)) return true;
   dev.Log(LogLevel::Error, "IASetVertexBuffers: buffer in slot %u lacks BIND_VERTEX_BUFFER; unbound", slot);
-  return nullptr;
+  return false;
 }
 
-BufferImpl* CheckedConstantBuffer(ValidationDevice& dev, ShaderStage stage, Buffer* buffer, UINT slot) {
-  auto* b = static_cast<BufferImpl*>(buffer);
-  if (!b || b->IsConstantBuffer()) return b;
+bool ValidateConstantBuffer(ValidationDevice& dev, ShaderStage stage, const BUFFER_DESC* desc, UINT slot) {
+  if (!desc || (desc->BindFlags & BIND_CONSTANT_BUFFER)) return true;
   dev.Log(LogLevel::Error, "%sSetConstantBuffers: buffer in slot %u lacks BIND_CONSTANT_BUFFER; unbound",
           StagePrefix(stage), slot);
-  return nullptr;
+  return false;
 }
 
-BufferImpl* CheckedIndexBuffer(ValidationDevice& dev, Buffer* buffer, DXGI_FORMAT format) {
-  auto* b = static_cast<BufferImpl*>(buffer);
-  if (b && !b->HasBindFlag(BIND_INDEX_BUFFER)) {
+bool ValidateIndexBuffer(ValidationDevice& dev, const BUFFER_DESC* desc, DXGI_FORMAT format) {
+  if (desc && !(desc->BindFlags & BIND_INDEX_BUFFER)) {
     dev.Log(LogLevel::Error, "IASetIndexBuffer: buffer lacks BIND_INDEX_BUFFER; unbound");
-    return nullptr;
+    return false;
   }
-  if (b && format != DXGI_FORMAT_R16_UINT && format != DXGI_FORMAT_R32_UINT) {
+  if (desc && format != DXGI_FORMAT_R16_UINT && format != DXGI_FORMAT_R32_UINT) {
     dev.Log(LogLevel::Error, "IASetIndexBuffer: Format %s is not R16_UINT or R32_UINT; unbound", FormatName(format));
-    return nullptr;
+    return false;
   }
-  return b;
+  return true;
 }
 
 bool ValidateViewports(ValidationDevice& dev, UINT num, const VIEWPORT* viewports) {
