@@ -13,6 +13,7 @@ the markers <!-- gles2-tables:begin --> and <!-- gles2-tables:end --> in DOC; wi
    round's frames; rounds rotate the order). Difference paired per round, mean +- 95 %
    t interval over the rounds. A time verdict only where the interval excludes 0 and
    the effect is larger than the spread of native's own rounds (largest - smallest).
+   Beside it the quad pass's own GPU time (its timestamp queries), mean +- t over rounds.
 2. Image error at each factor: PSNR and FLIP against the 4x4 super-sampled reference.
    Still: paired per view (native - bilinear f in PSNR, bilinear f - native in FLIP),
    t over views. Moving: paired per frame, the differences averaged in 6 blocks of
@@ -84,10 +85,17 @@ def frame_ms(row):
     return row.get("gpu_ms", {}).get("frame", {}).get("median")
 
 
+def quad_cell(row):
+    """The full-screen quad's own GPU time: mean +- t interval over the rounds' medians."""
+    mean, half = mean_ci(row.get("per_round", {}).get("gpu_scale_ms", []))
+    return f"{mean:.2f} ± {half:.2f}" if math.isfinite(half) else "-"
+
+
 def overhead_table(rows):
     lines = ["| view | native ms (straight to the back buffer) | bilinear 1.0 ms (target + quad) | "
-             "paired difference ms | % of native | rounds | native's spread over rounds ms | verdict |",
-             "| --- | ---: | ---: | ---: | ---: | ---: | ---: | --- |"]
+             "paired difference ms | % of native | rounds | native's spread over rounds ms | verdict | "
+             "quad pass ms (own timestamps) |",
+             "| --- | ---: | ---: | ---: | ---: | ---: | ---: | --- | ---: |"]
     for moving in (False, True):
         for view in views(rows, moving):
             nat, bil = rows.get((view, "native", 1.0, moving)), rows.get((view, "bilinear", 1.0, moving))
@@ -95,17 +103,19 @@ def overhead_table(rows):
                 continue
             a = nat.get("per_round", {}).get("gpu_frame_ms", [])
             b = bil.get("per_round", {}).get("gpu_frame_ms", [])
+            if not a or not b:
+                continue  # not timed (an interrupted run)
             d = [y - x for x, y in zip(a, b)]
             mean, half = mean_ci(d)
-            spread = max(a) - min(a) if a else math.nan
-            base = st.mean(a) if a else math.nan
+            spread, base = max(a) - min(a), st.mean(a)
             s = side(mean, half, 0.0)
             if s == 0 or not abs(mean) > spread:
                 verdict = "cannot decide" + (" (interval spans 0)" if s == 0 else " (effect within native's spread)")
             else:
                 verdict = "render-target path dearer" if s > 0 else "render-target path cheaper"
             lines.append(f"| {view} | {st.median(a):.2f} | {st.median(b):.2f} | {pm(mean, half, 2)} | "
-                         f"{100 * mean / base:+.1f} % ± {100 * half / base:.1f} | {len(d)} | {spread:.2f} | {verdict} |")
+                         f"{100 * mean / base:+.1f} % ± {100 * half / base:.1f} | {len(d)} | {spread:.2f} | {verdict} | "
+                         f"{quad_cell(bil)} |")
     return "\n".join(lines) + "\n"
 
 
