@@ -30,6 +30,9 @@ import os
 import statistics as st
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import doc_tables  # noqa: E402
+
 FACTORS = [1.0, 0.75, 0.625, 0.5, 0.25]
 PSNR_LOSS_DB, FLIP_GAIN = 1.0, 0.02
 BLOCKS = 6
@@ -187,26 +190,5 @@ def tables(folder):
     return head + overhead_table(rows) + "\n" + error_table(rows)
 
 
-def main(argv):
-    if len(argv) not in (2, 4) or (len(argv) == 4 and argv[2] not in ("--write", "--check")):
-        sys.exit(__doc__)
-    text = tables(argv[1])
-    if len(argv) == 2:
-        sys.stdout.write(text)
-        return 0
-    doc = open(argv[3]).read()
-    begin, end = doc.find(BEGIN), doc.find(END)
-    if begin < 0 or end < begin:
-        sys.exit(f"gles2-tables: no {BEGIN} ... {END} in {argv[3]}")
-    new = doc[:begin + len(BEGIN)] + "\n" + text + doc[end:]
-    if argv[2] == "--check":
-        if new != doc:
-            print(f"gles2-tables: {argv[3]} differs from the tables of {argv[1]}")
-            return 1
-        return 0
-    open(argv[3], "w").write(new)
-    return 0
-
-
 if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+    sys.exit(doc_tables.main(sys.argv, __doc__, tables, BEGIN, END, "gles2-tables"))

@@ -19,6 +19,9 @@ import os
 import statistics as st
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import doc_tables  # noqa: E402
+
 BEGIN, END = "<!-- tess-budget:begin -->", "<!-- tess-budget:end -->"
 
 
@@ -94,27 +97,11 @@ def tables(folder):
             + sweep_table(folder, budget) + "\n" + settled_table(folder, budget) + "\n" + counts_table(folder))
 
 
-def main(argv):
-    if len(argv) not in (2, 4) or (len(argv) == 4 and argv[2] not in ("--write", "--check")):
-        sys.exit(__doc__)
-    folders = argv[1].split(",")
-    text = "\n".join((f"**Run {i + 1}.** " if len(folders) > 1 else "") + tables(f) for i, f in enumerate(folders))
-    if len(argv) == 2:
-        sys.stdout.write(text)
-        return 0
-    doc = open(argv[3]).read()
-    begin, end = doc.find(BEGIN), doc.find(END)
-    if begin < 0 or end < begin:
-        sys.exit(f"tessellation-tables: no {BEGIN} ... {END} in {argv[3]}")
-    new = doc[:begin + len(BEGIN)] + "\n" + text + doc[end:]
-    if argv[2] == "--check":
-        if new != doc:
-            print(f"tessellation-tables: {argv[3]} differs from the tables of {argv[1]}")
-            return 1
-        return 0
-    open(argv[3], "w").write(new)
-    return 0
+def all_tables(arg):
+    """One block of tables per folder of the comma-separated list."""
+    folders = arg.split(",")
+    return "\n".join((f"**Run {i + 1}.** " if len(folders) > 1 else "") + tables(f) for i, f in enumerate(folders))
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv))
+    sys.exit(doc_tables.main(sys.argv, __doc__, all_tables, BEGIN, END, "tessellation-tables"))
