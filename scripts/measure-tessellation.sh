@@ -45,6 +45,17 @@ print("settled scale %.3f (range %.3f-%.3f), GPU frame %.1f ms against the budge
 PY
 }
 
+sweep_rounds() {  # SCALES FILE: ROUNDS rounds of the fixed scales, both modes interleaved; "round cfg scale ms" lines
+  for r in $(seq "${ROUNDS:-2}"); do
+    for s in $1; do
+      for cfg in off on; do
+        $EXE $COMMON --frames "${SWEEP_FRAMES:-16}" --scale "$s" ${FLAGS[$cfg]} --report "$TMP/s.json" >/dev/null
+        echo "$r $cfg $s $(native_ms "$TMP/s.json")" | tee -a "$2"
+      done
+    done
+  done
+}
+
 echo "${W}x${H}, ${SCENE:-the ${DRR_ARENA:-small} Arena}, camera 1, article law; tessellation: pixels per edge $PPE, max factor $MAXF"
 if [ -n "${ONE_BUDGET:-}" ]; then
   # One absolute budget for both modes: half the untessellated native frame
@@ -61,14 +72,7 @@ if [ -n "${ONE_BUDGET:-}" ]; then
   BUDGET=$(python3 -c "print(round($NATIVE / 2, 2))")
   HZ=$(python3 -c "print(round(1000.0 / $BUDGET, 3))")
   echo "$NATIVE $BUDGET $HZ" | tee "$OUT/budget.txt"
-  for r in $(seq "${ROUNDS:-2}"); do
-    for s in ${SWEEP:-1.0 0.85 0.71 0.55 0.4}; do
-      for cfg in off on; do
-        $EXE $COMMON --frames "${SWEEP_FRAMES:-16}" --scale "$s" ${FLAGS[$cfg]} --report "$TMP/s.json" >/dev/null
-        echo "$r $cfg $s $(native_ms "$TMP/s.json")" | tee -a "$OUT/sweep.txt"
-      done
-    done
-  done
+  sweep_rounds "${SWEEP:-1.0 0.85 0.71 0.55 0.4}" "$OUT/sweep.txt"
   for cfg in off on; do
     $EXE $COMMON --frames "$CTL_FRAMES" --control vsync --refresh "$HZ" --law article ${FLAGS[$cfg]} \
       --report "$TMP/ctl_$cfg.json" >/dev/null
@@ -88,19 +92,12 @@ PY
   exit 0
 fi
 if [ -n "${SWEEP:-}" ]; then
-  for r in $(seq "${ROUNDS:-2}"); do
-    for s in $SWEEP; do
-      for cfg in off on; do
-        $EXE $COMMON --frames "${SWEEP_FRAMES:-16}" --scale "$s" ${FLAGS[$cfg]} --report "$TMP/s.json" >/dev/null
-        echo "$cfg $s $(native_ms "$TMP/s.json")" | tee -a "$TMP/sweep.txt"
-      done
-    done
-  done
+  sweep_rounds "$SWEEP" "$TMP/sweep.txt"
   python3 - "$TMP/sweep.txt" <<'PY'
 import statistics as st, sys, collections
 d = collections.defaultdict(list)
 for line in open(sys.argv[1]):
-    cfg, s, ms = line.split(); d[(cfg, float(s))].append(float(ms))
+    _, cfg, s, ms = line.split(); d[(cfg, float(s))].append(float(ms))
 for cfg in ("off", "on"):
     pts = sorted((s, st.median(v)) for (c, s), v in d.items() if c == cfg)
     top = pts[-1][1]; half = top / 2
