@@ -2,6 +2,8 @@
 // under validation (the fixture fails on any message):
 // - the Arena's primitives at half the dynamic viewport are at most 0.30 of
 //   those at full size with tessellation, and exactly the same without;
+// - at the default settings the primitives fall with the scale (the counts
+//   that Docs/Tessellation.md's one-budget table reads);
 // - a displaced plane of independent patches shows no background inside it
 //   (no cracks), and the displacement did change the image;
 // - velocity of a Phong-tessellated flat plane equals the untessellated
