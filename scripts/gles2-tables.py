@@ -22,7 +22,8 @@ the markers <!-- gles2-tables:begin --> and <!-- gles2-tables:end --> in DOC; wi
    below their thresholds, "not acceptable" where both lie wholly above, "cannot
    decide" otherwise (an interval spans its threshold, or the metrics disagree).
 
-Usage: scripts/gles2-tables.py DIR [--write|--check Docs/Results.md]
+Usage: scripts/gles2-tables.py DIR[,OVERHEAD_DIR...] [--write|--check Docs/Results.md]
+(further folders: runs of the overhead alone, one overhead table each)
 """
 import json
 import math
@@ -182,12 +183,21 @@ def error_table(rows):
     return "\n".join(lines) + "\n"
 
 
-def tables(folder):
-    run, rows = load(folder)
-    head = (f"Data: `{folder}/results.json` ({run.get('driver', '?')}, {run.get('width')}x{run.get('height')}, "
+def head(folder, run):
+    return (f"Data: `{folder}/results.json` ({run.get('driver', '?')}, {run.get('width')}x{run.get('height')}, "
             f"FLIP at {run.get('flip_ppd')} ppd, {run.get('validation_messages')} validation messages, "
             f"complete: {run.get('complete')}).\n\n")
-    return head + overhead_table(rows) + "\n" + error_table(rows)
+
+
+def tables(arg):
+    """The first folder's overhead and error tables, then the overhead table of each further one."""
+    folders = arg.split(",")
+    run, rows = load(folders[0])
+    text = head(folders[0], run) + overhead_table(rows) + "\n" + error_table(rows)
+    for folder in folders[1:]:
+        run, rows = load(folder)
+        text += "\n" + head(folder, run) + overhead_table(rows)
+    return text
 
 
 if __name__ == "__main__":

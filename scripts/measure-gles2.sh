@@ -7,12 +7,15 @@
 # size has whole viewports at every factor (320x176: 240x132, 200x110, 160x88,
 # 80x44), where the port's texture coordinates (viewport / target) are the
 # article's (f, f) exactly. Rows are written as each completes.
-# Usage: scripts/measure-gles2.sh [BUILD_DIR] [OUT_DIR] [ROUNDS]
-# Then: scripts/gles2-tables.py OUT_DIR [--write Docs/Results.md]
+# Then the overhead alone (bilinear 1.0 against native, still views, no moving
+# camera, OVERHEAD_ROUNDS interleaved rounds) into OUT_DIR-overhead.
+# Usage: scripts/measure-gles2.sh [BUILD_DIR] [OUT_DIR] [ROUNDS] [OVERHEAD_ROUNDS]
+# Then: scripts/gles2-tables.py OUT_DIR,OUT_DIR-overhead [--write Docs/Results.md]
 set -euo pipefail
 build=${1:-build}
 out=${2:-gles2_out}
 rounds=${3:-6}
+overhead_rounds=${4:-12}
 exe="$build/DynamicResolutionRendering/DynamicResolutionRendering"
 mkdir -p "$out"
 { date -u; uptime; } > "$out/load.txt"
@@ -23,3 +26,9 @@ mkdir -p "$out"
   --bench-warmup 6 --bench-warmup-ms 0 --bench-frames 2 \
   --timing-rounds "$rounds" --timing-warmup-ms 300 2>&1 | tee "$out/log.txt"
 { date -u; uptime; } >> "$out/load.txt"
+mkdir -p "$out-overhead"
+{ date -u; uptime; } > "$out-overhead/load.txt"
+"$exe" --bench --preset gles2 --out "$out-overhead" --width 320 --height 176 --filters bilinear --scales 1.0 \
+  --no-moving --no-claims --no-ghosting --no-ablations --bench-warmup 6 --bench-warmup-ms 0 --bench-frames 2 \
+  --timing-rounds "$overhead_rounds" --timing-warmup-ms 300 2>&1 | tee "$out-overhead/log.txt"
+{ date -u; uptime; } >> "$out-overhead/load.txt"
