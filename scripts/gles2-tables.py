@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The tables of the OpenGL ES 2.0 article's claims (Docs/Results.md), from committed data.
+"""The tables of the OpenGL ES 2.0 article's claims (Docs/GLES2.md), from committed data.
 
 Reads DIR/results.json of scripts/measure-gles2.sh (the bench with --preset gles2:
 bilinear at 1.0, 0.75, 0.625, 0.5 and 0.25 and native, still views and the moving
@@ -22,7 +22,7 @@ the markers <!-- gles2-tables:begin --> and <!-- gles2-tables:end --> in DOC; wi
    below their thresholds, "not acceptable" where both lie wholly above, "cannot
    decide" otherwise (an interval spans its threshold, or the metrics disagree).
 
-Usage: scripts/gles2-tables.py DIR[,OVERHEAD_DIR...] [--write|--check Docs/Results.md]
+Usage: scripts/gles2-tables.py DIR[,OVERHEAD_DIR...] [--write|--check Docs/GLES2.md]
 (further folders: runs of the overhead alone, one overhead table each)
 """
 import json

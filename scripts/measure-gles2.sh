@@ -1,5 +1,5 @@
 #!/bin/bash
-# The OpenGL ES 2.0 article's claims (Docs/Results.md, "The OpenGL ES 2.0 path"):
+# The OpenGL ES 2.0 article's claims (Docs/GLES2.md):
 # the bench with --preset gles2 (bilinear quad to (f, f), no clamp, no TAA, no
 # motion blur, API clear), bilinear at 1.0, 0.75, 0.625, 0.5, 0.25 and native
 # (the scene straight into the back buffer), four still views and the moving
@@ -10,7 +10,7 @@
 # Then the overhead alone (bilinear 1.0 against native, still views, no moving
 # camera, OVERHEAD_ROUNDS interleaved rounds) into OUT_DIR-overhead.
 # Usage: scripts/measure-gles2.sh [BUILD_DIR] [OUT_DIR] [ROUNDS] [OVERHEAD_ROUNDS]
-# Then: scripts/gles2-tables.py OUT_DIR,OUT_DIR-overhead [--write Docs/Results.md]
+# Then: scripts/gles2-tables.py OUT_DIR,OUT_DIR-overhead [--write Docs/GLES2.md]
 set -euo pipefail
 build=${1:-build}
 out=${2:-gles2_out}
