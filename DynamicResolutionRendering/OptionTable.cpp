@@ -2,6 +2,7 @@
 #include "OptionTable.h"
 #include "scene/RecordingThreads.h"
 
+#include <initializer_list>
 #include <type_traits>
 #include <vector>
 
@@ -82,6 +83,9 @@ const OptionRow kRows[] = {
     Flag("--supersampling", &Options::superSampling, true, "allow super sampling (2x render targets)")
         .Json("supersampling").Gui(Widget::Check, "Allow Super Sampling").Original(),
     OptionRow{.kind = K::GuiOnly, .field = &Options::aspectLock}.Gui(Widget::Check, "Aspect Ratio Lock").Original(),
+    {.name = "--preset", .metavar = "NAME", .kind = K::Preset,
+     .help = "a named system as a set of the settings here, applied where\n"
+             "it stands (options after it override it); see below"},
     Choice("--control", "MODE", &Options::control,
            ChoicesOf<ControlMode, ControlModeOption, ControlModeName>("mode"), "{choices} (default {default})",
            &Options::controlGiven)
@@ -221,7 +225,49 @@ void VisitField(const OptionRow& row, O& o, F&& f) {
       row.field);
 }
 
+// The OpenGL ES 2.0 version of the article (Intel's "Dynamic Resolution
+// Rendering on OpenGL ES 2.0"): the scene into a native-size off-screen
+// target at viewport (w f, h f), one factor for both axes set by hand; a
+// full-screen quad samples it bilinearly with texture coordinates to (f, f),
+// not clamped inside the rendered part (the clamp-to-edge sampler only);
+// no TAA, no motion blur and so no velocity target; glClear clears the whole
+// target; the UI at native resolution (as the port always draws it).
+constexpr PresetSetting kGles2[] = {
+    {&Options::dynamicResolution, 1},
+    {&Options::superSampling, 0},  // the target at native size
+    {&Options::aspectLock, 1},
+    {&Options::control, double(ControlMode::Manual)},
+    {&Options::filter, double(Filter::Bilinear)},
+    {&Options::motionBlur, 0},
+    {&Options::psClear, 0},
+    {&Options::renderer, double(Renderer::Forward)},
+    {&Options::secondaryScreenPercentage, 100},
+    {&Options::tessellation, 0},
+};
+
+FixSet FixesOf(std::initializer_list<Fix> fixes) {
+  FixSet set;
+  for (Fix f : fixes) set.Set(f, true);
+  return set;
+}
+
+const OptionPreset kPresets[] = {
+    {"gles2",
+     "the OpenGL ES 2.0 article's system: bilinear quad to (f, f) without\n"
+     "the uv-inset clamp, no TAA, no motion blur (no velocity target), API\n"
+     "clear of the whole target, native-size target, manual --scale",
+     kGles2, FixesOf({Fix::UvInset})},
+};
+
 }  // namespace
+
+std::span<const OptionPreset> OptionPresets() { return kPresets; }
+
+const OptionPreset* FindPreset(std::string_view name) {
+  for (const OptionPreset& p : kPresets)
+    if (name == p.name) return &p;
+  return nullptr;
+}
 
 std::span<const OptionRow> OptionRows() { return kRows; }
 

@@ -27,6 +27,7 @@ enum class OptionKind {
   Choice,   // one of an enum's command-line values
   Fixes,    // all | none | NAME[,NAME...] (Fixes.h)
   GuiOnly,  // no command-line option (the aspect-ratio lock follows --scale-x/--scale-y)
+  Preset,   // a name from OptionPresets(): sets the preset's settings where it stands
 };
 
 // The GUI widget of a row. Original: drawn in the original's panel, in its
@@ -95,6 +96,21 @@ struct OptionRow {
   }
   bool HasRange() const { return kind == OptionKind::Integer || kind == OptionKind::Number; }
 };
+
+// A named system as a set of existing settings (--preset NAME). Applied where
+// it stands on the command line, so options after it override it.
+struct PresetSetting {
+  OptionField field;  // a row's field (FindOptionOf finds its row)
+  double value;       // as SetFieldNumber writes it (an enum's index, bool 0/1)
+};
+struct OptionPreset {
+  const char* name;
+  const char* help;  // one line for --help
+  std::span<const PresetSetting> settings;
+  FixSet fixesOff;   // port fixes the preset turns off (the system does what the original does there)
+};
+std::span<const OptionPreset> OptionPresets();
+const OptionPreset* FindPreset(std::string_view name);
 
 // Every row, groups in order, each group's Heading row first.
 std::span<const OptionRow> OptionRows();

@@ -105,6 +105,22 @@ std::string ReadNumber(const OptionRow& s, const std::string& name, const std::s
   return {};
 }
 
+std::string PresetNames() {
+  std::string names;
+  for (const OptionPreset& p : OptionPresets()) names += (names.empty() ? "" : ", ") + std::string(p.name);
+  return names;
+}
+
+// Sets the settings of the preset called `value`.
+std::string ApplyPreset(const std::string& name, const std::string& value, Options* r) {
+  const OptionPreset* preset = FindPreset(value);
+  if (!preset) return "option " + name + ": unknown preset '" + value + "' (allowed: " + PresetNames() + ")";
+  for (const PresetSetting& setting : preset->settings)
+    if (const OptionRow* row = FindOptionOf(setting.field)) SetFieldNumber(*row, r, setting.value);
+  r->fixes.bits &= ~preset->fixesOff.bits;
+  return {};
+}
+
 // Applies one option (value: the text after '=' or the next argument, if any).
 std::string Apply(const OptionRow& s, const std::string& name, const std::optional<std::string>& value, Options* r,
                   ScaleArgs* scales) {
@@ -119,6 +135,7 @@ std::string Apply(const OptionRow& s, const std::string& name, const std::option
     return {};
   }
   if (!value) return "option " + name + " needs a value" + (s.kind == K::Choice ? Allowed(s) : "");
+  if (s.kind == K::Preset) return ApplyPreset(name, *value, r);
   if (s.kind == K::Fixes) {
     std::string error;
     if (!ParseFixes(*value, &(r->*std::get<FixSet Options::*>(s.field)), &error))
@@ -195,6 +212,13 @@ std::string Usage() {
   for (const FixInfo& f : FixTable()) {
     const std::size_t used = 2 + std::string_view(f.name).size();
     u << "  " << f.name << std::string(used + 2 <= kHelpColumn ? kHelpColumn - used : 1, ' ') << f.help << '\n';
+  }
+  u << "\nPresets (--preset NAME):\n";
+  for (const OptionPreset& p : OptionPresets()) {
+    std::string line = "  " + std::string(p.name);
+    line += std::string(kHelpColumn > line.size() ? kHelpColumn - line.size() : 1, ' ');
+    for (char c : std::string(p.help)) line += c == '\n' ? "\n" + std::string(kHelpColumn, ' ') : std::string(1, c);
+    u << line << '\n';
   }
   u << "\n" << ImportLimitsHelp();
   u << "\n"

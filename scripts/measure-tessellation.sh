@@ -12,8 +12,11 @@
 # crosses half its value at the first scale: where the article law settles
 # (Controller.md), without the controller's own noise.
 #
+# With ONE_BUDGET=DIR both modes are judged at one absolute budget, half the
+# untessellated native frame (see below; scripts/tessellation-tables.py).
+#
 # usage: scripts/measure-tessellation.sh [build dir]
-#        (env: W H PPE MAXF NATIVE_FRAMES CTL_FRAMES REPEAT SCENE SWEEP SWEEP_FRAMES ROUNDS EXE)
+#        (env: W H PPE MAXF NATIVE_FRAMES CTL_FRAMES REPEAT SCENE SWEEP SWEEP_FRAMES ROUNDS EXE ONE_BUDGET)
 set -euo pipefail
 BUILD=${1:-build}
 EXE=${EXE:-$BUILD/DynamicResolutionRendering/DynamicResolutionRendering}  # or a bundle's run.sh
@@ -42,21 +45,59 @@ print("settled scale %.3f (range %.3f-%.3f), GPU frame %.1f ms against the budge
 PY
 }
 
-echo "${W}x${H}, ${SCENE:-the ${DRR_ARENA:-small} Arena}, camera 1, article law; tessellation: pixels per edge $PPE, max factor $MAXF"
-if [ -n "${SWEEP:-}" ]; then
+sweep_rounds() {  # SCALES FILE: ROUNDS rounds of the fixed scales, both modes interleaved; "round cfg scale ms" lines
   for r in $(seq "${ROUNDS:-2}"); do
-    for s in $SWEEP; do
+    for s in $1; do
       for cfg in off on; do
         $EXE $COMMON --frames "${SWEEP_FRAMES:-16}" --scale "$s" ${FLAGS[$cfg]} --report "$TMP/s.json" >/dev/null
-        echo "$cfg $s $(native_ms "$TMP/s.json")" | tee -a "$TMP/sweep.txt"
+        echo "$r $cfg $s $(native_ms "$TMP/s.json")" | tee -a "$2"
       done
     done
   done
+}
+
+echo "${W}x${H}, ${SCENE:-the ${DRR_ARENA:-small} Arena}, camera 1, article law; tessellation: pixels per edge $PPE, max factor $MAXF"
+if [ -n "${ONE_BUDGET:-}" ]; then
+  # One absolute budget for both modes: half the untessellated native frame
+  # (median of NATIVE_FRAMES, once). Into the folder ONE_BUDGET, a line per
+  # measurement as it completes (scripts/tessellation-tables.py reads them):
+  #   budget.txt   native_off_ms budget_ms refresh_hz
+  #   sweep.txt    round cfg scale gpu_frame_ms     (SWEEP scales, interleaved)
+  #   settled.txt  cfg settled_scale lo hi gpu_frame_ms frames
+  #   bench_<cfg>/ the bench at the settled scale (PSNR, FLIP against that mode's reference)
+  OUT=$ONE_BUDGET; mkdir -p "$OUT"
+  { date -u; uptime; } >> "$OUT/load.txt"
+  $EXE $COMMON --frames "$NATIVE_FRAMES" --no-dynamic-resolution --report "$TMP/native.json" >/dev/null
+  NATIVE=$(native_ms "$TMP/native.json")
+  BUDGET=$(python3 -c "print(round($NATIVE / 2, 2))")
+  HZ=$(python3 -c "print(round(1000.0 / $BUDGET, 3))")
+  echo "$NATIVE $BUDGET $HZ" | tee "$OUT/budget.txt"
+  sweep_rounds "${SWEEP:-1.0 0.85 0.71 0.55 0.4}" "$OUT/sweep.txt"
+  for cfg in off on; do
+    $EXE $COMMON --frames "$CTL_FRAMES" --control vsync --refresh "$HZ" --law article ${FLAGS[$cfg]} \
+      --report "$TMP/ctl_$cfg.json" >/dev/null
+    python3 - "$TMP/ctl_$cfg.json" "$cfg" <<'PY' | tee -a "$OUT/settled.txt"
+import json, statistics as s, sys
+f = json.load(open(sys.argv[1]))['frames']; tail = f[-(len(f) // 3):]
+sc = [x['scale'][0] for x in tail]; g = [x['gpu_ms']['frame'] for x in tail if x.get('gpu_new')]
+print("%s %.3f %.3f %.3f %.2f %d" % (sys.argv[2], s.median(sc), min(sc), max(sc), s.median(g), len(f)))
+PY
+  done
+  while read -r cfg scale _; do
+    $EXE --bench --out "$OUT/bench_$cfg" --width "$W" --height "$H" --camera 1 --scales "$scale" --filters taa \
+      ${FLAGS[$cfg]} $SCENE_ARG --no-claims --no-ghosting --no-ablations --no-moving --bench-warmup 6 \
+      --bench-warmup-ms 0 --bench-frames 2 --timing-rounds 0 >/dev/null 2>&1 || echo "bench $cfg failed"
+  done < "$OUT/settled.txt"
+  { date -u; uptime; } >> "$OUT/load.txt"
+  exit 0
+fi
+if [ -n "${SWEEP:-}" ]; then
+  sweep_rounds "$SWEEP" "$TMP/sweep.txt"
   python3 - "$TMP/sweep.txt" <<'PY'
 import statistics as st, sys, collections
 d = collections.defaultdict(list)
 for line in open(sys.argv[1]):
-    cfg, s, ms = line.split(); d[(cfg, float(s))].append(float(ms))
+    _, cfg, s, ms = line.split(); d[(cfg, float(s))].append(float(ms))
 for cfg in ("off", "on"):
     pts = sorted((s, st.median(v)) for (c, s), v in d.items() if c == cfg)
     top = pts[-1][1]; half = top / 2

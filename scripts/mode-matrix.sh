@@ -79,6 +79,7 @@ modes=(
   "taa-paused|--filter taa --pause"
   "taa-symmetric|--filter taa --symmetric-taa"
   "marker-bilinear|--filter bilinear --debug-marker-outside"
+  "gles2|--preset gles2"
 )
 
 ran=0 failed=0 differ=0

@@ -228,15 +228,29 @@ struct ScanTotals {
 };
 inline constexpr double kScanHeadrooms[] = {0.05, 0.1, 0.2, 0.3};
 enum ScanSet { kSynthetic, kShared, kTuningTraces, kScanSets };
-struct RobustScanRow {
-  RobustController::Params params;
+struct ScanRowTotals {
   ScanTotals at[std::size(kScanHeadrooms)][kScanSets];  // per headroom, per set
   const ScanTotals& Base(ScanSet set, double headroom) const;  // at the base headroom
   // Frames over budget at `givenUp`, interpolated linearly along the row's
   // (given up, over budget) points over the headrooms (clamped to the ends).
   double OverBudgetAt(ScanSet set, double givenUp) const;
 };
+struct RobustScanRow : ScanRowTotals {
+  RobustController::Params params;
+};
 std::vector<RobustScanRow> ScanRobust(const SimConfig& base, const std::vector<TraceCase>& tuningTraces);
+// The UE-style law's scan on the same tuning set with the same budget as the
+// robust law's tuning-set scan (24 rows, the same headrooms and pick rule):
+// increases blended 0.9 or 0.75 of the way, changes at most every 8 or 4
+// calls, a change threshold of 2 % or 5 %, and a history of 16 samples
+// weighted 0.9^age, 8 weighted 0.8^age or 32 weighted 0.95^age. The first row
+// is the law as it is (UEStyleController::Params{}).
+struct UEScanRow : ScanRowTotals {
+  UEStyleController::Params params;
+};
+std::vector<UEScanRow> ScanUEStyle(const SimConfig& base, const std::vector<TraceCase>& tuningTraces);
+int PickUEStyleRow(const std::vector<UEScanRow>& rows, double baseHeadroom);
+void PrintUEStyleScan(std::ostream& out, const std::vector<UEScanRow>& rows, double baseHeadroom);
 // The row the rule of Docs/Controller.md picks: among the rows that keep the
 // synthetic set's changes within +10 %, its still changes, never-settled runs
 // and given up (+0.5 point) not above the baseline's (row 0) at the base

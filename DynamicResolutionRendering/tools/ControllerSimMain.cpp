@@ -37,7 +37,9 @@ void Usage(std::ostream& out) {
          "                      0..3, white 1 % and AR(0.9) 3 % noise): the only cases tuning may use\n"
          "  --scan-robust       the robust law's tuning scan on the tuning set: the synthetic set, the\n"
          "                      shared-machine scenarios (bursts, drift) and --tuning-traces; never --traces\n"
-         "  --tuning-traces DIR recorded tuning traces for --scan-robust (Tests/controller/tuning-traces);\n"
+         "  --scan-ue           the UE-style law's scan: the same tuning set, 24 rows as --scan-robust's\n"
+         "  --tuning-traces DIR recorded tuning traces for --scan-robust and --scan-ue\n"
+         "                      (Tests/controller/tuning-traces);\n"
          "                      a held-out trace in DIR is refused\n"
          "  --traces DIR        replay the held-out traces of DIR (Tests/controller/traces) instead\n"
          "                      of the scenarios, budget = the sweep's time at scale 0.7, latency as\n"
@@ -140,6 +142,7 @@ struct SimArgs {
   std::string perFramePath;  // --per-frame: every frame of every run, for diagnosis
   bool syntheticSet = false;
   bool scanRobust = false;
+  bool scanUE = false;
   bool robustBefore = false;   // also the robust law before the tuning-set scan ("robust-before")
   bool headroomSweep = false;  // totals per law at each headroom of the scan instead of the tables
 };
@@ -176,6 +179,8 @@ void ParseOption(int argc, char** argv, int* i, SimArgs* args) {
     config.target.headroom = x;
   } else if (arg == "--scan-robust") {
     args->scanRobust = true;
+  } else if (arg == "--scan-ue") {
+    args->scanUE = true;
   } else if (arg == "--synthetic-set") {
     args->syntheticSet = true;
   } else if (arg == "--traces") {
@@ -384,8 +389,8 @@ int main(int argc, char** argv) {
   }
 
   std::vector<drr::sim::SimResult> results;
-  if (args.scanRobust) {
-    if (!args.tracesDir.empty()) Fail("--scan-robust tunes on the synthetic set only; --traces is held out");
+  if (args.scanRobust || args.scanUE) {
+    if (!args.tracesDir.empty()) Fail("--scan-robust and --scan-ue tune on the tuning set only; --traces is held out");
     std::vector<drr::sim::TraceCase> tuning;
     std::string error;
     if (!args.tuningTracesDir.empty() && !drr::sim::LoadTraceDir(args.tuningTracesDir, &tuning, &error)) {
@@ -394,7 +399,8 @@ int main(int argc, char** argv) {
     }
     for (const drr::sim::TraceCase& c : tuning)
       if (c.trace.HeldOut()) Fail("'" + c.trace.name + "' is a held-out trace: it must not be used for tuning");
-    drr::sim::PrintRobustScan(std::cout, drr::sim::ScanRobust(config, tuning), config.target.headroom);
+    if (args.scanUE) drr::sim::PrintUEStyleScan(std::cout, drr::sim::ScanUEStyle(config, tuning), config.target.headroom);
+    else drr::sim::PrintRobustScan(std::cout, drr::sim::ScanRobust(config, tuning), config.target.headroom);
     return 0;
   }
   if (args.headroomSweep) {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ostream>
+#include <string>
 
 namespace drr::sim {
 
@@ -48,14 +49,14 @@ std::vector<RobustController::Params> ScanGrid() {
 
 }  // namespace
 
-const ScanTotals& RobustScanRow::Base(ScanSet set, double headroom) const {
+const ScanTotals& ScanRowTotals::Base(ScanSet set, double headroom) const {
   std::size_t best = 0;
   for (std::size_t h = 0; h < std::size(kScanHeadrooms); ++h)
     if (std::abs(kScanHeadrooms[h] - headroom) < std::abs(kScanHeadrooms[best] - headroom)) best = h;
   return at[best][set];
 }
 
-double RobustScanRow::OverBudgetAt(ScanSet set, double givenUp) const {
+double ScanRowTotals::OverBudgetAt(ScanSet set, double givenUp) const {
   std::vector<std::pair<double, double>> curve;  // (given up, over budget), increasing given up
   for (const auto& h : at) curve.push_back({h[set].givenUpPct, static_cast<double>(h[set].overBudget)});
   std::sort(curve.begin(), curve.end());
@@ -69,40 +70,82 @@ double RobustScanRow::OverBudgetAt(ScanSet set, double givenUp) const {
   return curve.back().second;
 }
 
-std::vector<RobustScanRow> ScanRobust(const SimConfig& base, const std::vector<TraceCase>& tuningTraces) {
-  std::vector<RobustScanRow> rows;
-  for (const RobustController::Params& params : ScanGrid()) {
-    RobustScanRow row;
-    row.params = params;
-    for (std::size_t h = 0; h < std::size(kScanHeadrooms); ++h) {
-      SimConfig config = base;
-      config.target.headroom = kScanHeadrooms[h];
-      for (const SyntheticCase& c : SyntheticSet(config))
-        for (const auto* list : {&AllScenarios(), &SharedMachineScenarios()})
-          for (Scenario s : *list) {
-            RobustController::Params p = params;
-            p.latencyFrames = c.base.plant.latencyFrames;
-            RobustController law(p);
-            row.at[h][list == &AllScenarios() ? kSynthetic : kShared].Add(RunScenario(law, ConfigFor(s, c.base)));
-          }
-      for (const TraceCase& t : tuningTraces) {
-        RobustController::Params p = params;
-        p.latencyFrames = kSampleTimerLatency;
-        RobustController law(p);
-        ReplaySpec spec;
-        spec.headroom = kScanHeadrooms[h];
-        row.at[h][kTuningTraces].Add(ReplayTraceWith(law, t.trace, t.cost, spec));
-      }
+namespace {
+// Runs one law's parameters over the tuning set at every scan headroom.
+template <class Law, class Row>
+void RunScanRow(Row* row, const SimConfig& base, const std::vector<TraceCase>& tuningTraces) {
+  for (std::size_t h = 0; h < std::size(kScanHeadrooms); ++h) {
+    SimConfig config = base;
+    config.target.headroom = kScanHeadrooms[h];
+    for (const SyntheticCase& c : SyntheticSet(config))
+      for (const auto* list : {&AllScenarios(), &SharedMachineScenarios()})
+        for (Scenario s : *list) {
+          auto p = row->params;
+          p.latencyFrames = c.base.plant.latencyFrames;
+          Law law(p);
+          row->at[h][list == &AllScenarios() ? kSynthetic : kShared].Add(RunScenario(law, ConfigFor(s, c.base)));
+        }
+    for (const TraceCase& t : tuningTraces) {
+      auto p = row->params;
+      p.latencyFrames = kSampleTimerLatency;
+      Law law(p);
+      ReplaySpec spec;
+      spec.headroom = kScanHeadrooms[h];
+      row->at[h][kTuningTraces].Add(ReplayTraceWith(law, t.trace, t.cost, spec));
     }
+  }
+}
+
+std::vector<UEStyleController::Params> UEScanGrid() {
+  struct History {
+    int size;
+    double weight;
+  };
+  std::vector<UEStyleController::Params> grid;
+  for (double blend : {0.9, 0.75})
+    for (int period : {8, 4})
+      for (double threshold : {0.02, 0.05})
+        for (History h : {History{16, 0.9}, History{8, 0.8}, History{32, 0.95}}) {
+          UEStyleController::Params p;
+          p.increaseBlend = blend;
+          p.minChangePeriod = period;
+          p.changeThreshold = threshold;
+          p.historySize = h.size;
+          p.frameWeightExponent = h.weight;
+          grid.push_back(p);
+        }
+  return grid;
+}
+}  // namespace
+
+namespace {
+// One row per parameter set of the grid, each run over the tuning set.
+template <class Law, class Row, class Params>
+std::vector<Row> ScanRows(const std::vector<Params>& grid, const SimConfig& base,
+                          const std::vector<TraceCase>& tuningTraces) {
+  std::vector<Row> rows;
+  for (const Params& params : grid) {
+    Row row;
+    row.params = params;
+    RunScanRow<Law>(&row, base, tuningTraces);
     rows.push_back(row);
   }
   return rows;
+}
+}  // namespace
+
+std::vector<RobustScanRow> ScanRobust(const SimConfig& base, const std::vector<TraceCase>& tuningTraces) {
+  return ScanRows<RobustController, RobustScanRow>(ScanGrid(), base, tuningTraces);
+}
+
+std::vector<UEScanRow> ScanUEStyle(const SimConfig& base, const std::vector<TraceCase>& tuningTraces) {
+  return ScanRows<UEStyleController, UEScanRow>(UEScanGrid(), base, tuningTraces);
 }
 
 namespace {
 // Sum over the sets of the row's over budget at the baseline's given up,
 // relative to the baseline's over budget (3 = as the baseline).
-double Efficiency(const RobustScanRow& row, const RobustScanRow& baseline, double headroom) {
+double Efficiency(const ScanRowTotals& row, const ScanRowTotals& baseline, double headroom) {
   double sum = 0.0;
   for (ScanSet set : {kSynthetic, kShared, kTuningTraces}) {
     const ScanTotals& b = baseline.Base(set, headroom);
@@ -114,9 +157,10 @@ double Efficiency(const RobustScanRow& row, const RobustScanRow& baseline, doubl
   }
   return sum;
 }
-}  // namespace
 
-int PickRobustRow(const std::vector<RobustScanRow>& rows, double headroom) {
+// The pick rule of Docs/Controller.md over any law's scan rows.
+template <class Row>
+int PickRow(const std::vector<Row>& rows, double headroom) {
   if (rows.empty()) return -1;
   const ScanTotals& b = rows.front().Base(kSynthetic, headroom);
   int best = -1;
@@ -130,38 +174,64 @@ int PickRobustRow(const std::vector<RobustScanRow>& rows, double headroom) {
   return best;
 }
 
+// The columns of a scan row after its parameters: per set over budget / given
+// up % / changes at the base headroom, synthetic's still changes and never
+// settled, each set's over budget at the baseline's given up, and the score.
+std::string ScanColumns(const ScanRowTotals& r, const ScanRowTotals& b, double headroom) {
+  const ScanTotals& sy = r.Base(kSynthetic, headroom);
+  const ScanTotals& sh = r.Base(kShared, headroom);
+  const ScanTotals& tr = r.Base(kTuningTraces, headroom);
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "%d / %.2f / %d | %d / %d | %.0f | %d / %.2f / %d | %.0f | %d / %.2f / %d | %.0f | %.2f |",
+                sy.overBudget, sy.givenUpPct, sy.changes, sy.stillChanges, sy.neverSettled,
+                r.OverBudgetAt(kSynthetic, b.Base(kSynthetic, headroom).givenUpPct), sh.overBudget, sh.givenUpPct,
+                sh.changes, r.OverBudgetAt(kShared, b.Base(kShared, headroom).givenUpPct), tr.overBudget,
+                tr.givenUpPct, tr.changes, r.OverBudgetAt(kTuningTraces, b.Base(kTuningTraces, headroom).givenUpPct),
+                Efficiency(r, b, headroom));
+  return line;
+}
+
+const char* kScanHead =
+    "At headroom %.2f: over budget / given up %% / changes per set (synthetic also still changes and "
+    "never settled); \"at base\": over budget at the baseline's given up, interpolated over headrooms "
+    "0.05, 0.1, 0.2, 0.3; score: their sum relative to the baseline (3.00 = as the baseline)\n\n";
+const char* kScanColumnsHead = "synthetic | still / never | at base | shared | at base | tuning traces | at base | score |\n";
+const char* kScanColumnsRule = " ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+}  // namespace
+
+int PickRobustRow(const std::vector<RobustScanRow>& rows, double headroom) { return PickRow(rows, headroom); }
+int PickUEStyleRow(const std::vector<UEScanRow>& rows, double headroom) { return PickRow(rows, headroom); }
+
+void PrintUEStyleScan(std::ostream& out, const std::vector<UEScanRow>& rows, double headroom) {
+  char line[512];
+  std::snprintf(line, sizeof line, kScanHead, headroom);
+  out << line << "| increase blend | change period | threshold | history | " << kScanColumnsHead
+      << "| ---: | ---: | ---: | ---: |" << kScanColumnsRule;
+  const int picked = PickUEStyleRow(rows, headroom);
+  for (int i = 0; i < static_cast<int>(rows.size()); ++i) {
+    const auto& p = rows[i].params;
+    std::snprintf(line, sizeof line, "| %.2f | %d | %.2f | %d x %.2f^age | ", p.increaseBlend, p.minChangePeriod,
+                  p.changeThreshold, p.historySize, p.frameWeightExponent);
+    out << line << ScanColumns(rows[i], rows.front(), headroom)
+        << (i == 0 ? " baseline" : (i == picked ? " **picked**" : "")) << "\n";
+  }
+}
+
 void PrintRobustScan(std::ostream& out, const std::vector<RobustScanRow>& rows, double headroom) {
   char line[512];
-  std::snprintf(line, sizeof line,
-                "At headroom %.2f: over budget / given up %% / changes per set (synthetic also still changes and "
-                "never settled); \"at base\": over budget at the baseline's given up, interpolated over headrooms "
-                "0.05, 0.1, 0.2, 0.3; score: their sum relative to the baseline (3.00 = as the baseline)\n\n",
-                headroom);
-  out << line;
-  out << "| max up | up after | up on | risk | synthetic | still / never | at base | shared | at base | tuning "
-         "traces | at base | score |\n"
-         "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n";
+  std::snprintf(line, sizeof line, kScanHead, headroom);
+  out << line << "| max up | up after | up on | risk | " << kScanColumnsHead << "| ---: | ---: | ---: | ---: |"
+      << kScanColumnsRule;
   const int picked = PickRobustRow(rows, headroom);
   for (int i = 0; i < static_cast<int>(rows.size()); ++i) {
-    const RobustScanRow& r = rows[i];
-    const auto& p = r.params;
+    const auto& p = rows[i].params;
     char risk[32] = "off";
     if (p.riskQuantile > 0.0)
       std::snprintf(risk, sizeof risk, "%.2f/%d%s", p.riskQuantile, p.riskFrames, p.riskLocal ? " local" : "");
-    const ScanTotals& sy = r.Base(kSynthetic, headroom);
-    const ScanTotals& sh = r.Base(kShared, headroom);
-    const ScanTotals& tr = r.Base(kTuningTraces, headroom);
-    const RobustScanRow& b = rows.front();
-    std::snprintf(line, sizeof line,
-                  "| %.1f | %d | %.2f | %s | %d / %.2f / %d | %d / %d | %.0f | %d / %.2f / %d | %.0f | %d / %.2f / %d "
-                  "| %.0f | %.2f |%s\n",
-                  p.maxStepUp, p.minSamplesUp, p.upQuantile, risk, sy.overBudget, sy.givenUpPct, sy.changes,
-                  sy.stillChanges, sy.neverSettled, r.OverBudgetAt(kSynthetic, b.Base(kSynthetic, headroom).givenUpPct),
-                  sh.overBudget, sh.givenUpPct, sh.changes, r.OverBudgetAt(kShared, b.Base(kShared, headroom).givenUpPct),
-                  tr.overBudget, tr.givenUpPct, tr.changes,
-                  r.OverBudgetAt(kTuningTraces, b.Base(kTuningTraces, headroom).givenUpPct),
-                  Efficiency(r, b, headroom), i == 0 ? " baseline" : (i == picked ? " **picked**" : ""));
-    out << line;
+    std::snprintf(line, sizeof line, "| %.1f | %d | %.2f | %s | ", p.maxStepUp, p.minSamplesUp, p.upQuantile, risk);
+    out << line << ScanColumns(rows[i], rows.front(), headroom)
+        << (i == 0 ? " baseline" : (i == picked ? " **picked**" : "")) << "\n";
   }
 }
 

@@ -227,7 +227,7 @@ TEST(SampleOptions, HelpAndParserShareOneTable) {
       EXPECT_EQ(m.find("unknown option"), std::string::npos) << word << ": " << m;
     }
   }
-  EXPECT_EQ(shown, 55);  // every option of the sample once (-h is --help's other name)
+  EXPECT_EQ(shown, 56);  // every option of the sample once (-h is --help's other name)
   for (const FixInfo& f : FixTable()) EXPECT_NE(help.find(std::string("  ") + f.name + " "), std::string::npos);
   for (int f = 0; f < static_cast<int>(Filter::Count); ++f)
     EXPECT_NE(help.find(FilterOption(static_cast<Filter>(f))), std::string::npos);
@@ -429,4 +429,34 @@ TEST(SampleOptions, RecordingThreads) {
   EXPECT_NE(m.find("'two' is not a number"), std::string::npos) << m;
   EXPECT_EQ(nlohmann::json::parse(OptionsToJson(o))["threads"], 1);
   EXPECT_NE(Usage().find("--threads N"), std::string::npos);
+}
+
+// --preset sets existing settings where it stands: later options override it,
+// earlier ones it overrides; every setting of a preset has its row.
+TEST(SampleOptions, Gles2Preset) {
+  Options o;
+  std::string m;
+  ASSERT_EQ(ParseCommandLine({"--supersampling", "--fix", "all", "--preset", "gles2", "--scale", "0.625"}, &o, &m),
+            ParseStatus::Ok) << m;
+  EXPECT_EQ(o.filter, Filter::Bilinear);
+  EXPECT_FALSE(o.motionBlur);
+  EXPECT_FALSE(o.psClear);
+  EXPECT_FALSE(o.superSampling);
+  EXPECT_TRUE(o.dynamicResolution);
+  EXPECT_TRUE(o.aspectLock);
+  EXPECT_EQ(o.control, ControlMode::Manual);
+  EXPECT_FLOAT_EQ(o.scaleX, 0.625f);
+  EXPECT_FLOAT_EQ(o.scaleY, 0.625f);
+  EXPECT_FALSE(o.fixes.Has(Fix::UvInset)) << "the article's quad is not clamped";
+  EXPECT_TRUE(o.fixes.Has(Fix::FrustumCull)) << "fixes elsewhere stay";
+  ASSERT_EQ(ParseCommandLine({"--preset", "gles2", "--filter", "taa"}, &o, &m), ParseStatus::Ok) << m;
+  EXPECT_EQ(o.filter, Filter::TAA);
+  EXPECT_FALSE(o.motionBlur);
+  EXPECT_EQ(ParseCommandLine({"--preset", "gles3"}, &o, &m), ParseStatus::Error);
+  EXPECT_NE(m.find("unknown preset 'gles3' (allowed: gles2)"), std::string::npos) << m;
+  EXPECT_EQ(ParseCommandLine({"--preset"}, &o, &m), ParseStatus::Error);
+  for (const OptionPreset& p : OptionPresets()) {
+    EXPECT_NE(Usage().find("  " + std::string(p.name) + " "), std::string::npos) << p.name;
+    for (const PresetSetting& s : p.settings) EXPECT_NE(FindOptionOf(s.field), nullptr) << p.name;
+  }
 }

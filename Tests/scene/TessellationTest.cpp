@@ -2,6 +2,8 @@
 // under validation (the fixture fails on any message):
 // - the Arena's primitives at half the dynamic viewport are at most 0.30 of
 //   those at full size with tessellation, and exactly the same without;
+// - at the default settings the primitives fall with the scale (the counts
+//   that Docs/Tessellation.md's one-budget table reads);
 // - a displaced plane of independent patches shows no background inside it
 //   (no cracks), and the displacement did change the image;
 // - velocity of a Phong-tessellated flat plane equals the untessellated
@@ -148,6 +150,40 @@ CameraPose Overhead(float height, float back) {
 
 bool IsClear(const std::array<uint8_t, 4>& c) { return c[0] == 255 && c[1] == 0 && c[2] == 255; }
 }  // namespace
+
+// The counts at the default settings (8 pixels per edge, max factor 16), on
+// the static camera and on the cinematic one at 1 s, for Docs/Tessellation.md
+// (scripts/tessellation-tables.py reads the "counts" lines). Without
+// tessellation nothing depends on the scale; with it the primitives fall with it.
+TEST_F(SceneTessellation, ArenaCountsAtTheDefaultSettings) {
+  std::string err;
+  auto scene = Scene::Load(device(), DRR_ARENA_DIR "/scene_description.txt", {}, &err);
+  ASSERT_TRUE(scene) << err;
+  MakeTargets(320, 180);
+  scene->Update(1.0);
+  const SceneRenderParams defaults;
+  for (int camera : {0, 1}) {  // the scene's cinematic camera, camera_static1
+    for (bool tess : {false, true}) {
+      SceneRenderParams p = ParamsFor(scene->Camera(camera), 320.f / 180.f, tess);
+      ASSERT_EQ(p.tessellation.pixelsPerEdge, defaults.tessellation.pixelsPerEdge);
+      uint64_t full = 0;
+      for (float scale : {1.0f, 0.71f, 0.5f}) {
+        const auto s = Render(*scene, p, scale);
+        std::printf("counts camera %d tessellation %d px/edge %g max %g scale %.2f primitives %llu hs %llu ds %llu\n",
+                    camera, int(tess), p.tessellation.pixelsPerEdge, p.tessellation.maxFactor, scale,
+                    (unsigned long long)s.CInvocations, (unsigned long long)s.HSInvocations,
+                    (unsigned long long)s.DSInvocations);
+        if (scale == 1.0f) full = s.CInvocations;
+        if (!tess) {
+          EXPECT_EQ(s.CInvocations, full);
+          EXPECT_EQ(s.HSInvocations, 0u);
+        } else if (scale < 1.0f) {
+          EXPECT_LT(s.CInvocations, full) << "the factors follow the dynamic viewport";
+        }
+      }
+    }
+  }
+}
 
 TEST_F(SceneTessellation, ArenaPrimitivesFollowTheDynamicViewport) {
   std::string err;
