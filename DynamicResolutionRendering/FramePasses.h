@@ -81,6 +81,7 @@ struct FrameSetup {
   bool taau = false, secondary = false, holdJitter = false;
   int historyCur = 0, historyPrev = 0;  // TAAU's output-resolution history pair
   bool historyValid = false;
+  bool computeUpscale = false;  // the upscalers as compute passes (ComputeUpscale.h)
   d3dl::VIEWPORT outputViewport{};
   UpscaleConstants uc{};
 };
@@ -112,6 +113,7 @@ struct TemporalHistory {
 // The constants of both post-processing paths for this frame (the fixes from s.fixes).
 void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dynamicRT, glm::vec2 backBuffer);
 
+class ComputeUpscale;
 SceneTargets ChooseSceneTargets(RenderTargetSet& targets, const FrameSetup& setup, const BackBuffer& bb);
 
 class FramePasses {
@@ -158,6 +160,7 @@ class FramePasses {
   NoiseTexture m_Noise;
   ZoomBox m_ZoomBox;
   FrameProfiler* m_Profiler = nullptr;
+  std::unique_ptr<ComputeUpscale> m_Compute;  // Scale's passes as compute when FrameSetup::computeUpscale
 };
 
 }  // namespace drr

@@ -27,8 +27,9 @@ Texture2D<float> g_DepthCurr : register(t6);  // TAAU: the dynamic depth (closes
 float2 ViewportTexels() { return g_SubSampleRTCurrRatio * g_DynSize; }
 float2 SourceTexelPos(float2 uv01) { return uv01 * ViewportTexels() - 0.5; }
 
-// One texel of the dynamic viewport, clamped to it (never reads outside).
-float3 TexelAt(int2 k) {
+// One texel of the dynamic viewport, clamped to it (never reads outside):
+// the pixel shaders' TexelAt, and what the compute shaders' tiles hold.
+float3 ViewportTexel(int2 k) {
   int2 last = int2(ViewportTexels()) - 1;
   return g_ColorCurr.Load(int3(clamp(k, int2(0, 0), last), 0)).rgb;
 }
@@ -71,5 +72,13 @@ float3 RgbToYCoCg(float3 c) {
   return float3(0.25 * c.r + 0.5 * c.g + 0.25 * c.b, 0.5 * c.r - 0.5 * c.b, -0.25 * c.r + 0.5 * c.g - 0.25 * c.b);
 }
 float3 YCoCgToRgb(float3 c) { return float3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
+
+// The sRGB encoding an sRGB render target applies on write (IEC 61966-2-1);
+// the compute passes write UNORM storage views and encode themselves.
+float LinearToSrgb(float c) {
+  c = saturate(c);
+  return c <= 0.0031308 ? c * 12.92 : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
+}
+float3 LinearToSrgb(float3 c) { return float3(LinearToSrgb(c.r), LinearToSrgb(c.g), LinearToSrgb(c.b)); }
 
 #endif
