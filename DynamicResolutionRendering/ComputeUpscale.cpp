@@ -73,16 +73,14 @@ bool ComputeUpscale::Init(d3dl::Device* device, const ShaderLibrary& shaders, Fr
   m_NoticePrinted = false;
   m_Unavailable.clear();
   size_t compiled = 0;
-  if (!LoadShaders(shaders, false, &m_Unavailable, &compiled)) {
-    // m_Unavailable names the shader
-  } else if (!CreateStates(device)) {
-    m_Unavailable = "cannot create the compute upscalers' constant buffers or sampler";
-  } else {
-    // Both scratch formats must be storage images on this device.
-    for (d3dl::DXGI_FORMAT f : {d3dl::DXGI_FORMAT_R8G8B8A8_UNORM, d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT}) {
-      Scratch probe;
-      if (!MakeScratch(probe, 1, 1, f)) m_Unavailable = "the device has no storage view of the scratch formats";
-    }
+  std::string error;
+  if (!LoadShaders(shaders, false, &error, &compiled)) m_Unavailable = error;
+  else if (!CreateStates(device)) m_Unavailable = "cannot create the compute upscalers' constant buffers or sampler";
+  // Both scratch formats must be storage images on this device.
+  for (d3dl::DXGI_FORMAT f : {d3dl::DXGI_FORMAT_R8G8B8A8_UNORM, d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT}) {
+    Scratch probe;
+    if (m_Unavailable.empty() && !MakeScratch(probe, 1, 1, f))
+      m_Unavailable = "the device has no storage view of the scratch formats";
   }
   *whyNot = m_Unavailable;
   return m_Unavailable.empty();

@@ -2,7 +2,8 @@
 // against their pixel shaders: the same frames rendered both ways in this
 // process, under validation, equal within one 8-bit step on interior pixels;
 // the original's filters ignore the option; a planted wrong compute shader
-// is caught (the comparison really sees the compute path).
+// is caught (the comparison really sees the compute path); without the
+// compute shaders the pixel shaders run.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -112,6 +113,25 @@ TEST(UpscaleComputeOption, PlantedWrongComputeShaderIsCaught) {
   const Image pixel = Render(CaseOptions(c, UpscaleShader::Pixel), c.frames).image;
   const Image planted = Render(compute, c.frames).image;
   EXPECT_GT(testkit::Compare(planted, pixel, kBorder).maxAbs, 1);
+  fs::remove_all(to);
+}
+
+// Without its compute shaders the sample falls back to the pixel shaders
+// (with a notice on stderr): the same image, exactly.
+TEST(UpscaleComputeOption, MissingComputeShadersFallBackToThePixelShaders) {
+  namespace fs = std::filesystem;
+  const fs::path from = ShaderLibrary::DefaultSpvDir("");
+  const fs::path to = fs::path(testing::TempDir()) / "drr_no_compute_shaders";
+  fs::remove_all(to);
+  fs::copy(from, to);
+  for (const fs::directory_entry& e : fs::directory_iterator(to))
+    if (e.path().filename().string().ends_with("CS.spv")) fs::remove(e.path());
+  const ComputeCase c{"fallback", Filter::TAAU, 100, 4};
+  Options compute = CaseOptions(c, UpscaleShader::Compute);
+  compute.shaderDir = to.string();
+  const Image pixel = Render(CaseOptions(c, UpscaleShader::Pixel), c.frames).image;
+  const Image fallback = Render(compute, c.frames).image;
+  EXPECT_EQ(testkit::Compare(fallback, pixel).maxAbs, 0);
   fs::remove_all(to);
 }
 
