@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "FramePasses.h"
+#include "d3dl/BlitExtension.h"
 #include "ResolveFilters.h"
 
 namespace drr {
@@ -16,9 +17,8 @@ constexpr char kSecondaryCS[] = "UpscaleSpatial_SecondaryCS";
 
 // Constants of Shaders/UpscaleComputeTile.hlsli (cbComputeUpscale at b2).
 struct ComputeConstants {
-  uint32_t encodeSrgb[2];  // u0, u1: the target is sRGB, the shader encodes
-  uint32_t writeSecond;    // TAAU: the image to u1 too
-  uint32_t pad;
+  uint32_t writeSecond;  // TAAU: the image to u1 too
+  uint32_t pad[3];
 };
 
 // The port's upscalers have compute versions; the original's filters stay pixel shaders.
@@ -37,15 +37,24 @@ std::vector<std::string> ComputeShaderNames() {
   return names;
 }
 
-bool IsSrgb(d3dl::Texture2D* t) {
-  d3dl::TEXTURE2D_DESC d;
-  t->GetDesc(&d);
-  return d.Format == d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB || d.Format == d3dl::DXGI_FORMAT_B8G8R8A8_UNORM_SRGB;
+// The storage format of a target's scratch: its own texels (copied), or for
+// an sRGB target the shader's float values, which a blit encodes as the
+// target's writes would.
+d3dl::DXGI_FORMAT ScratchFormat(d3dl::DXGI_FORMAT f) {
+  if (f == d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT) return f;
+  return f == d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB || f == d3dl::DXGI_FORMAT_B8G8R8A8_UNORM_SRGB
+             ? d3dl::DXGI_FORMAT_R32G32B32A32_FLOAT
+             : d3dl::DXGI_FORMAT_R8G8B8A8_UNORM;
 }
 
-// The storage format whose texels copy into a target of format f.
-d3dl::DXGI_FORMAT ScratchFormat(d3dl::DXGI_FORMAT f) {
-  return f == d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT ? f : d3dl::DXGI_FORMAT_R8G8B8A8_UNORM;
+// The scratch's texels into the target: a copy, or a same-size point blit that converts.
+void Deliver(d3dl::DeviceContext* ctx, d3dl::Texture2D* target, d3dl::Texture2D* scratch) {
+  d3dl::TEXTURE2D_DESC t, s;
+  target->GetDesc(&t);
+  scratch->GetDesc(&s);
+  if (ScratchFormat(t.Format) != d3dl::DXGI_FORMAT_R32G32B32A32_FLOAT) return ctx->CopyResource(target, scratch);
+  const d3dl::RECT all{0, 0, int32_t(s.Width), int32_t(s.Height)};
+  d3dl::GetBlitExtension(ctx)->BlitRegion(target, all, scratch, all, d3dl::FILTER_MIN_MAG_MIP_POINT);
 }
 
 d3dl::HRESULT CreateDynamicCB(d3dl::Device* device, uint32_t bytes, d3dl::Buffer** cb) {
@@ -76,8 +85,9 @@ bool ComputeUpscale::Init(d3dl::Device* device, const ShaderLibrary& shaders, Fr
   std::string error;
   if (!LoadShaders(shaders, false, &error, &compiled)) m_Unavailable = error;
   else if (!CreateStates(device)) m_Unavailable = "cannot create the compute upscalers' constant buffers or sampler";
-  // Both scratch formats must be storage images on this device.
-  for (d3dl::DXGI_FORMAT f : {d3dl::DXGI_FORMAT_R8G8B8A8_UNORM, d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT}) {
+  // The scratch formats must be storage images.
+  for (d3dl::DXGI_FORMAT f : {d3dl::DXGI_FORMAT_R8G8B8A8_UNORM, d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT,
+                              d3dl::DXGI_FORMAT_R32G32B32A32_FLOAT}) {
     Scratch probe;
     if (m_Unavailable.empty() && !MakeScratch(probe, 1, 1, f))
       m_Unavailable = "the device has no storage view of the scratch formats";
@@ -156,7 +166,7 @@ void ComputeUpscale::Dispatch(d3dl::DeviceContext* ctx, const char* shader, cons
                               const Destination* out, uint32_t outCount) {
   for (uint32_t i = 0; i < outCount; ++i)
     if (!FitScratch(*out[i].scratch, out[i].target)) return;  // out of memory: the frame keeps the old image
-  ComputeConstants cc{{IsSrgb(out[0].target), outCount > 1 && IsSrgb(out[1].target)}, outCount > 1 && out[1].written, 0};
+  const ComputeConstants cc{outCount > 1 && out[1].written, {}};
   Upload(ctx, m_DynamicCB.Get(), &s.dc, sizeof s.dc);
   Upload(ctx, m_UpscaleCB.Get(), &uc, sizeof uc);
   Upload(ctx, m_ComputeCB.Get(), &cc, sizeof cc);
@@ -174,12 +184,13 @@ void ComputeUpscale::Dispatch(d3dl::DeviceContext* ctx, const char* shader, cons
   ctx->CSSetShaderResources(0, srvCount, noSrvs);
   ctx->CSSetUnorderedAccessViews(0, outCount, noUavs, nullptr);
   for (uint32_t i = 0; i < outCount; ++i)
-    if (out[i].written) ctx->CopyResource(out[i].target, out[i].scratch->texture.Get());
+    if (out[i].written) Deliver(ctx, out[i].target, out[i].scratch->texture.Get());
 }
 
 bool ComputeUpscale::Record(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
                             const BackBuffer& bb) {
   if (!s.dynamic || !HasComputeVersion(s.filter)) return false;
+  if (m_Unavailable.empty() && !d3dl::GetBlitExtension(ctx)) m_Unavailable = "the context has no blit for sRGB targets";
   if (!m_Unavailable.empty()) {
     if (!m_NoticePrinted)
       std::fprintf(stderr, "note: compute upscalers unavailable (%s): using the pixel shaders\n", m_Unavailable.c_str());

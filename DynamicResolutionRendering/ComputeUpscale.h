@@ -5,8 +5,9 @@
 // pixel shaders' (Shaders/Upscale*Math.hlsli). They read the same targets as
 // the pixel passes and leave the same results in them: the render targets
 // and the sRGB back buffer cannot be storage images, so each dispatch writes
-// a storage scratch texture that is then copied into its target (same
-// texel format family; the shader encodes sRGB where the target is sRGB).
+// a storage scratch texture that is then copied into its target (same texel
+// format), or for an sRGB target holds the float results and is blitted
+// into it (the blit encodes sRGB as the target's own writes do).
 #pragma once
 
 #include <map>

@@ -73,12 +73,4 @@ float3 RgbToYCoCg(float3 c) {
 }
 float3 YCoCgToRgb(float3 c) { return float3(c.x + c.y - c.z, c.x + c.z, c.x - c.y - c.z); }
 
-// The sRGB encoding an sRGB render target applies on write (IEC 61966-2-1);
-// the compute passes write UNORM storage views and encode themselves.
-float LinearToSrgb(float c) {
-  c = saturate(c);
-  return c <= 0.0031308 ? c * 12.92 : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
-}
-float3 LinearToSrgb(float3 c) { return float3(LinearToSrgb(c.r), LinearToSrgb(c.g), LinearToSrgb(c.b)); }
-
 #endif

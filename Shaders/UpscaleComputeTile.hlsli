@@ -9,10 +9,8 @@
 #define UPSCALE_TILE 8
 
 cbuffer cbComputeUpscale : register(b2) {
-  uint g_EncodeSrgb0;  // u0's texture is read through an sRGB view: encode
-  uint g_EncodeSrgb1;  // the same for u1
   uint g_WriteSecond;  // TAAU: also write the image to u1 (UpscaleTemporalCS.hlsl)
-  uint g_ComputePad;
+  uint3 g_ComputePad;
 };
 
 RWTexture2D<float4> g_Out0 : register(u0);
@@ -25,7 +23,5 @@ float2 OutputUV(uint2 px) { return (float2(px) + 0.5) * g_InvOutputSize; }
 uint2 TileLastPixel(uint2 groupId) {
   return min(groupId * UPSCALE_TILE + (UPSCALE_TILE - 1), uint2(g_OutputSize) - 1);
 }
-
-float4 Encoded(float4 c, uint srgb) { return srgb != 0 ? float4(LinearToSrgb(c.rgb), c.a) : c; }
 
 #endif

@@ -6,7 +6,7 @@
 //                   memory; the filters that read through the sampler
 //                   (bilinear taps) go without
 //   SHARPEN         the sharpening: a tile of its output-size source
-// The result goes to u0, encoded when u0's texture is read as sRGB.
+// The result goes to u0.
 #include "UpscaleComputeTile.hlsli"
 
 #define SPATIAL_TILE_SIDE 22
@@ -67,5 +67,5 @@ void SpatialCS(uint3 groupId : SV_GroupID, uint3 px : SV_DispatchThreadID, uint 
 #else
   float3 c = SPATIAL_COLOUR(OutputUV(px.xy));
 #endif
-  g_Out0[px.xy] = Encoded(float4(c, 1.0), g_EncodeSrgb0);
+  g_Out0[px.xy] = float4(c, 1.0);
 }

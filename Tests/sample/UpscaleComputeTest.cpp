@@ -1,6 +1,8 @@
 // The upscalers' compute passes (--upscale-shader compute, ComputeUpscale.h)
 // against their pixel shaders: the same frames rendered both ways in this
-// process, under validation, equal within one 8-bit step on interior pixels;
+// process, under validation, equal within one 8-bit step on interior pixels
+// (a driver may round a compute shader's float arithmetic differently from a
+// pixel shader's; lavapipe gives identical images);
 // the original's filters ignore the option; a planted wrong compute shader
 // is caught (the comparison really sees the compute path); without the
 // compute shaders the pixel shaders run.
