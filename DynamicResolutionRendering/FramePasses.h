@@ -113,8 +113,9 @@ struct TemporalHistory {
 // The constants of both post-processing paths for this frame (the fixes from s.fixes).
 void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dynamicRT, glm::vec2 backBuffer);
 
-class ComputeUpscale;
 SceneTargets ChooseSceneTargets(RenderTargetSet& targets, const FrameSetup& setup, const BackBuffer& bb);
+
+class ComputeUpscale;
 
 class FramePasses {
  public:

@@ -22,7 +22,6 @@ inline const char* UpscaleShaderName(UpscaleShader u) {
   return u == UpscaleShader::Compute ? "Compute shaders" : "Pixel shaders";
 }
 
-
 // ControlMode (--control) and ControlLaw (--law) and their names are the
 // controller core's (ResolutionController.h).
 
