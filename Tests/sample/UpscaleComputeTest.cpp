@@ -10,6 +10,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <ostream>
 #include <string>
@@ -99,42 +100,47 @@ TEST(UpscaleComputeOption, OriginalFiltersIgnoreIt) {
   }
 }
 
+namespace fs = std::filesystem;
+
+// A copy of the build's shader folder, which `change` edits, and the image
+// of TAAU run with it in compute mode beside the image of the pixel shaders.
+struct EditedShaders {
+  Image pixel, compute;
+};
+EditedShaders RenderWithEditedShaders(const char* folder, const std::function<void(const fs::path&)>& change) {
+  const fs::path from = ShaderLibrary::DefaultSpvDir("");
+  const fs::path to = fs::path(testing::TempDir()) / folder;
+  fs::remove_all(to);
+  fs::copy(from, to);
+  change(to);
+  const ComputeCase c{folder, Filter::TAAU, 100, 4};
+  Options compute = CaseOptions(c, UpscaleShader::Compute);
+  compute.shaderDir = to.string();
+  EditedShaders r{Render(CaseOptions(c, UpscaleShader::Pixel), c.frames).image, Render(compute, c.frames).image};
+  fs::remove_all(to);
+  return r;
+}
+
 // A shader folder whose compute TAAU is the nearest-texel compute upscaler:
 // the comparison above must fail on it, so it does see the compute path.
 TEST(UpscaleComputeOption, PlantedWrongComputeShaderIsCaught) {
-  namespace fs = std::filesystem;
-  const fs::path from = ShaderLibrary::DefaultSpvDir("");
-  const fs::path to = fs::path(testing::TempDir()) / "drr_planted_compute_shaders";
-  fs::remove_all(to);
-  fs::copy(from, to);
-  fs::copy_file(from / "UpscaleSpatial_NearestCS.spv", to / "UpscaleTemporal_TemporalUpsampleCS.spv",
-                fs::copy_options::overwrite_existing);
-  const ComputeCase c{"planted", Filter::TAAU, 100, 4};
-  Options compute = CaseOptions(c, UpscaleShader::Compute);
-  compute.shaderDir = to.string();
-  const Image pixel = Render(CaseOptions(c, UpscaleShader::Pixel), c.frames).image;
-  const Image planted = Render(compute, c.frames).image;
-  EXPECT_GT(testkit::Compare(planted, pixel, kBorder).maxAbs, 1);
-  fs::remove_all(to);
+  const EditedShaders r = RenderWithEditedShaders("drr_planted_compute_shaders", [](const fs::path& to) {
+    fs::copy_file(to / "UpscaleSpatial_NearestCS.spv", to / "UpscaleTemporal_TemporalUpsampleCS.spv",
+                  fs::copy_options::overwrite_existing);
+  });
+  EXPECT_GT(testkit::Compare(r.compute, r.pixel, kBorder).maxAbs, 1);
 }
 
 // Without its compute shaders the sample falls back to the pixel shaders
 // (with a notice on stderr): the same image, exactly.
 TEST(UpscaleComputeOption, MissingComputeShadersFallBackToThePixelShaders) {
-  namespace fs = std::filesystem;
-  const fs::path from = ShaderLibrary::DefaultSpvDir("");
-  const fs::path to = fs::path(testing::TempDir()) / "drr_no_compute_shaders";
-  fs::remove_all(to);
-  fs::copy(from, to);
-  for (const fs::directory_entry& e : fs::directory_iterator(to))
-    if (e.path().filename().string().ends_with("CS.spv")) fs::remove(e.path());
-  const ComputeCase c{"fallback", Filter::TAAU, 100, 4};
-  Options compute = CaseOptions(c, UpscaleShader::Compute);
-  compute.shaderDir = to.string();
-  const Image pixel = Render(CaseOptions(c, UpscaleShader::Pixel), c.frames).image;
-  const Image fallback = Render(compute, c.frames).image;
-  EXPECT_EQ(testkit::Compare(fallback, pixel).maxAbs, 0);
-  fs::remove_all(to);
+  const EditedShaders r = RenderWithEditedShaders("drr_no_compute_shaders", [](const fs::path& to) {
+    std::vector<fs::path> compute;
+    for (const fs::directory_entry& e : fs::directory_iterator(to))
+      if (e.path().filename().string().ends_with("CS.spv")) compute.push_back(e.path());
+    for (const fs::path& p : compute) fs::remove(p);
+  });
+  EXPECT_EQ(testkit::Compare(r.compute, r.pixel).maxAbs, 0);
 }
 
 }  // namespace
