@@ -75,10 +75,8 @@ void Upload(d3dl::DeviceContext* ctx, d3dl::Buffer* cb, const void* data, size_t
 }
 }  // namespace
 
-bool ComputeUpscale::Init(d3dl::Device* device, const ShaderLibrary& shaders, FrameProfiler* profiler,
-                          std::string* whyNot) {
+bool ComputeUpscale::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* whyNot) {
   m_Device = device;
-  m_Profiler = profiler;
   m_NoticePrinted = false;
   m_Unavailable.clear();
   size_t compiled = 0;
@@ -188,7 +186,8 @@ void ComputeUpscale::Dispatch(d3dl::DeviceContext* ctx, const char* shader, cons
 }
 
 bool ComputeUpscale::Record(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
-                            const BackBuffer& bb) {
+                            const BackBuffer& bb, FrameProfiler* profiler) {
+  m_Profiler = profiler;
   if (!s.dynamic || !HasComputeVersion(s.filter)) return false;
   if (m_Unavailable.empty() && !d3dl::GetBlitExtension(ctx)) m_Unavailable = "the context has no blit for sRGB targets";
   if (!m_Unavailable.empty()) {

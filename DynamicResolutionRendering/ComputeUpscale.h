@@ -29,7 +29,7 @@ class ComputeUpscale {
   // Loads the compute shaders and tries the scratch formats; false (with the
   // reason in *whyNot) when the device cannot run them, and Record then
   // declines every frame.
-  bool Init(d3dl::Device* device, const ShaderLibrary& shaders, FrameProfiler* profiler, std::string* whyNot);
+  bool Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* whyNot);
   // F4: recompiles from source; keeps the old set on any error.
   bool LoadShaders(const ShaderLibrary& shaders, bool fromSource, std::string* error, size_t* compiled);
   void Release();
@@ -37,8 +37,10 @@ class ComputeUpscale {
   // Records the frame's upscale passes (Scale's: TAAU or the spatial filter,
   // the sharpening, the secondary upscale). False when the compute path is
   // unavailable: the caller then records the pixel passes; the first such
-  // frame prints a one-line notice.
-  bool Record(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb);
+  // frame prints a one-line notice. The passes are counted in profiler
+  // under the pixel passes' names.
+  bool Record(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb,
+              FrameProfiler* profiler);
 
  private:
   // A storage texture the dispatches write, copied into its target.
@@ -69,7 +71,7 @@ class ComputeUpscale {
   void Secondary(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb);
 
   d3dl::Device* m_Device = nullptr;
-  FrameProfiler* m_Profiler = nullptr;
+  FrameProfiler* m_Profiler = nullptr;  // this frame's (Record)
   std::string m_Unavailable;  // why the compute path cannot run ("" when it can)
   bool m_NoticePrinted = false;
   std::map<std::string, d3dl::ComPtr<d3dl::ComputeShader>> m_Shaders;  // by shader name

@@ -116,7 +116,7 @@ bool FramePasses::Init(d3dl::Device* device, const ShaderLibrary& shaders, Frame
   }
   m_Compute = std::make_unique<ComputeUpscale>();
   std::string computeUnavailable;  // then its Record declines, with a notice, and Scale records pixel shaders
-  m_Compute->Init(device, shaders, profiler, &computeUnavailable);
+  m_Compute->Init(device, shaders, &computeUnavailable);
   return m_ZoomBox.Init(device, shaders, error);
 }
 
@@ -360,7 +360,7 @@ d3dl::PixelShader* FramePasses::ResolveShader(const FrameSetup& s, const char** 
 
 void FramePasses::Scale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb) {
   m_Profiler->Timers().scale.Start(ctx);
-  if (s.dynamic && !(s.computeUpscale && m_Compute->Record(ctx, s, rts, bb))) {
+  if (s.dynamic && !(s.computeUpscale && m_Compute->Record(ctx, s, rts, bb, m_Profiler))) {
     d3dl::RenderTargetView* out = s.secondary ? rts[RT::UpscaleOutput].rtv.Get() : bb.rtv;
     if (s.taau) {
       TemporalUpsample(ctx, s, rts, bb);
