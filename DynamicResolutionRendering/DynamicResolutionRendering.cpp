@@ -356,6 +356,7 @@ FrameSetup Sample::MakeFrameSetup(const FramePlan& plan) {
   s.taau = targets.taau;
   s.secondary = targets.dynamic && targets.Secondary();
   s.holdJitter = m_Options.pause;
+  s.computeUpscale = m_Options.upscaleShader == UpscaleShader::Compute;
   s.outputViewport = s.secondary ? d3dl::VIEWPORT{0, 0, float(targets.outputW), float(targets.outputH), 0, 1}
                                  : s.backBufferViewport;
   m_History.Advance(s, s.dynamic ? glm::vec2(dr.GetRTScaleX(), dr.GetRTScaleY()) : glm::vec2(1.f),

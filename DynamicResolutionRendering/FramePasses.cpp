@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include "ComputeUpscale.h"
+
 namespace drr {
 
 namespace {
@@ -112,6 +114,9 @@ bool FramePasses::Init(d3dl::Device* device, const ShaderLibrary& shaders, Frame
     *error = "cannot create the lookup/noise textures";
     return false;
   }
+  m_Compute = std::make_unique<ComputeUpscale>();
+  std::string computeUnavailable;  // then its Record declines, with a notice, and Scale records pixel shaders
+  m_Compute->Init(device, shaders, &computeUnavailable);
   return m_ZoomBox.Init(device, shaders, error);
 }
 
@@ -140,11 +145,15 @@ bool FramePasses::LoadShaders(const ShaderLibrary& lib, bool fromSource, std::st
       *compiled += c;
     }
   }
+  size_t computeCompiled = 0;
+  if (m_Compute && !m_Compute->LoadShaders(lib, fromSource, error, &computeCompiled)) return false;
+  *compiled += computeCompiled;
   m_Shaders = std::move(next);  // all loaded: F4 keeps the old set on any error
   return true;
 }
 
 void FramePasses::Release() {
+  if (m_Compute) m_Compute->Release();
   m_ZoomBox.Release();
   m_CubicLookup.Release();
   m_Noise.Release();
@@ -351,7 +360,7 @@ d3dl::PixelShader* FramePasses::ResolveShader(const FrameSetup& s, const char** 
 
 void FramePasses::Scale(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb) {
   m_Profiler->Timers().scale.Start(ctx);
-  if (s.dynamic) {
+  if (s.dynamic && !(s.computeUpscale && m_Compute->Record(ctx, s, rts, bb, m_Profiler))) {
     d3dl::RenderTargetView* out = s.secondary ? rts[RT::UpscaleOutput].rtv.Get() : bb.rtv;
     if (s.taau) {
       TemporalUpsample(ctx, s, rts, bb);

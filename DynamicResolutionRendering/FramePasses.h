@@ -81,6 +81,7 @@ struct FrameSetup {
   bool taau = false, secondary = false, holdJitter = false;
   int historyCur = 0, historyPrev = 0;  // TAAU's output-resolution history pair
   bool historyValid = false;
+  bool computeUpscale = false;  // the upscalers as compute passes (ComputeUpscale.h)
   d3dl::VIEWPORT outputViewport{};
   UpscaleConstants uc{};
 };
@@ -113,6 +114,8 @@ struct TemporalHistory {
 void FillConstants(FrameSetup& s, const TemporalHistory& h, glm::vec2 dynamicRT, glm::vec2 backBuffer);
 
 SceneTargets ChooseSceneTargets(RenderTargetSet& targets, const FrameSetup& setup, const BackBuffer& bb);
+
+class ComputeUpscale;
 
 class FramePasses {
  public:
@@ -158,6 +161,7 @@ class FramePasses {
   NoiseTexture m_Noise;
   ZoomBox m_ZoomBox;
   FrameProfiler* m_Profiler = nullptr;
+  std::unique_ptr<ComputeUpscale> m_Compute;  // Scale's passes as compute when FrameSetup::computeUpscale
 };
 
 }  // namespace drr

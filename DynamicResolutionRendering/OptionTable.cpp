@@ -115,6 +115,13 @@ const OptionRow kRows[] = {
          "temporal upsample (r.TemporalAA.Upsampling 1): --filter taau;\n"
          "wins over --upscale-quality")
         .Gui(Widget::Custom, "Temporal Upsample"),
+    Choice("--upscale-shader", "KIND", &Options::upscaleShader,
+           ChoicesOf<UpscaleShader, UpscaleShaderOption, UpscaleShaderName>("upscale shader"),
+           "the port's upscalers (TAAU, r.Upscale.Quality, edge-\n"
+           "adaptive, secondary) as {choices} shaders (default\n"
+           "{default}; pixel, with a notice, where the device has\n"
+           "no storage images); the original's filters stay pixel")
+        .Json("upscale_shader").Gui(Widget::Combo, "Upscaler shaders:").EnabledIf(Dynamic),
     Number("--secondary-screen-percentage", "P", &Options::secondaryScreenPercentage, 25, 100,
            "static second spatial upscale after the primary one (or\n"
            "TAAU) and before the GUI, in percent of the back buffer\n"

@@ -50,7 +50,8 @@ constexpr Choices ChoicesOf(const char* noun) {
 using OptionField = std::variant<std::monostate, bool Options::*, uint32_t Options::*, int Options::*,
                                  int64_t Options::*, double Options::*, float Options::*, std::string Options::*,
                                  Filter Options::*, ControlMode Options::*, ControlLaw Options::*,
-                                 FixSet Options::*, Renderer Options::*, ShadowLaw Options::*>;
+                                 FixSet Options::*, Renderer Options::*, ShadowLaw Options::*,
+                                 UpscaleShader Options::*>;
 
 struct OptionRow {
   const char* name = nullptr;      // command line; Heading: the help heading

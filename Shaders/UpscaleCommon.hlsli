@@ -27,8 +27,9 @@ Texture2D<float> g_DepthCurr : register(t6);  // TAAU: the dynamic depth (closes
 float2 ViewportTexels() { return g_SubSampleRTCurrRatio * g_DynSize; }
 float2 SourceTexelPos(float2 uv01) { return uv01 * ViewportTexels() - 0.5; }
 
-// One texel of the dynamic viewport, clamped to it (never reads outside).
-float3 TexelAt(int2 k) {
+// One texel of the dynamic viewport, clamped to it (never reads outside):
+// the pixel shaders' TexelAt, and what the compute shaders' tiles hold.
+float3 ViewportTexel(int2 k) {
   int2 last = int2(ViewportTexels()) - 1;
   return g_ColorCurr.Load(int3(clamp(k, int2(0, 0), last), 0)).rgb;
 }

@@ -99,7 +99,7 @@ TEST(OptionTable, EveryReportKeyComesFromItsRow) {
       "symmetric_taa", "ps_clear", "pause", "zoom", "gui", "anisotropy", "threads", "time", "fixed_dt",
       "validation", "fixes", "secondary_screen_percentage", "mip_bias", "auto_mip_bias", "renderer", "ssao",
       "shadow_scale", "shadow_law", "shadow_map_size", "taa_mip_bias", "tessellation", "tess_pixels_per_edge",
-      "max_tess_factor"};
+      "max_tess_factor", "upscale_shader"};
   EXPECT_EQ(keys, known);
 }
 

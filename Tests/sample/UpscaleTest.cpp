@@ -1,11 +1,13 @@
 // The upscalers of Docs/Upscaling.md in the whole sample, under validation:
 // each spatial quality against a CPU evaluation of its kernel on the frame's
-// own dynamic colour, and TAAU's convergence, camera cut and scale change.
+// own dynamic colour, and TAAU's convergence, camera cut (both with its pixel
+// and its compute shader) and scale change.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <string>
 
 #include "SampleTestKit.h"
 #include "analysis/ImageMetrics.h"
@@ -201,12 +203,15 @@ double Psnr(const Options& o, int frames, const ImageF& ref) {
 // A still camera: after two jitter cycles TAAU at 0.5 has gathered about
 // four samples per output pixel and comes within 0.5 dB of the native image
 // (point, full resolution), and well above its own first (reset) frame.
-TEST(UpscaleTemporal, StillCameraConvergesAtHalfScale) {
+// Both implementations (--upscale-shader pixel and compute).
+class UpscaleTemporal : public ::testing::TestWithParam<UpscaleShader> {};
+TEST_P(UpscaleTemporal, StillCameraConvergesAtHalfScale) {
   const ImageF ref = Reference(1);
   Options native = Base(Filter::Point, 1.0f);
   native.dynamicResolution = false;
   const double psnrNative = Psnr(native, 2, ref);
-  const Options taau = Base(Filter::TAAU, 0.5f);
+  Options taau = Base(Filter::TAAU, 0.5f);
+  taau.upscaleShader = GetParam();
   const int n = 2 * int(kUpsampleJitterLength);
   const double psnrFirst = Psnr(taau, 1, ref), psnrN = Psnr(taau, n, ref);
   const double psnrSpatial = Psnr(Base(Filter::UpscaleCatmullRom, 0.5f), 2, ref);
@@ -216,11 +221,15 @@ TEST(UpscaleTemporal, StillCameraConvergesAtHalfScale) {
   EXPECT_GT(psnrN, psnrFirst + 1.0);
   EXPECT_GT(psnrN, psnrSpatial);
 }
+INSTANTIATE_TEST_SUITE_P(Shaders, UpscaleTemporal, ::testing::Values(UpscaleShader::Pixel, UpscaleShader::Compute),
+                         [](const auto& info) { return std::string(UpscaleShaderOption(info.param)); });
 
 // The frame after a camera cut is exactly the first frame of a TAAU run
 // started on that camera: history and jitter restart.
-TEST_F(UpscaleTaau, CameraCutEqualsAResetFrame) {
+class UpscaleTaauCut : public SampleTest, public ::testing::WithParamInterface<UpscaleShader> {};
+TEST_P(UpscaleTaauCut, CameraCutEqualsAResetFrame) {
   Options o = Base(Filter::TAAU, 0.5f);
+  o.upscaleShader = GetParam();
   o.camera = 1;
   StartSample(o);
   RenderAndCapture(sample, 9);
@@ -240,6 +249,8 @@ TEST_F(UpscaleTaau, CameraCutEqualsAResetFrame) {
   const testkit::Diff d = testkit::Compare(afterCut, reset);
   EXPECT_EQ(d.maxAbs, 0) << d.differing << " pixels differ";
 }
+INSTANTIATE_TEST_SUITE_P(Shaders, UpscaleTaauCut, ::testing::Values(UpscaleShader::Pixel, UpscaleShader::Compute),
+                         [](const auto& info) { return std::string(UpscaleShaderOption(info.param)); });
 
 // A change of the dynamic scale keeps the output-resolution history: the
 // frame after 0.5 -> 0.71 stays close to the converged one (no reset pop).

@@ -1,0 +1,268 @@
+#include "ComputeUpscale.h"
+
+#include <cstdio>
+#include <cstring>
+#include <vector>
+
+#include "FramePasses.h"
+#include "d3dl/BlitExtension.h"
+#include "ResolveFilters.h"
+
+namespace drr {
+
+namespace {
+constexpr uint32_t kTile = 8;  // UPSCALE_TILE in Shaders/UpscaleComputeTile.hlsli
+constexpr char kSharpenCS[] = "UpscaleSpatial_SharpenCS";
+constexpr char kSecondaryCS[] = "UpscaleSpatial_SecondaryCS";
+
+// Constants of Shaders/UpscaleComputeTile.hlsli (cbComputeUpscale at b2).
+struct ComputeConstants {
+  uint32_t writeSecond;  // TAAU: the image to u1 too
+  uint32_t pad[3];
+};
+
+// The port's upscalers have compute versions; the original's filters stay pixel shaders.
+bool HasComputeVersion(Filter f) { return std::strncmp(GetFilterInfo(f).shader, "Upscale", 7) == 0; }
+
+// A filter's compute shader: its pixel shader's name with CS for PS.
+std::string ComputeName(Filter f) {
+  std::string name = GetFilterInfo(f).shader;
+  return name.replace(name.size() - 2, 2, "CS");
+}
+
+std::vector<std::string> ComputeShaderNames() {
+  std::vector<std::string> names = {kSharpenCS, kSecondaryCS};
+  for (int f = 0; f < int(Filter::Count); ++f)
+    if (HasComputeVersion(Filter(f))) names.push_back(ComputeName(Filter(f)));
+  return names;
+}
+
+// The storage format of a target's scratch: its own texels (copied), or for
+// an sRGB target the shader's float values, which a blit encodes as the
+// target's writes would.
+d3dl::DXGI_FORMAT ScratchFormat(d3dl::DXGI_FORMAT f) {
+  if (f == d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT) return f;
+  return f == d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB || f == d3dl::DXGI_FORMAT_B8G8R8A8_UNORM_SRGB
+             ? d3dl::DXGI_FORMAT_R32G32B32A32_FLOAT
+             : d3dl::DXGI_FORMAT_R8G8B8A8_UNORM;
+}
+
+// The scratch's texels into the target: a copy, or a same-size point blit that converts.
+void Deliver(d3dl::DeviceContext* ctx, d3dl::Texture2D* target, d3dl::Texture2D* scratch) {
+  d3dl::TEXTURE2D_DESC t, s;
+  target->GetDesc(&t);
+  scratch->GetDesc(&s);
+  if (ScratchFormat(t.Format) != d3dl::DXGI_FORMAT_R32G32B32A32_FLOAT) return ctx->CopyResource(target, scratch);
+  const d3dl::RECT all{0, 0, int32_t(s.Width), int32_t(s.Height)};
+  d3dl::GetBlitExtension(ctx)->BlitRegion(target, all, scratch, all, d3dl::FILTER_MIN_MAG_MIP_POINT);
+}
+
+d3dl::HRESULT CreateDynamicCB(d3dl::Device* device, uint32_t bytes, d3dl::Buffer** cb) {
+  d3dl::BUFFER_DESC d;
+  d.ByteWidth = bytes;
+  d.Usage = d3dl::USAGE_DYNAMIC;
+  d.BindFlags = d3dl::BIND_CONSTANT_BUFFER;
+  d.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
+  return device->CreateBuffer(&d, nullptr, cb);
+}
+
+void Upload(d3dl::DeviceContext* ctx, d3dl::Buffer* cb, const void* data, size_t size) {
+  d3dl::MAPPED_SUBRESOURCE m;
+  if (d3dl::SUCCEEDED(ctx->Map(cb, 0, d3dl::MAP_WRITE_DISCARD, 0, &m))) {
+    std::memcpy(m.pData, data, size);
+    ctx->Unmap(cb, 0);
+  }
+}
+}  // namespace
+
+bool ComputeUpscale::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* whyNot) {
+  m_Device = device;
+  m_NoticePrinted = false;
+  m_Unavailable.clear();
+  size_t compiled = 0;
+  std::string error;
+  if (!LoadShaders(shaders, false, &error, &compiled)) m_Unavailable = error;
+  else if (!CreateStates(device)) m_Unavailable = "cannot create the compute upscalers' constant buffers or sampler";
+  // The scratch formats must be storage images.
+  for (d3dl::DXGI_FORMAT f : {d3dl::DXGI_FORMAT_R8G8B8A8_UNORM, d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT,
+                              d3dl::DXGI_FORMAT_R32G32B32A32_FLOAT}) {
+    Scratch probe;
+    if (m_Unavailable.empty() && !MakeScratch(probe, 1, 1, f))
+      m_Unavailable = "the device has no storage view of the scratch formats";
+  }
+  *whyNot = m_Unavailable;
+  return m_Unavailable.empty();
+}
+
+bool ComputeUpscale::CreateStates(d3dl::Device* device) {
+  d3dl::SAMPLER_DESC linear;  // as FramePasses' linear clamp sampler (g_LinearClamp)
+  linear.Filter = d3dl::FILTER_MIN_MAG_MIP_LINEAR;
+  linear.MinLOD = 0.0f;
+  linear.ComparisonFunc = d3dl::COMPARISON_ALWAYS;
+  return d3dl::SUCCEEDED(CreateDynamicCB(device, sizeof(DynamicConstants), m_DynamicCB.ReleaseAndGetAddressOf())) &&
+         d3dl::SUCCEEDED(CreateDynamicCB(device, sizeof(UpscaleConstants), m_UpscaleCB.ReleaseAndGetAddressOf())) &&
+         d3dl::SUCCEEDED(CreateDynamicCB(device, sizeof(ComputeConstants), m_ComputeCB.ReleaseAndGetAddressOf())) &&
+         d3dl::SUCCEEDED(device->CreateSamplerState(&linear, m_Linear.ReleaseAndGetAddressOf()));
+}
+
+bool ComputeUpscale::LoadShaders(const ShaderLibrary& lib, bool fromSource, std::string* error, size_t* compiled) {
+  std::map<std::string, d3dl::ComPtr<d3dl::ComputeShader>> next;
+  *compiled = 0;
+  for (const std::string& name : ComputeShaderNames()) {
+    std::vector<uint32_t> code;
+    bool c = false;
+    if (!lib.Load(name, fromSource, &code, error, &c)) return false;
+    if (d3dl::FAILED(m_Device->CreateComputeShader(code.data(), code.size() * sizeof(uint32_t),
+                                                   next[name].GetAddressOf()))) {
+      *error = "cannot create the compute shader " + name;
+      return false;
+    }
+    *compiled += c;
+  }
+  m_Shaders = std::move(next);
+  return true;
+}
+
+void ComputeUpscale::Release() {
+  m_Shaders.clear();
+  m_DynamicCB = m_UpscaleCB = m_ComputeCB = nullptr;
+  m_Linear = nullptr;
+  m_History = m_Output = m_Final = Scratch{};
+  m_Device = nullptr;
+}
+
+bool ComputeUpscale::MakeScratch(Scratch& slot, uint32_t w, uint32_t h, d3dl::DXGI_FORMAT format) {
+  if (slot.texture) {
+    d3dl::TEXTURE2D_DESC d;
+    slot.texture->GetDesc(&d);
+    if (d.Width == w && d.Height == h && d.Format == format) return true;
+  }
+  slot = Scratch{};
+  d3dl::TEXTURE2D_DESC d;
+  d.Width = w;
+  d.Height = h;
+  d.MipLevels = 1;
+  d.Format = format;
+  d.BindFlags = d3dl::BIND_UNORDERED_ACCESS;
+  if (d3dl::FAILED(m_Device->CreateTexture2D(&d, nullptr, slot.texture.GetAddressOf())) ||
+      d3dl::FAILED(m_Device->CreateUnorderedAccessView(slot.texture.Get(), nullptr, slot.uav.GetAddressOf()))) {
+    slot = Scratch{};
+    return false;
+  }
+  slot.texture->SetDebugName("compute upscale scratch");
+  return true;
+}
+
+bool ComputeUpscale::FitScratch(Scratch& slot, d3dl::Texture2D* target) {
+  d3dl::TEXTURE2D_DESC d;
+  target->GetDesc(&d);
+  return MakeScratch(slot, d.Width, d.Height, ScratchFormat(d.Format));
+}
+
+void ComputeUpscale::Dispatch(d3dl::DeviceContext* ctx, const char* shader, const FrameSetup& s,
+                              const UpscaleConstants& uc, d3dl::ShaderResourceView* const* srvs, uint32_t srvCount,
+                              const Destination* out, uint32_t outCount) {
+  for (uint32_t i = 0; i < outCount; ++i)
+    if (!FitScratch(*out[i].scratch, out[i].target)) return;  // out of memory: the frame keeps the old image
+  const ComputeConstants cc{outCount > 1 && out[1].written, {}};
+  Upload(ctx, m_DynamicCB.Get(), &s.dc, sizeof s.dc);
+  Upload(ctx, m_UpscaleCB.Get(), &uc, sizeof uc);
+  Upload(ctx, m_ComputeCB.Get(), &cc, sizeof cc);
+  d3dl::Buffer* cbs[3] = {m_DynamicCB.Get(), m_UpscaleCB.Get(), m_ComputeCB.Get()};
+  ctx->CSSetConstantBuffers(0, 3, cbs);
+  d3dl::SamplerState* samplers[3] = {m_Linear.Get(), m_Linear.Get(), m_Linear.Get()};
+  ctx->CSSetSamplers(0, 3, samplers);
+  ctx->CSSetShaderResources(0, srvCount, srvs);
+  d3dl::UnorderedAccessView* uavs[2] = {out[0].scratch->uav.Get(), outCount > 1 ? out[1].scratch->uav.Get() : nullptr};
+  ctx->CSSetUnorderedAccessViews(0, outCount, uavs, nullptr);
+  ctx->CSSetShader(m_Shaders.at(shader).Get());
+  ctx->Dispatch((uint32_t(uc.outputSize[0]) + kTile - 1) / kTile, (uint32_t(uc.outputSize[1]) + kTile - 1) / kTile, 1);
+  d3dl::ShaderResourceView* noSrvs[8] = {};
+  d3dl::UnorderedAccessView* noUavs[2] = {};
+  ctx->CSSetShaderResources(0, srvCount, noSrvs);
+  ctx->CSSetUnorderedAccessViews(0, outCount, noUavs, nullptr);
+  for (uint32_t i = 0; i < outCount; ++i)
+    if (out[i].written) Deliver(ctx, out[i].target, out[i].scratch->texture.Get());
+}
+
+bool ComputeUpscale::Record(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
+                            const BackBuffer& bb, FrameProfiler* profiler) {
+  m_Profiler = profiler;
+  if (!s.dynamic || !HasComputeVersion(s.filter)) return false;
+  if (m_Unavailable.empty() && !d3dl::GetBlitExtension(ctx)) m_Unavailable = "the context has no blit for sRGB targets";
+  if (!m_Unavailable.empty()) {
+    if (!m_NoticePrinted)
+      std::fprintf(stderr, "note: compute upscalers unavailable (%s): using the pixel shaders\n", m_Unavailable.c_str());
+    m_NoticePrinted = true;
+    return false;
+  }
+  ctx->OMSetRenderTargets(0, nullptr, nullptr);  // the scene's and motion blur's targets are read now
+  // The primary upscale's output: the secondary upscale's source or the back buffer.
+  d3dl::Texture2D* out = s.secondary ? rts[RT::UpscaleOutput].texture.Get() : bb.texture;
+  Scratch& outScratch = s.secondary ? m_Output : m_Final;
+  if (s.taau) {
+    Temporal(ctx, s, rts, bb);
+  } else if (HasSharpenPass(s.filter)) {
+    Spatial(ctx, s, rts, {rts[RT::UpscaleSharpenInput].texture.Get(), &m_Output});
+    Sharpen(ctx, s, rts, {out, &outScratch});
+  } else {
+    Spatial(ctx, s, rts, {out, &outScratch});
+  }
+  if (s.secondary) Secondary(ctx, s, rts, bb);
+  return true;
+}
+
+// TAAU: this frame's colour, velocity and depth and the last history into
+// the new history and, unless the secondary upscale follows, the back buffer.
+void ComputeUpscale::Temporal(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
+                              const BackBuffer& bb) {
+  ctx->BeginEvent("TemporalUpsampleCS");
+  d3dl::ShaderResourceView* srv[7] = {rts.Final(s.cur).srv.Get(), rts.UpscaleHistory(s.historyPrev).srv.Get(),
+                                      rts.Velocity(0).srv.Get(), nullptr, nullptr, nullptr,
+                                      rts[RT::DepthDynamic].srv.Get()};
+  d3dl::Texture2D* history = rts.UpscaleHistory(s.historyCur).texture.Get();
+  const Destination out[2] = {{history, &m_History}, {bb.texture, &m_Final, !s.secondary}};
+  Dispatch(ctx, "UpscaleTemporal_TemporalUpsampleCS", s, s.uc, srv, 7, out, 2);
+  m_Profiler->CountPass(GetFilterInfo(s.filter).pass);
+  ctx->EndEvent();
+}
+
+// The spatial filter into out (the back buffer, or the next pass's source).
+void ComputeUpscale::Spatial(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
+                             const Destination& out) {
+  ctx->BeginEvent("ScaleCS");
+  d3dl::ShaderResourceView* srv = rts.Final(s.cur).srv.Get();
+  Dispatch(ctx, ComputeName(s.filter).c_str(), s, s.uc, &srv, 1, &out, 1);
+  m_Profiler->CountPass(GetFilterInfo(s.filter).pass);
+  ctx->EndEvent();
+}
+
+// Contrast-limited sharpening of the edge-adaptive upscale's output.
+void ComputeUpscale::Sharpen(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
+                             const Destination& out) {
+  ctx->BeginEvent("SharpenCS");
+  d3dl::ShaderResourceView* srv = rts[RT::UpscaleSharpenInput].srv.Get();
+  Dispatch(ctx, kSharpenCS, s, s.uc, &srv, 1, &out, 1);
+  m_Profiler->CountPass("Sharpen");
+  ctx->EndEvent();
+}
+
+// The static secondary upscale: the primary upscale's output (or TAAU's new
+// history) to the back buffer, a dispatch over the back buffer's pixels.
+void ComputeUpscale::Secondary(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
+                               const BackBuffer& bb) {
+  ctx->BeginEvent("SecondaryUpscaleCS");
+  d3dl::ShaderResourceView* srv =
+      s.taau ? rts.UpscaleHistory(s.historyCur).srv.Get() : rts[RT::UpscaleOutput].srv.Get();
+  UpscaleConstants uc = s.uc;
+  uc.outputSize[0] = s.backBufferViewport.Width;
+  uc.outputSize[1] = s.backBufferViewport.Height;
+  uc.invOutputSize[0] = 1.0f / uc.outputSize[0];
+  uc.invOutputSize[1] = 1.0f / uc.outputSize[1];
+  const Destination out{bb.texture, &m_Final};
+  Dispatch(ctx, kSecondaryCS, s, uc, &srv, 1, &out, 1);
+  m_Profiler->CountPass("SecondaryUpscale");
+  ctx->EndEvent();
+}
+
+}  // namespace drr
