@@ -31,8 +31,11 @@ inline int AutoRecordingThreads(uint32_t draws, unsigned cores) {
   const uint32_t cap = std::min<uint32_t>(std::max(cores, 1u), kAutoRecordingThreads);
   return int(std::clamp<uint32_t>(paying, 1, cap));
 }
+// On this machine's hardware threads, read once: the query is a system call,
+// a measurable part of a 59-draw frame's recording.
 inline int AutoRecordingThreads(uint32_t draws) {
-  return AutoRecordingThreads(draws, std::thread::hardware_concurrency());
+  static const unsigned cores = std::thread::hardware_concurrency();
+  return AutoRecordingThreads(draws, cores);
 }
 
 }  // namespace drr
