@@ -182,7 +182,7 @@ const OptionRow kRows[] = {
     Heading("Scene recording threads (Docs/Threads.md)", "Recording threads (port)"),
     Int("--threads", "N", &Options::threads, 0, kMaxRecordingThreads,
         "scene recording threads ({range}): 1 the immediate context as the\n"
-        "original, 0 auto (a thread per 300 draws, at most one per core and 4),\n"
+        "original, 0 auto (a thread per 800 draws, at most one per core and 4),\n"
         "N: the main thread and N-1 workers on deferred contexts; the image\n"
         "is the same (default {default})")
         .Json("threads").Gui(Widget::SliderInt, "Threads (0 auto)"),  // GuiPanel adds the last frame's figures

@@ -64,6 +64,9 @@ done | sort -u | while read -r lib; do
   name="$(basename "$lib")"
   [[ "$name" =~ $system ]] || cp -L "$lib" "$out/lib/$name"
 done
+# The test suites travel compressed (a carried bundle must stay small);
+# run.sh unpacks one on first use.
+for suite in "${suites[@]}"; do xz -6 -T0 "$out/bin/${suite##*/}"; done
 if ((validation)); then
   # The layer is large (22 MB); it travels compressed and run.sh unpacks it.
   mkdir -p "$out/layers"
@@ -93,7 +96,9 @@ else
   export DRR_MEDIA_DIR="$here/Media"
 fi
 export DRR_BENCH_SHADER_DIR="$here/bench-shaders"
-exec "$here/bin/${DRR_BIN:-DynamicResolutionRendering}" "$@"
+bin="$here/bin/${DRR_BIN:-DynamicResolutionRendering}"
+[ -e "$bin" ] || [ ! -f "$bin.xz" ] || { xz -dc "$bin.xz" >"$bin" && chmod +x "$bin"; }
+exec "$bin" "$@"
 RUN
 chmod +x "$out/run.sh"
 du -sh "$out"

@@ -12,10 +12,11 @@ constexpr int kAutoRecordingThreads = 4;  // automatic: at most one per hardware
 constexpr int kMaxRecordingThreads = 8;   // --threads range 0..this
 // Automatic mode: a thread is added only when each thread gets at least this
 // many draws. Below it, waking a worker, its list's Finish and Execute cost
-// more than its share of the recording saves. Measured on a 2-vCPU guest with
-// lavapipe (Docs/Threads.md, "The automatic mode's threshold"): 2 threads
-// first beat 1 at 150 to 300 draws per thread.
-constexpr uint32_t kMinDrawsPerRecordingThread = 300;
+// more than its share of the recording saves. Measured on the project's
+// 2-vCPU development guest with lavapipe, loaded (Docs/Threads.md, "The
+// automatic mode's threshold"): 2 threads are slower than 1 at 605 draws per
+// thread (ratio 1.29 to 1.35) and faster at 988 (0.77 to 0.87).
+constexpr uint32_t kMinDrawsPerRecordingThread = 800;
 
 // The count SceneRenderParams::recordingThreads gets for the --threads value:
 // 0 stays 0 (automatic: the scene picks per frame, AutoRecordingThreads);
