@@ -3,9 +3,9 @@
 # 5 minutes of command time. Every step has a time limit (they add up to
 # 280 s), gives each of its runs only the time the step has left, and appends
 # each run's result to its file under $OUT as soon as the run ends, so that a
-# run cut short still leaves everything measured until then (a check of
-# the script on lavapipe with --small: 294 s in all, every step inside its
-# limit):
+# run cut short still leaves everything measured until then (checked on
+# lavapipe with --small at load average 11: 276 s in all, each step within
+# 3 s of its limit):
 #   a. frame.csv, frame.md: the full frame at 1920x1080 and 3840x2160 on both
 #      Arenas (native, point, TAA, TAAU with pixel and, where the sample has
 #      --upscale-shader, compute passes; scales 0.5 and 0.71), in interleaved
