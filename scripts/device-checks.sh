@@ -128,6 +128,7 @@ step_frame() {
           if sample --scene "$(arena_path $arena)" --width "${size%x*}" --height "${size#*x}" --camera 1 \
               --frames "$frames" $args --report "$out/run.json" >"$out/frame-run.log" 2>&1; then
             echo "$r,$size,$arena,$name,$(report frame-row "$out/run.json" "$warmup_ms")" >>"$csv"
+            grep -q '^adapter' "$out/machine.txt" || report adapter "$out/run.json" >>"$out/machine.txt"
           else
             echo "$r,$size,$arena,$name,0,nan,nan,nan,nan" >>"$csv"
           fi
@@ -154,7 +155,10 @@ step_power() {
     local rc=$?
     ((smi)) && { kill "$pid" 2>/dev/null; wait "$pid" 2>/dev/null; }
     if ((rc == 0)); then
-      echo "scale $s, 60 Hz paced, $size $power_arena Arena: $(report paced "$out/paced-$s.json" $( ((smi)) && echo "$out/power-$s.csv"))" >>"$out/power.txt"
+      local samples=()
+      ((smi)) && samples=("$out/power-$s.csv")
+      echo "scale $s, 60 Hz paced, $size $power_arena Arena: $(report paced "$out/paced-$s.json" "${samples[@]}")" \
+        >>"$out/power.txt"
     else
       echo "scale $s: exit $rc" >>"$out/power.txt"
     fi

@@ -7,6 +7,7 @@ python3 but not numpy).
   device-report.py frame-summary FRAME_CSV        medians over rounds, ratios
   device-report.py paced REPORT [POWER_CSV]       frame interval (and power) of a paced run
   device-report.py psnr A.png B.png               PSNR (dB) of two 8-bit PNGs
+  device-report.py adapter REPORT                 the Vulkan adapter and driver that ran
 """
 import csv
 import json
@@ -150,6 +151,11 @@ def psnr(a_path, b_path):
     return 0
 
 
+def adapter(path):
+    report = json.load(open(path))
+    print("adapter: %s, driver %s" % (report.get("adapter", "?"), report.get("driver", "?")))
+
+
 def main(argv):
     if len(argv) >= 3 and argv[1] == "frame-row":
         return frame_row(argv[2], argv[3] if len(argv) > 3 else 0) or 0
@@ -157,6 +163,8 @@ def main(argv):
         return frame_summary(argv[2]) or 0
     if len(argv) in (3, 4) and argv[1] == "paced":
         return paced(*argv[2:]) or 0
+    if len(argv) == 3 and argv[1] == "adapter":
+        return adapter(argv[2]) or 0
     if len(argv) == 4 and argv[1] == "psnr":
         return psnr(argv[2], argv[3])
     sys.stderr.write(__doc__)
