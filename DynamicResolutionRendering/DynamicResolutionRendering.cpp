@@ -80,7 +80,8 @@ int Sample::Init(const Options& options, std::string* error) {
 
   // Resolution control.
   m_Controller = MakeController(m_Options.law, m_LawLatency);
-  m_RefreshHz = options.refresh > 0 ? options.refresh : m_Window.RefreshHz(60.0);
+  m_Pacer = FramePacer(m_Options.headless ? options.paceHz : 0.0);
+  m_RefreshHz = options.refresh > 0 ? options.refresh : m_Pacer.Enabled() ? options.paceHz : m_Window.RefreshHz(60.0);
   m_DynamicResolution.SetScale(options.scaleX, options.scaleY);
   if (!InitDynamicResolution()) {
     *error = "cannot create the render targets";
@@ -538,13 +539,14 @@ bool Sample::RenderFrame() {
   const auto now = std::chrono::steady_clock::now();
   const double elapsed = m_FrameCount == 0 ? 1.0 / 60.0 : std::chrono::duration<double>(now - m_LastFrameTime).count();
   m_LastFrameTime = now;
-  if (m_FrameCount > 0) m_LastFrameSeconds = elapsed;
+  if (m_FrameCount > 0) m_LastFrameSeconds = m_Pacer.FrameSeconds(elapsed);  // paced: whole periods, as VSync
   m_Fps.Tick(std::chrono::duration<double>(now.time_since_epoch()).count());  // DXUT: before the frame's callbacks
 
   m_Log.BeginFrame();
   OnFrameMove(elapsed);
   OnFrameRender(elapsed);
   const d3dl::HRESULT hr = m_Device.SwapChain()->Present(m_Window.Handle() && m_Options.vsync ? 1 : 0, 0);
+  m_Pacer.Present();  // --pace-hz: to the next refresh boundary, as VSync
   if (d3dl::FAILED(hr)) {
     std::fprintf(stderr, "Present failed: %s\n", d3dl::HResultName(hr));
     return false;

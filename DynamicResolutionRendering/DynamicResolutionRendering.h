@@ -23,6 +23,7 @@
 #include "DeviceResources.h"
 #include "DynamicResolution.h"
 #include "FrameLog.h"
+#include "FramePacer.h"
 #include "FrameProfiler.h"
 #include "FramePasses.h"
 #include "FramePlan.h"
@@ -174,6 +175,7 @@ class Sample {
   int m_LawLatency = 0;
   double m_RefreshHz = 60.0;
   std::chrono::steady_clock::time_point m_LastFrameTime;
+  FramePacer m_Pacer;  // --pace-hz: headless presents at the refresh period
   std::array<double, 10> m_DeltaHistory{};  // SmoothedTimer: last 10 frame deltas
   int m_DeltaCount = 0;
   double m_AnimationTime = 0.0;

@@ -53,6 +53,10 @@ const OptionRow kRows[] = {
         "frames to render (default: 300 headless, windowed until closed)").Json("frames"),
     Flag("--fullscreen", &Options::fullscreen, true, "start fullscreen (windowed mode)"),
     Flag("--no-vsync", &Options::vsync, false, "present without waiting for vertical sync").Json("vsync"),
+    Number("--pace-hz", "HZ", &Options::paceHz, 0, 1000,
+           "headless only: present at this refresh rate as VSync would (sleep to\n"
+           "the next period; frame times whole periods); also the controller's\n"
+           "rate unless --refresh is given. 0 off (default {default}, {range})").Json("pace_hz"),
     Flag("--no-gui", &Options::gui, false, "hide the GUI").Json("gui"),
     Flag("--pause", &Options::pause, true, "start paused").Json("pause").Gui(Widget::Check, "Paused (P)").Original(),
     Number("--time", "T", &Options::time, 0, 1e7, "fixed animation time in seconds (reproducible frames)").Json("time"),
@@ -188,9 +192,10 @@ const OptionRow kRows[] = {
 
     Heading("Scene recording threads (Docs/Threads.md)", "Recording threads (port)"),
     Int("--threads", "N", &Options::threads, 0, kMaxRecordingThreads,
-        "scene recording threads ({range}): 0 auto (one per core, at\n"
-        "most 4), 1 the immediate context as the original, N: the main\n"
-        "thread and N-1 workers on deferred contexts, same image (default {default})")
+        "scene recording threads ({range}): 1 the immediate context as the\n"
+        "original, 0 auto (a thread per 800 draws, at most one per core and 4),\n"
+        "N: the main thread and N-1 workers on deferred contexts; the image\n"
+        "is the same (default {default})")
         .Json("threads").Gui(Widget::SliderInt, "Threads (0 auto)"),  // GuiPanel adds the last frame's figures
 
     Heading("Output"),

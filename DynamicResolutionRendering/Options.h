@@ -50,6 +50,8 @@ struct Options {
   bool gui = true;
   bool aspectLock = true;
   bool vsync = true;
+  // Headless frames paced to this refresh rate (FramePacer.h); 0: not paced.
+  double paceHz = 0.0;
   bool fullscreen = false;
   std::string screenshot;
   bool screenshotNoGui = false;
@@ -61,9 +63,10 @@ struct Options {
   // on CPU rasterisers, whose anisotropic filter is pathologically slow, see
   // Docs/Lavapipe-Performance.md), 1 = trilinear, 2..16 = anisotropic.
   int anisotropy = 0;
-  // Scene recording threads (Docs/Threads.md): 0 = automatic, 1 = the
-  // immediate context as the original, N = N deferred contexts.
-  int threads = 0;
+  // Scene recording threads (Docs/Threads.md): 1 = the immediate context as
+  // the original (default), 0 = automatic (more threads only where each gets
+  // enough draws), N = N deferred contexts.
+  int threads = 1;
   double time = -1.0;    // >= 0: fixed animation time
   double fixedDt = 0.0;  // > 0: animation advances by this per frame
   // Test aid: fill the dynamic colour/velocity RTs outside the viewport with a

@@ -2,9 +2,15 @@
 # Builds a self-contained bundle of the sample for a Linux x86-64 machine that
 # has a Vulkan driver but none of the project's Debian packages (for example a
 # bare GPU server): the binaries, their non-system shared libraries (Debian's),
-# the compiled shaders, the Arena (small; large as a .tar.xz) and run.sh.
+# the compiled shaders, the Arenas (default and many-object; large as a
+# .tar.xz), the benches, the RHI, scene and sample render test suites with
+# their shaders, and run.sh: what scripts/device-checks.sh runs.
 #
-#   scripts/make-bundle.sh [OUT_DIR] [--with-validation]
+#   scripts/make-bundle.sh [OUT_DIR] [--with-validation] [--from-build DIR]
+#
+# --from-build DIR: copy from that (already built) build folder instead of
+# building the Release one (a check of the bundle's layout; such a bundle
+# carries OpenImageIO's libraries and is much larger).
 #
 # Images go through stb (-DDRR_IMAGE_IO=STB): OpenImageIO's dependency closure
 # is hundreds of megabytes. On the target: OUT_DIR/run.sh [sample options].
@@ -12,30 +18,43 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 out="$root/bundle"
 validation=0
-for a in "$@"; do
-  case "$a" in
-    --with-validation) validation=1 ;;
-    -*) echo "make-bundle: unknown option '$a'" >&2; exit 2 ;;
-    *) out="$a" ;;
-  esac
-done
 build="$root/build-bundle"
+from_build=0
+while (($#)); do
+  case "$1" in
+    --with-validation) validation=1 ;;
+    --from-build) build="$(cd "$2" && pwd)"; from_build=1; shift ;;
+    -*) echo "make-bundle: unknown option '$1'" >&2; exit 2 ;;
+    *) out="$1" ;;
+  esac
+  shift
+done
+suites=(Tests/rhi/drr_rhi_tests Tests/scene/drr_scene_render_tests Tests/sample/drr_sample_render_tests)
 
-"$root/scripts/setup.sh"
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DDRR_IMAGE_IO=STB >/dev/null
-cmake --build "$build" --parallel "$(nproc)" \
-  --target DynamicResolutionRendering drr_import_worker drr_rhi_bench drr_scene_record_bench drr_arena drr_arena_large
+if ((!from_build)); then
+  "$root/scripts/setup.sh"
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DDRR_IMAGE_IO=STB >/dev/null
+  cmake --build "$build" --parallel "$(nproc)" \
+    --target DynamicResolutionRendering drr_import_worker drr_rhi_bench drr_scene_record_bench drr_arena \
+    drr_arena_large drr_arena_props "${suites[@]##*/}"
+fi
 
 rm -rf "$out"
-mkdir -p "$out/bin" "$out/lib" "$out/media"
-# drr_import_worker decodes model and texture files; the sample looks for it beside itself.
+mkdir -p "$out/bin" "$out/lib" "$out/Media"
+# drr_import_worker decodes model and texture files; the sample and the test
+# suites look for it beside themselves.
 cp "$build/DynamicResolutionRendering/DynamicResolutionRendering" "$build/DynamicResolutionRendering/drr_import_worker" \
    "$build/Tests/recording/drr_rhi_bench" "$build/Tests/recording/drr_scene_record_bench" "$out/bin/"
+for suite in "${suites[@]}"; do cp "$build/$suite" "$out/bin/"; done
 strip "$out"/bin/*
+# The folders keep the build's names: the suites read them at the build's
+# path, which scripts/device-checks.sh links to the bundle (build-path).
 cp -r "$build/shaders" "$out/shaders"
+cp -r "$build/test-shaders" "$out/test-shaders"
+echo "$build" >"$out/build-path"
 mkdir -p "$out/bench-shaders" && cp "$build"/Tests/recording/shaders/*.spv "$out/bench-shaders/"
-cp -r "$build/Media/Arena" "$out/media/Arena"
-tar -C "$build/Media" -cJf "$out/media/ArenaLarge.tar.xz" ArenaLarge
+cp -r "$build/Media/Arena" "$build/Media/ArenaProps" "$out/Media/"
+tar -C "$build/Media" -cJf "$out/Media/ArenaLarge.tar.xz" ArenaLarge
 
 # Shared libraries except the C/C++ runtime, which every target system has.
 system='^(libc|libm|libstdc\+\+|libgcc_s|ld-linux-x86-64|libpthread|libdl|librt)\.so'
@@ -45,6 +64,9 @@ done | sort -u | while read -r lib; do
   name="$(basename "$lib")"
   [[ "$name" =~ $system ]] || cp -L "$lib" "$out/lib/$name"
 done
+# The test suites travel compressed (a carried bundle must stay small);
+# run.sh unpacks one on first use.
+for suite in "${suites[@]}"; do xz -6 -T0 "$out/bin/${suite##*/}"; done
 if ((validation)); then
   # The layer is large (22 MB); it travels compressed and run.sh unpacks it.
   mkdir -p "$out/layers"
@@ -55,8 +77,9 @@ fi
 
 cat >"$out/run.sh" <<'RUN'
 #!/usr/bin/env bash
-# Runs the bundled sample (arguments as for DynamicResolutionRendering --help).
-# DRR_ARENA=large uses the large Arena (unpacked on first use).
+# Runs the bundled sample (arguments as for DynamicResolutionRendering --help),
+# or DRR_BIN (a bench or a test suite of bin/). DRR_ARENA=large uses the
+# large Arena (unpacked on first use).
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 export LD_LIBRARY_PATH="$here/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 if [ -d "$here/layers" ]; then
@@ -66,15 +89,16 @@ if [ -d "$here/layers" ]; then
 fi
 export DRR_SHADER_DIR="$here/shaders"
 if [ "${DRR_ARENA:-small}" = large ]; then
-  [ -d "$here/media/large/Arena" ] || { mkdir -p "$here/media/large" &&
-    tar -C "$here/media/large" -xJf "$here/media/ArenaLarge.tar.xz" &&
-    mv "$here/media/large/ArenaLarge" "$here/media/large/Arena"; }
-  export DRR_MEDIA_DIR="$here/media/large"
+  [ -d "$here/Media/ArenaLarge" ] || tar -C "$here/Media" -xJf "$here/Media/ArenaLarge.tar.xz"
+  [ -e "$here/Media/large/Arena" ] || { mkdir -p "$here/Media/large" && ln -s ../ArenaLarge "$here/Media/large/Arena"; }
+  export DRR_MEDIA_DIR="$here/Media/large"
 else
-  export DRR_MEDIA_DIR="$here/media"
+  export DRR_MEDIA_DIR="$here/Media"
 fi
 export DRR_BENCH_SHADER_DIR="$here/bench-shaders"
-exec "$here/bin/${DRR_BIN:-DynamicResolutionRendering}" "$@"
+bin="$here/bin/${DRR_BIN:-DynamicResolutionRendering}"
+[ -e "$bin" ] || [ ! -f "$bin.xz" ] || { xz -dc "$bin.xz" >"$bin" && chmod +x "$bin"; }
+exec "$bin" "$@"
 RUN
 chmod +x "$out/run.sh"
 du -sh "$out"

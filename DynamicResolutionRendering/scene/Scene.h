@@ -76,7 +76,8 @@ struct SceneRenderParams {
   // colour (+ velocity); the materials are written, not lit.
   bool gbuffer = false;
   TessellationParams tessellation;
-  // Port addition (Docs/Threads.md): 1 records on the caller's context; N > 1
+  // Port addition (Docs/Threads.md): 1 records on the caller's context; 0
+  // picks the count per frame (AutoRecordingThreads, RecordingThreads.h); N > 1
   // splits the draws across N deferred contexts (the caller's thread and N - 1
   // persistent workers) and executes the lists on the caller's context, which
   // must then be the immediate one. The lists set the render targets and

@@ -263,8 +263,11 @@ void Scene::Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p) {
     for (const Entry& e : s.entries) s.CollectEntry(p, e, true, planes);
   };
   ctx->BeginEvent("Scene");
-  const bool threaded = p.recordingThreads > 1 && p.viewport && ctx->GetType() == d3dl::DEVICE_CONTEXT_IMMEDIATE;
-  if (!threaded || !s.RecordThreaded(ctx, p, f, prepare)) {
+  // Automatic (0): sized by the previous frame's draw list, as this one's is
+  // built while the workers wake up.
+  const int threads = p.recordingThreads > 0 ? p.recordingThreads : AutoRecordingThreads(uint32_t(s.drawList.size()));
+  const bool threaded = threads > 1 && p.viewport && ctx->GetType() == d3dl::DEVICE_CONTEXT_IMMEDIATE;
+  if (!threaded || !s.RecordThreaded(ctx, threads, p, f, prepare)) {
     prepare();
     SceneImpl::BeginDraws(ctx, f, false);
     const auto drawing = std::chrono::steady_clock::now();

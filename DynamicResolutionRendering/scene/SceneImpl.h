@@ -241,7 +241,7 @@ struct SceneImpl {
 
   // SceneRecordThreads.cpp: the split across deferred contexts.
   bool EnsurePool(int threads);
-  bool RecordThreaded(d3dl::DeviceContext* immediate, const SceneRenderParams& p, FrameDraw& f,
+  bool RecordThreaded(d3dl::DeviceContext* immediate, int threads, const SceneRenderParams& p, FrameDraw& f,
                       const std::function<void()>& prepare);
   std::unique_ptr<RecordingPool> pool;  // last member: joined before the device goes
 };

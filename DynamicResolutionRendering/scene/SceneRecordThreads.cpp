@@ -51,9 +51,9 @@ bool SceneImpl::EnsurePool(int threads) {
 // still unclaimed (a worker not scheduled yet, on a loaded machine): it then
 // draws it itself on the immediate context, so a frame never waits for the
 // scheduler. Chunks taken here stay a prefix of the list: the order holds.
-bool SceneImpl::RecordThreaded(d3dl::DeviceContext* immediate, const SceneRenderParams& p, FrameDraw& f,
+bool SceneImpl::RecordThreaded(d3dl::DeviceContext* immediate, int threads, const SceneRenderParams& p, FrameDraw& f,
                                const std::function<void()>& prepare) {
-  const int threads = std::min(p.recordingThreads, kMaxRecordingThreads);
+  threads = std::min(threads, kMaxRecordingThreads);
   if (!EnsurePool(threads)) return false;
   // A list starts from the default state: the workers bind the caller's
   // targets (read back with references added, released at the end).

@@ -12,7 +12,9 @@
 // Catmull-Rom path (camera node animation, looping smoothly); two static
 // cameras. No LOD. Output is deterministic (fixed seeds, own RNG).
 //
-// usage: drr_arenagen --out <dir> [--detail small|large] [--seed N]
+// usage: drr_arenagen --out <dir> [--detail small|large|props] [--props N] [--seed N]
+// props: the small Arena with N (default 3000) props on its floor, one draw
+// each (ArenaGenProps.h).
 //
 // Textures, meshes and the glTF writer live in ArenaTextures, ArenaMesh and
 // ArenaGltf; this file lays out the scene and writes its files. The small
@@ -32,6 +34,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "ArenaGenDds.h"
+#include "ArenaGenProps.h"
 #include "ArenaGenSdkMesh.h"
 #include "ArenaGltf.h"
 #include "ArenaMath.h"
@@ -53,8 +56,10 @@ struct Detail {
   int texSize;
   int bellRadial, bellRings;
   int skySegs;
+  int props = 0;  // props.gltf's count (0: no file)
 };
 constexpr Detail kSmall{"small", 80, 200.f, 100.f, 24, 6, 16, 170, 1, 256, 32, 16, 32};
+constexpr Detail kProps{"props", 80, 200.f, 100.f, 24, 6, 16, 170, 1, 256, 32, 16, 32, 3000};
 constexpr Detail kLarge{"large", 420, 50.f, 25.f, 64, 48, 96, 2100, 2, 1024, 96, 64, 96};
 
 constexpr float kHalf = 2000.f;     // arena half size (units)
@@ -490,6 +495,7 @@ bool WriteSceneDescription(const fs::path& out, const Detail& d, uint64_t seed, 
      << "camera_cinematic.gltf   camera_cinematic.gltf  CAMERA\n"
      << "camera_static1.gltf     NO_ANIM                CAMERA\n"
      << "camera_static2.gltf     NO_ANIM                CAMERA\n";
+  if (d.props > 0) sd << "props.gltf              NO_ANIM                LIT\n";
   return bool(sd);
 }
 
@@ -512,6 +518,10 @@ int Run(const Detail& d, const fs::path& out, uint64_t seed) {
       !WriteSingleMeshFile(out, "decals", "Decals", "Decals", BuildDecals(d, seed), tex, "Decals", "decal", true,
                            triTotal))
     return 1;
+  const MaterialMaker material = [&](Gltf& g, const std::string& mat, const std::string& texName) {
+    return AddMaterial(g, tex, mat, texName);
+  };
+  if (d.props > 0 && !WriteProps(out, d.props, seed, material, triTotal)) return 1;
   if (!WriteCameraFile(out, "camera_cinematic", "CinematicCamera", vec3(-1500, 250, -1500), vec3(0, 300, 0), true) ||
       !WriteCameraFile(out, "camera_static1", "StaticCamera1", vec3(-1650, 420, 1650), vec3(0, 250, 0), false) ||
       !WriteCameraFile(out, "camera_static2", "StaticCamera2", vec3(1550, 1100, -900), vec3(0, kBellPivotY - 200, 0),
@@ -530,7 +540,7 @@ int Run(const Detail& d, const fs::path& out, uint64_t seed) {
 
 // The usage line on stderr and exit status 2, for any bad argument.
 int Usage() {
-  fprintf(stderr, "usage: drr_arenagen --out <dir> [--detail small|large] [--seed N]\n");
+  fprintf(stderr, "usage: drr_arenagen --out <dir> [--detail small|large|props] [--props N] [--seed N]\n");
   return 2;
 }
 
@@ -539,14 +549,18 @@ int Usage() {
 int main(int argc, char** argv) {
   std::string outDir, detail = "small";
   uint64_t seed = 20110301;
+  int props = -1;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     if (a == "--out" && i + 1 < argc) outDir = argv[++i];
     else if (a == "--detail" && i + 1 < argc) detail = argv[++i];
     else if (a == "--seed" && i + 1 < argc) seed = std::strtoull(argv[++i], nullptr, 10);
+    else if (a == "--props" && i + 1 < argc) props = std::atoi(argv[++i]);
     else return Usage();
   }
-  if (outDir.empty() || (detail != "small" && detail != "large")) return Usage();
-  const int rc = Run(detail == "small" ? kSmall : kLarge, outDir, seed);
+  if (outDir.empty() || (detail != "small" && detail != "large" && detail != "props") || props > 100000) return Usage();
+  Detail d = detail == "small" ? kSmall : detail == "large" ? kLarge : kProps;
+  if (props >= 0) d.props = props;
+  const int rc = Run(d, outDir, seed);
   return rc != 0 ? rc : arena::WriteArenaDdsSet(outDir);
 }

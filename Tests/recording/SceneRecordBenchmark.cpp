@@ -273,9 +273,9 @@ int main(int argc, char** argv) {
       if (std::sscanf(value(), "%ux%u", &w, &h) != 2) w = 0;
     } else args.push_back(argv[i]);
   }
-  if (threads < 2 || threads > 8 || pairs < 1 || pairs > 1000 || frames < 1 || frames > 100000 || w < 1 ||
+  if ((threads < 2 && threads != 0) || threads > 8 || pairs < 1 || pairs > 1000 || frames < 1 || frames > 100000 || w < 1 ||
       h < 1 || w > 4096 || h > 4096) {
-    std::fprintf(stderr, "--threads expects [2, 8], --pairs [1, 1000], --frames [1, 100000], --size WxH up to 4096\n");
+    std::fprintf(stderr, "--threads expects [2, 8] or 0 (automatic), --pairs [1, 1000], --frames [1, 100000], --size WxH up to 4096\n");
     return 2;
   }
   g_frame = std::make_unique<SceneFrame>();

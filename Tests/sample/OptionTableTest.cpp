@@ -95,7 +95,7 @@ TEST(OptionTable, EveryReportKeyComesFromItsRow) {
   // The keys the report has always had (scripts and tests read them).
   const std::set<std::string> known = {
       "headless", "width", "height", "frames", "scene", "camera", "filter", "scale_x", "scale_y",
-      "dynamic_resolution", "supersampling", "control", "law", "refresh", "vsync", "motion_blur",
+      "dynamic_resolution", "supersampling", "control", "law", "refresh", "vsync", "pace_hz", "motion_blur",
       "symmetric_taa", "ps_clear", "pause", "zoom", "gui", "anisotropy", "threads", "time", "fixed_dt",
       "validation", "fixes", "secondary_screen_percentage", "mip_bias", "auto_mip_bias", "renderer", "ssao",
       "shadow_scale", "shadow_law", "shadow_map_size", "taa_mip_bias", "tessellation", "tess_pixels_per_edge",

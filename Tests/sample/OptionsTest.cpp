@@ -227,7 +227,7 @@ TEST(SampleOptions, HelpAndParserShareOneTable) {
       EXPECT_EQ(m.find("unknown option"), std::string::npos) << word << ": " << m;
     }
   }
-  EXPECT_EQ(shown, 57);  // every option of the sample once (-h is --help's other name)
+  EXPECT_EQ(shown, 58);  // every option of the sample once (-h is --help's other name)
   for (const FixInfo& f : FixTable()) EXPECT_NE(help.find(std::string("  ") + f.name + " "), std::string::npos);
   for (int f = 0; f < static_cast<int>(Filter::Count); ++f)
     EXPECT_NE(help.find(FilterOption(static_cast<Filter>(f))), std::string::npos);
@@ -411,12 +411,16 @@ TEST(SampleOptions, TessellationSettings) {
   EXPECT_NE(m.find("--tess-pixels-per-edge"), std::string::npos) << m;
 }
 
-// --threads (Docs/Threads.md): 0 automatic (the default), 1 the immediate
-// context, up to 8; anything else is refused naming the value and the range.
+// --threads (Docs/Threads.md): 1 the immediate context (the default, as the
+// original), 0 automatic, up to 8; anything else is refused naming the value
+// and the range; --help says which is which.
 TEST(SampleOptions, RecordingThreads) {
   Options o;
   std::string m;
+  EXPECT_EQ(o.threads, 1);
+  EXPECT_EQ(Parse({"--threads", "0"}, &o, &m), ParseStatus::Ok) << m;
   EXPECT_EQ(o.threads, 0);
+  EXPECT_EQ(nlohmann::json::parse(OptionsToJson(o))["threads"], 0);
   EXPECT_EQ(Parse({"--threads", "3"}, &o, &m), ParseStatus::Ok) << m;
   EXPECT_EQ(o.threads, 3);
   EXPECT_EQ(Parse({"--threads=1"}, &o, &m), ParseStatus::Ok) << m;
@@ -429,6 +433,8 @@ TEST(SampleOptions, RecordingThreads) {
   EXPECT_NE(m.find("'two' is not a number"), std::string::npos) << m;
   EXPECT_EQ(nlohmann::json::parse(OptionsToJson(o))["threads"], 1);
   EXPECT_NE(Usage().find("--threads N"), std::string::npos);
+  EXPECT_NE(Usage().find("0 auto"), std::string::npos);
+  EXPECT_NE(Usage().find("(default 1)"), std::string::npos);
 }
 
 // --preset sets existing settings where it stands: later options override it,

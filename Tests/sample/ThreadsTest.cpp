@@ -1,7 +1,9 @@
 // Multithreaded scene recording (Docs/Threads.md), in process under core +
 // synchronization validation: the Arena on 1 (the immediate context), 2 and
-// 3 threads gives the same pixels, bit for bit; the split is contiguous and
-// even; the thread count follows the GUI at run time.
+// 3 threads gives the same pixels, bit for bit, and the default (1 thread)
+// the same as 4 on the Arena and the many-object Arena; the split is
+// contiguous and even; the automatic mode adds threads only where each gets
+// enough draws; the thread count follows the GUI at run time.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -86,12 +88,27 @@ TEST(RecordingSplit, ContiguousChunksDifferByAtMostOneDraw) {
   }
 }
 
-TEST(RecordingSplit, AutomaticThreadsFollowTheCores) {
-  const int cores = int(std::thread::hardware_concurrency());
-  EXPECT_EQ(RecordingThreadsFor(0), std::clamp(cores, 1, kAutoRecordingThreads));
+TEST(RecordingSplit, ExplicitCountsPassAndZeroStaysAutomatic) {
+  EXPECT_EQ(RecordingThreadsFor(0), 0);
   EXPECT_EQ(RecordingThreadsFor(1), 1);
   EXPECT_EQ(RecordingThreadsFor(3), 3);
   EXPECT_EQ(RecordingThreadsFor(100), kMaxRecordingThreads);
+}
+
+// A thread per kMinDrawsPerRecordingThread draws, at most one per core and
+// kAutoRecordingThreads; one thread below the threshold (the Arenas' 40 to 60
+// draws), whatever the cores.
+TEST(RecordingSplit, AutomaticAddsAThreadPerThresholdOfDraws) {
+  const uint32_t k = kMinDrawsPerRecordingThread;
+  EXPECT_EQ(AutoRecordingThreads(0, 16), 1);
+  EXPECT_EQ(AutoRecordingThreads(59, 16), 1);
+  EXPECT_EQ(AutoRecordingThreads(2 * k - 1, 16), 1);
+  EXPECT_EQ(AutoRecordingThreads(2 * k, 16), 2);
+  EXPECT_EQ(AutoRecordingThreads(3 * k, 16), 3);
+  EXPECT_EQ(AutoRecordingThreads(100 * k, 16), kAutoRecordingThreads);
+  EXPECT_EQ(AutoRecordingThreads(100 * k, 2), 2);
+  EXPECT_EQ(AutoRecordingThreads(100 * k, 1), 1);
+  EXPECT_EQ(AutoRecordingThreads(100 * k, 0), 1);  // cores unknown
 }
 
 // The default view (TAA, motion blur: colour and velocity targets) and one
@@ -150,25 +167,60 @@ TEST(RecordingThreads, DeferredAndTessellatedArenaIsBitIdenticalOnTwoThreads) {
   ExpectSplit(two.stats, 2);
 }
 
-// By default the scene records on min(cores, 4) threads; the GUI's setting
-// (ApplySettings) changes the count from the next frame, the pool is rebuilt
-// and the paused frame stays the same.
-TEST(RecordingThreads, DefaultIsAutomaticAndTheCountChangesAtRunTime) {
-  Options o = ArenaOptions(0);
+// By default the scene records on the immediate context, as the original;
+// the GUI's setting (ApplySettings) changes the count from the next frame,
+// the pool is rebuilt and the paused frame stays the same. The automatic
+// mode (0) keeps the Arena's few draws on one thread.
+TEST(RecordingThreads, DefaultIsOneThreadAndTheCountChangesAtRunTime) {
+  Options o = HeadlessOptions(160, 90, 3.0);
+  EXPECT_EQ(o.threads, 1);
   o.pause = true;
   Sample s;
   std::string err;
   ASSERT_EQ(s.Init(o, &err), 0) << err;
   const Image first = RenderAndCapture(s, 2);
-  EXPECT_EQ(s.GetScene()->Stats().recordingThreads, uint32_t(RecordingThreadsFor(0)));
-  for (int threads : {3, 1, 2}) {
+  const SceneStats initial = s.GetScene()->Stats();
+  EXPECT_EQ(initial.recordingThreads, 1u);
+  const uint32_t automatic = uint32_t(AutoRecordingThreads(initial.drawsIssued));
+  EXPECT_EQ(automatic, 1u) << initial.drawsIssued << " draws";
+  for (int threads : {3, 0, 2}) {
     Options next = s.Settings();
     next.threads = threads;
     s.ApplySettings(next);
     const Image again = RenderAndCapture(s, 2);
     EXPECT_TRUE(SamePixels(first, again)) << threads << " threads";
-    EXPECT_EQ(s.GetScene()->Stats().recordingThreads, uint32_t(threads));
+    EXPECT_EQ(s.GetScene()->Stats().recordingThreads, threads == 0 ? automatic : uint32_t(threads));
   }
   EXPECT_EQ(s.ValidationMessages(), 0u) << "validation messages were reported";
   s.Shutdown();
+}
+
+// The default (1 thread, the immediate context) and --threads 4 render the
+// same images, bit for bit, on the Arena and on the many-object Arena (about
+// 3000 draws); there the automatic mode records on more than one thread where
+// the machine has more than one core, with the same image again.
+TEST(RecordingThreads, DefaultMatchesFourThreadsOnBothArenas) {
+  for (const char* scene : {"", DRR_TEST_ARENA_PROPS_DIR "/scene_description.txt"}) {
+    Options base = HeadlessOptions(160, 90, 3.0);
+    base.scene = scene;
+    const Frame one = RenderArena(base);
+    ASSERT_FALSE(one.colour.Empty()) << scene;
+    ExpectSplit(one.stats, 1);
+    Options four = base;
+    four.threads = 4;
+    const Frame many = RenderArena(four);
+    std::printf("[threads] %s: default and 4 threads, %llu px differ, draws %u\n", *scene ? "props" : "arena",
+                (unsigned long long)Compare(one.colour, many.colour).differing, many.stats.drawsIssued);
+    EXPECT_TRUE(SamePixels(one.colour, many.colour)) << scene;
+    EXPECT_TRUE(SamePixels(one.velocity, many.velocity)) << scene;
+    EXPECT_EQ(many.stats.drawsIssued, one.stats.drawsIssued);
+    ExpectSplit(many.stats, 4);
+    if (!*scene) continue;
+    EXPECT_GT(one.stats.drawsIssued, 2000u);
+    Options automatic = base;
+    automatic.threads = 0;
+    const Frame chosen = RenderArena(automatic);
+    EXPECT_EQ(chosen.stats.recordingThreads, uint32_t(AutoRecordingThreads(one.stats.drawsIssued)));
+    EXPECT_TRUE(SamePixels(one.colour, chosen.colour));
+  }
 }

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "RenderTest.h"
+#include "scene/RecordingThreads.h"
 #include "scene/Scene.h"
 
 using namespace drr;
@@ -106,6 +107,30 @@ TEST_F(SceneThreads, DeferredChunksGiveTheImmediateContextsBytes) {
       EXPECT_TRUE(many[i].colour.pixels == one[i].colour.pixels) << threads << " threads, frame " << i;
       EXPECT_TRUE(many[i].velocity.pixels == one[i].velocity.pixels) << threads << " threads, frame " << i;
     }
+  }
+}
+
+// The many-object Arena (about 3000 draws, one per prop): four lists, each
+// chunk on its worker, give the immediate context's bytes; the automatic
+// mode sizes each frame by the previous frame's draws, with the same bytes.
+TEST_F(SceneThreads, ManyObjectArenaOnFourListsGivesTheImmediateContextsBytes) {
+  std::string err;
+  auto scene = Scene::Load(device(), DRR_ARENA_PROPS_DIR "/scene_description.txt", {}, &err);
+  ASSERT_TRUE(scene) << err;
+  const std::vector<Frame> one = Render(scene.get(), 1);
+  const std::vector<Frame> four = Render(scene.get(), 4);
+  const std::vector<Frame> automatic = Render(scene.get(), 0);
+  ASSERT_EQ(four.size(), one.size());
+  ASSERT_EQ(automatic.size(), one.size());
+  for (size_t i = 0; i < one.size(); ++i) {
+    EXPECT_GT(one[i].stats.drawsIssued, 2000u);
+    EXPECT_EQ(four[i].stats.recordingThreads, 4u);
+    for (uint32_t n : four[i].stats.drawsPerThread) EXPECT_GT(n, 0u) << "every chunk on its own thread";
+    EXPECT_TRUE(four[i].colour.pixels == one[i].colour.pixels) << "frame " << i;
+    EXPECT_TRUE(four[i].velocity.pixels == one[i].velocity.pixels) << "frame " << i;
+    const uint32_t previous = i > 0 ? automatic[i - 1].stats.drawsIssued : four.back().stats.drawsIssued;
+    EXPECT_EQ(automatic[i].stats.recordingThreads, uint32_t(AutoRecordingThreads(previous))) << "frame " << i;
+    EXPECT_TRUE(automatic[i].colour.pixels == one[i].colour.pixels) << "frame " << i;
   }
 }
 
