@@ -29,7 +29,7 @@ enum class Filter : int {
   UpscaleCatmullRom,
   UpscaleLanczos3,
   UpscaleGaussianUnsharp,
-  TAAU,  // temporal upsample: output-resolution history (FramePasses::TemporalUpsample)
+  TAAU,  // temporal upsample: output-resolution history (passes/TemporalUpsamplePass.cpp)
   UpscaleEdgeAdaptive,  // port design: edge-adaptive upscale + contrast-limited sharpening (two passes)
   Count
 };
