@@ -51,15 +51,15 @@ bool Sample::ReloadShaders() {
   m_Shaders.Open(m_Shaders.SpvDir(), ShaderLibrary::DefaultSourceDir());  // the manifest and sources of now
   std::string err;
   size_t postCompiled = 0;
-  bool guiCompiled = false;
+  ShaderLoad gui{m_Device.Device(), &m_Shaders, true, &err};
   bool ok = m_Passes.LoadShaders(m_Shaders, true, &err, &postCompiled);
-  ok = ok && m_Gui.Renderer().LoadShaders(m_Shaders, true, &err, &guiCompiled);
+  ok = ok && m_Gui.Renderer().LoadShaders(gui);
   ok = ok && m_Scene->ReloadShaders(m_Shaders, true, &err);
   if (!ok) {
     m_LastMessage = "Shader reload failed, the previous shaders stay: " + err;
   } else if (postCompiled > 0) {
     m_LastMessage = "Shaders reloaded: " + std::to_string(postCompiled) + " post-processing shaders" +
-                    (guiCompiled ? " and the GUI's" : "") + " compiled from " + m_Shaders.SourceDir();
+                    (gui.compiled > 0 ? " and the GUI's" : "") + " compiled from " + m_Shaders.SourceDir();
   } else {
     m_LastMessage = "Shaders reloaded from " + m_Shaders.SpvDir() + " (no HLSL sources in " + m_Shaders.SourceDir() + ")";
   }

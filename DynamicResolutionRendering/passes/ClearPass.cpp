@@ -44,12 +44,8 @@ bool ClearPass::Record(PassFrame& f) {
   f.ctx->OMSetRenderTargets(t.count, t.rtv, nullptr);
   f.ctx->RSSetViewports(1, &s.sceneViewport);
   const bool velocity = t.count == 2;
-  if (s.dynamic) {
-    DrawDynamic(f.ctx, velocity ? m_ClearVelocity.Get() : m_Clear.Get(), s.dc);
-  } else {
-    m_Kit.full.Upload(f.ctx, s.fc);
-    Draw(f.ctx, m_Kit.fullVS.Get(), velocity ? m_FullClearVelocity.Get() : m_FullClear.Get(), m_Kit.full.Get());
-  }
+  if (s.dynamic) DrawDynamic(f.ctx, velocity ? m_ClearVelocity.Get() : m_Clear.Get(), s.dc);
+  else DrawFull(f.ctx, velocity ? m_FullClearVelocity.Get() : m_FullClear.Get(), s.fc);
   return true;
 }
 

@@ -104,32 +104,28 @@ class GBufferPass : public Pass {
   DeferredShared& m_Shared;
 };
 
-class SSAOPass : public FullScreenPass {
+// The deferred full-screen passes: the deferred constants at b0.
+class SSAOPass : public ShaderPass {
  public:
-  SSAOPass(FullScreenKit& kit, DeferredShared& shared) : FullScreenPass(kit), m_Shared(shared) {}
-  bool LoadShaders(ShaderLoad& load) override { return load.Load({}, {{"Deferred_SSAOPS", &m_PS}}); }
-  void Release() override { m_PS = nullptr; }
+  SSAOPass(FullScreenKit& kit, DeferredShared& shared) : ShaderPass(kit, "Deferred_SSAOPS"), m_Shared(shared) {}
 
  protected:
   bool Record(PassFrame& f) override;
 
  private:
   DeferredShared& m_Shared;
-  d3dl::ComPtr<d3dl::PixelShader> m_PS;
 };
 
-class LightingPass : public FullScreenPass {
+class LightingPass : public ShaderPass {
  public:
-  LightingPass(FullScreenKit& kit, DeferredShared& shared) : FullScreenPass(kit), m_Shared(shared) {}
-  bool LoadShaders(ShaderLoad& load) override { return load.Load({}, {{"Deferred_LightingPS", &m_PS}}); }
-  void Release() override { m_PS = nullptr; }
+  LightingPass(FullScreenKit& kit, DeferredShared& shared)
+      : ShaderPass(kit, "Deferred_LightingPS"), m_Shared(shared) {}
 
  protected:
   bool Record(PassFrame& f) override;
 
  private:
   DeferredShared& m_Shared;
-  d3dl::ComPtr<d3dl::PixelShader> m_PS;
 };
 
 }  // namespace drr

@@ -1,25 +1,6 @@
 #include "passes/FullScreenPass.h"
 
-#include <cstring>
-
 namespace drr {
-
-void UploadConstants(d3dl::DeviceContext* ctx, d3dl::Buffer* buffer, const void* data, size_t size) {
-  d3dl::MAPPED_SUBRESOURCE m;
-  if (d3dl::SUCCEEDED(ctx->Map(buffer, 0, d3dl::MAP_WRITE_DISCARD, 0, &m))) {
-    std::memcpy(m.pData, data, size);
-    ctx->Unmap(buffer, 0);
-  }
-}
-
-bool CreateConstantBuffer(d3dl::Device* device, size_t size, d3dl::ComPtr<d3dl::Buffer>* buffer) {
-  d3dl::BUFFER_DESC cb;
-  cb.ByteWidth = uint32_t(size);
-  cb.Usage = d3dl::USAGE_DYNAMIC;
-  cb.BindFlags = d3dl::BIND_CONSTANT_BUFFER;
-  cb.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
-  return d3dl::SUCCEEDED(device->CreateBuffer(&cb, nullptr, buffer->ReleaseAndGetAddressOf()));
-}
 
 bool FullScreenKit::Init(d3dl::Device* device, std::string* error) {
   d3dl::SAMPLER_DESC pointDesc;
@@ -30,16 +11,13 @@ bool FullScreenKit::Init(d3dl::Device* device, std::string* error) {
   linearDesc.Filter = d3dl::FILTER_MIN_MAG_MIP_LINEAR;
   d3dl::SAMPLER_DESC wrapDesc = linearDesc;
   wrapDesc.AddressU = wrapDesc.AddressV = wrapDesc.AddressW = d3dl::TEXTURE_ADDRESS_WRAP;
-  d3dl::DEPTH_STENCIL_DESC nd;
-  nd.DepthEnable = 0;
-  nd.DepthWriteMask = d3dl::DEPTH_WRITE_MASK_ZERO;
   d3dl::RASTERIZER_DESC rd;
   rd.CullMode = d3dl::CULL_NONE;
   if (!dynamic.Create(device) || !full.Create(device) || !upscale.Create(device) ||
       d3dl::FAILED(device->CreateSamplerState(&pointDesc, point.GetAddressOf())) ||
       d3dl::FAILED(device->CreateSamplerState(&linearDesc, linear.GetAddressOf())) ||
       d3dl::FAILED(device->CreateSamplerState(&wrapDesc, linearWrap.GetAddressOf())) ||
-      d3dl::FAILED(device->CreateDepthStencilState(&nd, noDepth.GetAddressOf())) ||
+      !CreateNoDepthState(device, &noDepth) ||
       d3dl::FAILED(device->CreateRasterizerState(&rd, noCull.GetAddressOf()))) {
     *error = "cannot create the post-processing states";
     return false;
@@ -99,6 +77,12 @@ void FullScreenPass::DrawDynamic(d3dl::DeviceContext* ctx, d3dl::PixelShader* ps
                                  std::initializer_list<d3dl::ShaderResourceView*> srvs) const {
   m_Kit.dynamic.Upload(ctx, dc);
   Draw(ctx, m_Kit.dynamicVS.Get(), ps, m_Kit.dynamic.Get(), srvs);
+}
+
+void FullScreenPass::DrawFull(d3dl::DeviceContext* ctx, d3dl::PixelShader* ps, const FullConstants& fc,
+                              std::initializer_list<d3dl::ShaderResourceView*> srvs) const {
+  m_Kit.full.Upload(ctx, fc);
+  Draw(ctx, m_Kit.fullVS.Get(), ps, m_Kit.full.Get(), srvs);
 }
 
 }  // namespace drr

@@ -7,28 +7,11 @@
 #include <initializer_list>
 #include <string>
 
+#include "ConstantBuffer.h"
 #include "FrameConstants.h"
 #include "passes/Pass.h"
 
 namespace drr {
-
-// Map(WRITE_DISCARD), copy, Unmap.
-void UploadConstants(d3dl::DeviceContext* ctx, d3dl::Buffer* buffer, const void* data, size_t size);
-bool CreateConstantBuffer(d3dl::Device* device, size_t size, d3dl::ComPtr<d3dl::Buffer>* buffer);
-
-// A dynamic constant buffer holding one T.
-template <class T>
-class ConstantBuffer {
- public:
-  bool Create(d3dl::Device* device) { return CreateConstantBuffer(device, sizeof(T), &m_Buffer); }
-  void Release() { m_Buffer = nullptr; }
-  void Upload(d3dl::DeviceContext* ctx, const T& value) { UploadConstants(ctx, m_Buffer.Get(), &value, sizeof value); }
-  d3dl::Buffer* Get() const { return m_Buffer.Get(); }
-  d3dl::Buffer* const* Address() const { return m_Buffer.GetAddressOf(); }
-
- private:
-  d3dl::ComPtr<d3dl::Buffer> m_Buffer;
-};
 
 // What the full-screen passes share: states, samplers, vertex shaders and
 // the post-processing constant buffers (b0 dynamic or full, b1 upscale).
@@ -65,8 +48,23 @@ class FullScreenPass : public Pass {
   // The dynamic path's draw: PostProcessDynamic's vertex shader, s.dc at b0.
   void DrawDynamic(d3dl::DeviceContext* ctx, d3dl::PixelShader* ps, const DynamicConstants& dc,
                    std::initializer_list<d3dl::ShaderResourceView*> srvs = {}) const;
+  // The full-resolution path's: PostProcess's vertex shader, s.fc at b0.
+  void DrawFull(d3dl::DeviceContext* ctx, d3dl::PixelShader* ps, const FullConstants& fc,
+                std::initializer_list<d3dl::ShaderResourceView*> srvs = {}) const;
 
   FullScreenKit& m_Kit;
+};
+
+// A full-screen pass with one pixel shader of its own, by name.
+class ShaderPass : public FullScreenPass {
+ public:
+  ShaderPass(FullScreenKit& kit, const char* pixelShader) : FullScreenPass(kit), m_Name(pixelShader) {}
+  bool LoadShaders(ShaderLoad& load) override { return load.Load({}, {{m_Name, &m_PS}}); }
+  void Release() override { m_PS = nullptr; }
+
+ protected:
+  const char* m_Name;
+  d3dl::ComPtr<d3dl::PixelShader> m_PS;
 };
 
 }  // namespace drr

@@ -16,12 +16,8 @@ bool MotionBlurPass::Record(PassFrame& f) {
   BindSamplers(f.ctx);
   const RenderTarget& colour = rts[s.dynamic ? RT::ColorDynamic : RT::ColorFull];
   const RenderTarget& velocity = rts[s.dynamic ? RT::VelocityDynamic0 : RT::VelocityFull];
-  if (s.dynamic) {
-    DrawDynamic(f.ctx, m_Dynamic.Get(), s.dc, {colour.srv.Get(), nullptr, velocity.srv.Get()});
-  } else {
-    m_Kit.full.Upload(f.ctx, s.fc);
-    Draw(f.ctx, m_Kit.fullVS.Get(), m_Full.Get(), m_Kit.full.Get(), {colour.srv.Get(), nullptr, velocity.srv.Get()});
-  }
+  if (s.dynamic) DrawDynamic(f.ctx, m_Dynamic.Get(), s.dc, {colour.srv.Get(), nullptr, velocity.srv.Get()});
+  else DrawFull(f.ctx, m_Full.Get(), s.fc, {colour.srv.Get(), nullptr, velocity.srv.Get()});
   return true;
 }
 

@@ -98,31 +98,21 @@ class TemporalUpsamplePass : public FullScreenPass {
 };
 
 // Contrast-limited sharpening of the edge-adaptive upscale's output.
-class SharpenPass : public FullScreenPass {
+class SharpenPass : public ShaderPass {
  public:
-  using FullScreenPass::FullScreenPass;
-  bool LoadShaders(ShaderLoad& load) override { return load.Load({}, {{"UpscaleSpatial_SharpenPS", &m_PS}}); }
-  void Release() override { m_PS = nullptr; }
+  explicit SharpenPass(FullScreenKit& kit) : ShaderPass(kit, "UpscaleSpatial_SharpenPS") {}
 
  protected:
   bool Record(PassFrame& f) override;
-
- private:
-  d3dl::ComPtr<d3dl::PixelShader> m_PS;
 };
 
 // The static secondary spatial upscale (Catmull-Rom) to the back buffer.
-class SecondaryUpscalePass : public FullScreenPass {
+class SecondaryUpscalePass : public ShaderPass {
  public:
-  using FullScreenPass::FullScreenPass;
-  bool LoadShaders(ShaderLoad& load) override { return load.Load({}, {{"UpscaleSpatial_SecondaryPS", &m_PS}}); }
-  void Release() override { m_PS = nullptr; }
+  explicit SecondaryUpscalePass(FullScreenKit& kit) : ShaderPass(kit, "UpscaleSpatial_SecondaryPS") {}
 
  protected:
   bool Record(PassFrame& f) override;
-
- private:
-  d3dl::ComPtr<d3dl::PixelShader> m_PS;
 };
 
 // The panel and the text at back-buffer resolution (PassFrame::gui).
