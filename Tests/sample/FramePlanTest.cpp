@@ -242,3 +242,51 @@ TEST(FramePlan, TheOriginalsFlipQuirkAndItsFix) {
   EXPECT_TRUE(PlanFrame(Parse("--filter taa"), MatrixInputs()).flipsTargets);
   EXPECT_FALSE(PlanFrame(Parse("--filter taau"), MatrixInputs()).flipsTargets);
 }
+
+// The temporal state a plan leaves is the next plan's input (TemporalHistory):
+// TAA writes the other final target each frame and reads the last one once
+// the history holds a frame.
+TEST(FramePlan, TAAHistoryAlternatesAndReadsTheLastFrameOnceValid) {
+  FrameInputs in = MatrixInputs();
+  const Options o = Parse("--filter taa");
+  const FramePlan first = PlanFrame(o, in);
+  EXPECT_EQ(first.setup.cur, 1);
+  EXPECT_EQ(first.setup.prev, 1);  // nothing to read yet
+  EXPECT_TRUE(first.history.valid);
+  in.history = first.history;
+  const FramePlan second = PlanFrame(o, in);
+  EXPECT_EQ(second.setup.cur, 0);
+  EXPECT_EQ(second.setup.prev, 1);
+  EXPECT_EQ(second.scene.target, 0);
+  // The jitter pair alternates with the target written.
+  EXPECT_NE(second.setup.dc.jitterCurr[0], second.setup.dc.jitterPrev[0]);
+}
+
+// TAAU: the history pair alternates from the second frame, the Halton index
+// advances each frame and holds while paused.
+TEST(FramePlan, TAAUHistoryAndJitterIndex) {
+  FrameInputs in = MatrixInputs();
+  const FramePlan first = PlanFrame(Parse("--filter taau"), in);
+  EXPECT_FALSE(first.setup.historyValid);
+  EXPECT_EQ(first.history.jitterIndex, 1u);
+  in.history = first.history;
+  const FramePlan second = PlanFrame(Parse("--filter taau"), in);
+  EXPECT_TRUE(second.setup.historyValid);
+  EXPECT_EQ(second.setup.historyCur, 1 - first.setup.historyCur);
+  EXPECT_EQ(second.history.jitterIndex, 2u);
+  in.history = second.history;
+  const FramePlan paused = PlanFrame(Parse("--filter taau --pause"), in);
+  EXPECT_EQ(paused.history.jitterIndex, 2u);
+  EXPECT_EQ(paused.setup.uc.jitterPx[0], second.setup.uc.jitterPx[0]);
+}
+
+// Nothing temporal: the final target 0 every frame, no jitter.
+TEST(FramePlan, SpatialFiltersKeepTargetZeroWithoutJitter) {
+  FrameInputs in = MatrixInputs();
+  const FramePlan first = PlanFrame(Parse("--filter bicubic"), in);
+  in.history = first.history;
+  const FramePlan second = PlanFrame(Parse("--filter bicubic"), in);
+  EXPECT_EQ(second.setup.cur, 0);
+  EXPECT_FALSE(second.history.valid);
+  EXPECT_EQ(second.scene.jitterNdc, glm::vec2(0.0f));
+}
