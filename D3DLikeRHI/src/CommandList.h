@@ -114,11 +114,11 @@ class CommandListImpl final : public Child<CommandList> {
   CommandListImpl(DeviceImpl* d, std::unique_ptr<ListRecording> rec, std::shared_ptr<ListRecycler> recycler);
   ~CommandListImpl() override;
   UINT GetContextFlags() override { return 0; }
-  ListRecording& rec() { return *rec_; }
+  ListRecording& rec() { return *recording_; }
   uint64_t lastExecuted = 0;  // frame serial of the last ExecuteCommandList
 
  private:
-  std::unique_ptr<ListRecording> rec_;
+  std::unique_ptr<ListRecording> recording_;
   std::shared_ptr<ListRecycler> recycler_;
 };
 

@@ -9,7 +9,7 @@ namespace d3dl::impl {
 namespace {
 
 template <class Impl, class Iface>
-HRESULT MakeBufferView(DeviceImpl* dev, Resource* r, VkDeviceSize offset, VkDeviceSize range, Iface** out) {
+HRESULT MakeBufferView(DeviceImpl* dev, Resource* r, UINT64 offset, UINT64 range, Iface** out) {
   auto* view = new Impl(dev);
   ViewCore& v = view->v;
   v.buf = AsBuffer(r);
@@ -26,9 +26,7 @@ HRESULT MakeTextureUav(DeviceImpl* dev, Resource* r, const ViewFormat& format, u
   auto* view = new UAVImpl(dev);
   ViewCore& v = view->v;
   v.tex = AsTexture(r);
-  v.aspect = v.tex->aspect;
-  v.format = format.vk;
-  v.dxgiFormat = format.dxgi;
+  SetViewFormat(v, format);
   v.baseMip = mip;
   if (!RebuildViews(dev, v)) {
     dev->Log(LogLevel::Error, "%s: vkCreateImageView failed", kUavKind.fn);
@@ -45,17 +43,10 @@ HRESULT MakeTextureUav(DeviceImpl* dev, Resource* r, const ViewFormat& format, u
 
 HRESULT CreateBufferSRV(DeviceImpl* dev, Resource* r, const SHADER_RESOURCE_VIEW_DESC* desc,
                         ShaderResourceView** out) {
-  if (desc && desc->ViewDimension != SRV_DIMENSION_BUFFEREX && desc->ViewDimension != SRV_DIMENSION_BUFFER) {
-    dev->Log(LogLevel::Error, "%s: ViewDimension %u does not match a buffer (SRV_DIMENSION_BUFFEREX)", kSrvKind.fn,
-             desc->ViewDimension);
-    return E_INVALIDARG;
-  }
   BufferViewRequest req{};
-  if (desc)
-    req = {desc->Format, desc->BufferEx.FirstElement, desc->BufferEx.NumElements,
-           desc->BufferEx.Flags & ~UINT(BUFFEREX_SRV_FLAG_RAW), (desc->BufferEx.Flags & BUFFEREX_SRV_FLAG_RAW) != 0};
-  VkDeviceSize offset = 0, range = 0;
-  const HRESULT hr = ValidateBufferView(*dev, kSrvKind, r, out, desc ? &req : nullptr, &offset, &range);
+  UINT64 offset = 0, range = 0;
+  HRESULT hr = BufferSrvRequest(*dev, desc, &req);
+  if (SUCCEEDED(hr)) hr = ValidateBufferView(*dev, kSrvKind, DescribeResource(r), out, desc ? &req : nullptr, &offset, &range);
   if (FAILED(hr)) return hr;
   return MakeBufferView<SRVImpl>(dev, r, offset, range, out);
 }
@@ -66,21 +57,14 @@ HRESULT DeviceImpl::CreateUnorderedAccessView(Resource* r, const UNORDERED_ACCES
   if (!AsBuffer(r)) {
     ViewFormat format;
     uint32_t mip = 0;
-    const HRESULT hr = ValidateTextureUav(*this, r, desc, out, &format, &mip);
+    const HRESULT hr = ValidateTextureUav(*this, DescribeResource(r), desc, out, &format, &mip);
     if (FAILED(hr)) return hr;
     return MakeTextureUav(this, r, format, mip, out);
   }
-  if (desc && desc->ViewDimension != UAV_DIMENSION_BUFFER) {
-    Log(LogLevel::Error, "%s: ViewDimension %u does not match a buffer (UAV_DIMENSION_BUFFER)", kUavKind.fn,
-        desc->ViewDimension);
-    return E_INVALIDARG;
-  }
   BufferViewRequest req{};
-  if (desc)
-    req = {desc->Format, desc->Buffer.FirstElement, desc->Buffer.NumElements,
-           desc->Buffer.Flags & ~UINT(BUFFER_UAV_FLAG_RAW), (desc->Buffer.Flags & BUFFER_UAV_FLAG_RAW) != 0};
-  VkDeviceSize offset = 0, range = 0;
-  const HRESULT hr = ValidateBufferView(*this, kUavKind, r, out, desc ? &req : nullptr, &offset, &range);
+  UINT64 offset = 0, range = 0;
+  HRESULT hr = BufferUavRequest(*this, desc, &req);
+  if (SUCCEEDED(hr)) hr = ValidateBufferView(*this, kUavKind, DescribeResource(r), out, desc ? &req : nullptr, &offset, &range);
   if (FAILED(hr)) return hr;
   return MakeBufferView<UAVImpl>(this, r, offset, range, out);
 }

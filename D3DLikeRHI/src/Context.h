@@ -2,8 +2,10 @@
 // D3D11-style state, its commit at draws and dispatches, clears, Map of
 // constant buffers, barriers. ImmediateContext (ContextImmediate.h) records
 // into one Vulkan command buffer per frame, which it submits through the
-// device queue; DeferredContext (ContextDeferred.h) records command lists and
-// rejects the calls D3D11 forbids on it. The common part is split over
+// device queue and executes command lists; DeferredContext (ContextDeferred.h)
+// records command lists and rejects the calls D3D11 forbids on it. Where the
+// two differ, the common part calls a virtual hook (UseTexture, CbRing...)
+// and never tests which kind it is. The common part is split over
 // ContextState.cpp (setters), ContextDraw.cpp (commit, rendering scopes),
 // ContextClear.cpp, ContextMap.cpp (map/update), ContextCopy.cpp,
 // ContextBlit.cpp, ContextQuery.cpp, ContextFrame.cpp (command buffers,
@@ -137,9 +139,7 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   // Multisample resolve (ContextCopy.cpp)
   void ResolveSubresource(Resource* dst, UINT dstSubresource, Resource* src, UINT srcSubresource,
                           DXGI_FORMAT format) override;
-  // Command lists (ContextDeferred.cpp)
-  HRESULT FinishCommandList(BOOL restoreDeferredContextState, CommandList** commandList) override;
-  void ExecuteCommandList(CommandList* commandList, BOOL restoreContextState) override;
+  // FinishCommandList and ExecuteCommandList: ContextDeferred.h, ContextImmediate.h.
   // Compute shaders and UAVs (ContextCompute.cpp)
   void CSSetShader(ComputeShader* shader) override;
   void CSSetConstantBuffers(UINT startSlot, UINT num, Buffer* const* buffers) override;
@@ -168,8 +168,7 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   void ForgetDiscardedConstants(BufferImpl* b);  // `b` is being destroyed
 
  protected:
-  // deferred: a deferred context (CreateDeferredContext), counted on its own.
-  ContextImpl(DeviceImpl* dev, bool deferred);
+  explicit ContextImpl(DeviceImpl* dev);
 
   // ContextFrame.cpp
   void CreateCommandFrames();
@@ -207,6 +206,13 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   // The pipeline layout sets are bound with (a list binds with its context's
   // twin of it, ProgramLayout::listLayouts).
   virtual VkPipelineLayout BindingLayout(const ProgramLayout& p) = 0;
+  // The ring slice with a constant buffer's data for this context's commands:
+  // the buffer's own (uploaded from its shadow first) or the list's.
+  virtual const RingAlloc& CbRing(BufferImpl* b) = 0;
+  // The slice of a DYNAMIC vertex/index buffer's last Map(WRITE_DISCARD): the
+  // buffer's own (the immediate context reports one from an earlier frame)
+  // or the list's.
+  virtual const RingAlloc& DynRing(const BufferImpl* b) = 0;
   bool AllocateTimestamp(QueryImpl* q, uint32_t* index);
 
   // Barriers.cpp
@@ -230,7 +236,7 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   // ContextCompute.cpp
   void SetUavs(ComPtr<UAVImpl>* slots, const char* fn, UINT start, UINT num, UnorderedAccessView* const* views);
   bool CommitCompute();
-  bool UavsBound(const ProgramLayout& p, ShaderStage stage);
+  bool CheckUavs(const ProgramLayout& p, ShaderStage stage);
   void UseShaderViews(const ProgramLayout& p, ShaderStage stage);
   UAVImpl* UavAt(ShaderStage s, uint32_t slot) const { return Stage(s).uavs[slot].Get(); }
   void ClearUav(UAVImpl* v, const VkClearColorValue& value, uint32_t fill);
@@ -342,49 +348,11 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   // (no references held; see ForgetDiscardedConstants).
   std::vector<BufferImpl*> discardedCBs_;
 
-  // ---- Deferred contexts (ContextDeferred.cpp). `rec_` is set on a deferred
-  // context only: the list being recorded (cmd_ is its secondary buffer).
-  void BeginRecording();
-  ListSyncEntry& ListEntry(SyncState* global, const Usage& u, bool* first);
-  uint32_t ListImageEntries(TextureCore* t, TextureImage& img);
-  void UseTextureInList(TextureCore* t, const SubresourceRange& range, const Usage& u);
-  void UseBufferInList(VkBuffer buf, SyncState& s, const Usage& u);
-  const RingAlloc& ListCbRing(BufferImpl* b);
-  const RingAlloc& ListDynRing(const BufferImpl* b);
-  ListRecording::Slice* NewListSlice(BufferImpl* b, bool discarded, bool written);
-  ListRecording::Slice* FindListSlice(const BufferImpl* b);
-  HRESULT MapInList(Resource* resource, UINT sub, MAP type, MAPPED_SUBRESOURCE* mapped);
-  void UnmapInList(Resource* resource);
-  void UpdateConstantsInList(BufferImpl* b, const BOX* box, const void* data);
-  void RetainDrawState(bool indexed);
-  void RetainComputeState();
-  template <class T>
-  void Retain(T* object);
-  void RetainInList(Unknown* object);
-  void CopyImports(CommandListImpl& list);
-  void ExportConstants(ListRecording& rec);
-  void NoteUseInList(GpuUse& u, bool write);
-  // The ring slice with a constant buffer's data for this context's commands.
-  const RingAlloc& CbRing(BufferImpl* b) {
-    if (rec_) return ListCbRing(b);
-    b->EnsureUploaded();
-    return b->ring();
-  }
-  // The slice of a DYNAMIC vertex/index buffer's last Map(WRITE_DISCARD).
-  const RingAlloc& DynRing(const BufferImpl* b) { return rec_ ? ListDynRing(b) : b->ring(); }
   // DEVICE_STATS::DrawCalls: a list's draws are counted when it is executed.
   void CountDraw() { ++*drawCount_; }
-  // The device's counter (immediate) or the list's (deferred; set by
-  // BeginRecording), so that counting a draw needs no test.
+  // The device's counter (immediate) or the list's (deferred, set when a
+  // list begins), so that counting a draw needs no test.
   uint64_t* drawCount_ = &dev_->stats.DrawCalls;
-
-  const bool deferred_;
-  // Deferred: binds descriptor sets with twin pipeline layout number this
-  // (ProgramLayout::listLayouts), so that contexts recording at once do not
-  // share one reference count in the driver.
-  const uint32_t listLayoutIndex_;
-  std::unique_ptr<ListRecording> rec_;
-  std::shared_ptr<ListRecycler> recycler_;  // this context's recordings for reuse (ListRecycler.cpp)
 };
 
 // Pipeline statistics queries (QueryStatistics.cpp): the query's pool, and

@@ -13,7 +13,9 @@ namespace impl {
 
 void ContextImpl::BlitRegion(Texture2D* dstTex, const RECT& dstRect, Texture2D* srcTex,
                              const RECT& srcRect, FILTER filter) {
-  if (!ValidateBlitRegion(*dev_, dstTex, dstRect, srcTex, srcRect, filter)) return;
+  if (!ValidateBlitRegion(*dev_, DescribeResource(dstTex), dstRect, DescribeResource(srcTex), srcRect, filter,
+                          dstTex && dstTex == srcTex))
+    return;
   TextureCore* dst = AsTexture(dstTex);
   TextureCore* src = AsTexture(srcTex);
   EndRendering();

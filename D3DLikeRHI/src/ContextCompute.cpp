@@ -50,12 +50,20 @@ void ContextImpl::OMSetRenderTargetsAndUnorderedAccessViews(UINT numRTVs, Render
 }
 
 // Every UAV the program declares has a view of the declared kind bound.
-bool ContextImpl::UavsBound(const ProgramLayout& p, ShaderStage stage) {
+// The program's UAV slots against the validation layer (ValidateShaderUavs);
+// logs once and returns false when the draw or dispatch must be skipped.
+bool ContextImpl::CheckUavs(const ProgramLayout& p, ShaderStage stage) {
+  ShaderUavInputs in;
+  in.declared = p.HasUavs();
+  in.storesSupported = stage == ShaderStage::Compute || dev_->features().fragmentStores;
   for (const auto& s : p.uavImages)
-    if (const UAVImpl* v = UavAt(stage, s.slot); !v || !v->v.tex) return false;
+    if (const UAVImpl* v = UavAt(stage, s.slot); !v || !v->v.tex) in.allBound = false;
   for (const auto& s : p.uavBuffers)
-    if (const UAVImpl* v = UavAt(stage, s.slot); !v || !v->v.buf) return false;
-  return true;
+    if (const UAVImpl* v = UavAt(stage, s.slot); !v || !v->v.buf) in.allBound = false;
+  OnceError error;
+  if (ValidateShaderUavs(in, &error)) return true;
+  ErrorOnce(error);
+  return false;
 }
 
 // Barriers of the program's views: sampled textures (compute only; draws do
@@ -91,7 +99,8 @@ void ContextImpl::UseShaderViews(const ProgramLayout& p, ShaderStage stage) {
 // pipeline and descriptor set on the compute bind point.
 bool ContextImpl::CommitCompute() {
   ShaderBase* cs = Stage(ShaderStage::Compute).shader.Get();
-  if (!cs) return ErrorOnce(OnceError::NoComputeShader), false;
+  OnceError error;
+  if (!ValidateDispatchShader(cs != nullptr, &error)) return ErrorOnce(error), false;
   if (dirty_ & kComputeProgram) {
     computeProgram_ = dev_->pipelines().GetComputeProgram(cs);
     if (!computeProgram_) return ErrorOnce(OnceError::ProgramLayoutFailed), false;
@@ -99,8 +108,7 @@ bool ContextImpl::CommitCompute() {
   }
   const ProgramLayout& p = *computeProgram_;
   // UAV slots change only with kComputeDescriptors (a failed check leaves it set).
-  if ((dirty_ & kComputeDescriptors) && !UavsBound(p, ShaderStage::Compute))
-    return ErrorOnce(OnceError::UnboundUav), false;
+  if ((dirty_ & kComputeDescriptors) && !CheckUavs(p, ShaderStage::Compute)) return false;
   UseShaderViews(p, ShaderStage::Compute);
   HoldComputeState();
   EndRendering();
@@ -172,10 +180,10 @@ bool ClearColorFromBits(VkFormat f, const UINT values[4], VkClearColorValue* out
 }
 }  // namespace
 
-bool UavClearBitsSupported(VkFormat f) {
+bool UavClearBitsSupported(DXGI_FORMAT f) {
   const UINT zero[4] = {};
   VkClearColorValue ignored;
-  return ClearColorFromBits(f, zero, &ignored);
+  return ClearColorFromBits(ToVkFormat(f), zero, &ignored);
 }
 
 void ContextImpl::ClearUav(UAVImpl* uav, const VkClearColorValue& value, uint32_t fill) {

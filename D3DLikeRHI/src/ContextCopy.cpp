@@ -112,19 +112,22 @@ void ContextImpl::CopyStagingToImage(TextureCore* dst, SubIndex ds, UINT x, UINT
 
 void ContextImpl::CopySubresourceRegion(Resource* dst, UINT dstSub, UINT x, UINT y, UINT, Resource* src,
                                         UINT srcSub, const BOX* box) {
-  if (!ValidateCopySubresourceRegion(*dev_, dst, dstSub, x, y, src, srcSub, box)) return;
+  if (!ValidateCopySubresourceRegion(*dev_, DescribeResource(dst), dstSub, x, y, DescribeResource(src), srcSub, box,
+                                     dst && dst == src))
+    return;
   BufferImpl *bd = AsBuffer(dst), *bs = AsBuffer(src);
   if (bd && bs) return CopyBufferRegion(bd, x, bs, box);
   CopyTextureRegion(AsTexture(dst), dstSub, x, y, AsTexture(src), srcSub, box);
 }
 
 void ContextImpl::CopyResource(Resource* dst, Resource* src) {
-  if (!ValidateCopyResource(*dev_, dst, src)) return;
+  const ResourceInfo di = DescribeResource(dst), si = DescribeResource(src);
+  if (!ValidateCopyResource(*dev_, di, si, dst && dst == src)) return;
   BufferImpl *bd = AsBuffer(dst), *bs = AsBuffer(src);
   if (bd && bs) return CopyBufferRegion(bd, 0, bs, nullptr);
   TextureCore *td = AsTexture(dst), *ts = AsTexture(src);
   for (uint32_t s = 0; s < td->SubCount(); ++s)
-    if (ValidateCopyTextureRegion(*dev_, td, s, 0, 0, ts, s, nullptr)) CopyTextureRegion(td, s, 0, 0, ts, s, nullptr);
+    if (ValidateCopyTextureRegion(*dev_, di, s, 0, 0, si, s, nullptr)) CopyTextureRegion(td, s, 0, 0, ts, s, nullptr);
 }
 
 void ContextImpl::GenerateMips(ShaderResourceView* srv) {
@@ -151,7 +154,7 @@ void ContextImpl::GenerateMips(ShaderResourceView* srv) {
 // vkCmdResolveImage averages the samples (float and UNORM formats; the
 // validation rejects the integer and depth formats D3D11 cannot resolve).
 void ContextImpl::ResolveSubresource(Resource* dst, UINT dstSub, Resource* src, UINT srcSub, DXGI_FORMAT format) {
-  if (!ValidateResolveSubresource(*dev_, dst, dstSub, src, srcSub, format)) return;
+  if (!ValidateResolveSubresource(*dev_, DescribeResource(dst), dstSub, DescribeResource(src), srcSub, format)) return;
   TextureCore *td = AsTexture(dst), *ts = AsTexture(src);
   SubIndex ds, ss;
   td->DecodeSub(dstSub, &ds);

@@ -1,9 +1,9 @@
 // Deferred contexts and command lists (CommandList.h). A deferred context
 // (ContextDeferred.h) is a context whose commands go into a secondary command buffer of the
 // list being recorded, on the calling thread; its barriers, ring slices and
-// descriptor sets stay inside the list. ExecuteCommandList, on the immediate
-// context, brings each resource into the list's entry state, executes the
-// secondary buffer and makes the list's exit state current.
+// descriptor sets stay inside the list, and everything about the list being
+// recorded (`rec_`) stays in this file. The immediate context executes lists
+// (ContextImmediate.cpp).
 #include "ContextDeferred.h"
 #include "Validate.h"
 
@@ -22,11 +22,6 @@ SyncState StateAfterEntry(const Usage& u) {
   s.readStages = u.write ? 0 : u.stages;
   return s;
 }
-
-bool SameState(const SyncState& a, const SyncState& b) {
-  return a.layout == b.layout && a.writeStages == b.writeStages && a.writeAccess == b.writeAccess &&
-         a.visible == b.visible && a.readStages == b.readStages && a.pending == b.pending;
-}
 }  // namespace
 
 // ---------------------------------------------------------------------------
@@ -40,13 +35,13 @@ HRESULT DeviceImpl::CreateDeferredContext(UINT flags, DeviceContext** context) {
 
 CommandListImpl::CommandListImpl(DeviceImpl* d, std::unique_ptr<ListRecording> rec,
                                  std::shared_ptr<ListRecycler> recycler)
-    : Child<CommandList>(d), rec_(std::move(rec)), recycler_(std::move(recycler)) {}
+    : Child<CommandList>(d), recording_(std::move(rec)), recycler_(std::move(recycler)) {}
 
 // Destruction releases the references at once; the Vulkan objects serve a later list of the same
 // context once the frame that last executed this one has completed.
 CommandListImpl::~CommandListImpl() {
-  ReleaseListReferences(*rec_);
-  recycler_->Give(std::move(rec_), lastExecuted);
+  ReleaseListReferences(*recording_);
+  recycler_->Give(std::move(recording_), lastExecuted);
 }
 
 void ReleaseListReferences(ListRecording& rec) {
@@ -64,9 +59,16 @@ void DestroyRecording(DeviceImpl* dev, ListRecording& rec) {
   rec.pool = VK_NULL_HANDLE;
 }
 
-DeferredContext::DeferredContext(DeviceImpl* dev) : ContextImpl(dev, true) {
+DeferredContext::DeferredContext(DeviceImpl* dev)
+    : ContextImpl(dev), listLayoutIndex_(dev->NextDeferredContextIndex()) {
   dev_->ChildCreated();
   BeginRecording();
+}
+
+DeferredContext::~DeferredContext() {
+  ClearState();
+  DestroyRecording(dev_, *rec_);  // an unfinished list, never submitted
+  recycler_->Close();             // its lists may outlive it: they destroy theirs
 }
 
 UINT DeferredContext::Release() {
@@ -86,24 +88,20 @@ void DeferredContext::Reject(const char* fn, bool portLimit) {
     dev_->Log(LogLevel::Error, "%s: not allowed on a deferred context", fn);
 }
 
-HRESULT DeferredContext::Map(Resource* resource, UINT sub, MAP type, UINT, MAPPED_SUBRESOURCE* mapped) {
-  return MapInList(resource, sub, type, mapped);
-}
-
-void DeferredContext::Unmap(Resource* resource, UINT) { UnmapInList(resource); }
 
 // Constant buffers only (ValidateDeferredUpdate), into a slice of the list.
 void DeferredContext::UpdateSubresource(Resource* dst, UINT sub, const BOX* box, const void* data, UINT rowPitch,
                                         UINT) {
   BOX region;
-  if (!ValidateUpdateSubresource(*dev_, dst, sub, box, data, rowPitch, &region)) return;
-  if (ValidateDeferredUpdate(*dev_, dst)) UpdateConstantsInList(AsBuffer(dst), box, data);
+  const ResourceInfo info = DescribeResource(dst);
+  if (!ValidateUpdateSubresource(*dev_, info, sub, box, data, rowPitch, &region)) return;
+  if (ValidateDeferredUpdate(*dev_, info)) UpdateConstantsInList(AsBuffer(dst), box, data);
 }
 
 // A new list: its own command pool, secondary buffer, descriptor pools and
 // ring (recycled from an earlier list of this context when one is free);
 // nothing is bound in a new command buffer.
-void ContextImpl::BeginRecording() {
+void DeferredContext::BeginRecording() {
   if (!recycler_) recycler_ = std::make_shared<ListRecycler>(dev_);
   rec_ = recycler_->Take();
   drawCount_ = &rec_->draws;
@@ -119,8 +117,8 @@ void ContextImpl::BeginRecording() {
   MarkDirtyAll();
 }
 
-HRESULT ContextImpl::FinishCommandList(BOOL restoreState, CommandList** out) {
-  const HRESULT hr = ValidateFinishCommandList(*dev_, deferred_, out);
+HRESULT DeferredContext::FinishCommandList(BOOL restoreState, CommandList** out) {
+  const HRESULT hr = ValidateFinishCommandList(*dev_, true, out);
   if (FAILED(hr)) return hr;
   EndRendering();
   FlushBarriers();
@@ -133,69 +131,11 @@ HRESULT ContextImpl::FinishCommandList(BOOL restoreState, CommandList** out) {
   return S_OK;
 }
 
-// ---------------------------------------------------------------------------
-// Execution on the immediate context
-void ContextImpl::ExecuteCommandList(CommandList* commandList, BOOL restoreState) {
-  if (!ValidateExecuteCommandList(*dev_, deferred_, commandList)) return;
-  auto* list = static_cast<CommandListImpl*>(commandList);
-  ListRecording& r = list->rec();
-  EndRendering();
-  CopyImports(*list);
-  for (const ListSyncEntry& e : r.syncs) {
-    if (!e.used) continue;
-    if (e.tex)
-      UseTexture(e.tex, OneSubresource(e.mip, e.layer), e.entry);
-    else
-      UseBuffer(e.buffer, *e.global, e.entry);
-  }
-  FlushBarriers();
-  vkCmdExecuteCommands(cmd_, 1, &r.cmd);
-  for (const ListSyncEntry& e : r.syncs)
-    if (e.used && !SameState(e.local, e.initial)) *e.global = e.local;  // the list changed it
-  const uint64_t serial = dev_->CurrentSerial();
-  for (const auto& [use, written] : r.uses) written ? use->Write(serial) : use->Read(serial);
-  list->lastExecuted = serial;
-  dev_->stats.DrawCalls += r.draws;
-  ExportConstants(r);
-  if (!restoreState) ClearState();
-  MarkDirtyAll();  // the secondary buffer left the primary's bindings undefined
-}
-
-// Constant buffers the list reads without writing them hold their contents
-// at execution. A slot still read by an earlier execution on the GPU is
-// overwritten only after it (when the contents differ).
-void ContextImpl::CopyImports(CommandListImpl& list) {
-  ListRecording& r = list.rec();
-  if (r.imports.empty()) return;
-  bool differs = false;
-  for (const ListImport& im : r.imports) {
-    im.buffer->SyncShadow();
-    differs = differs || std::memcmp(im.slot.ptr, im.buffer->shadow(), im.buffer->size()) != 0;
-  }
-  const uint64_t last = list.lastExecuted;
-  if (differs && last && dev_->queue().CompletedSerial() < last) {
-    if (last >= dev_->CurrentSerial()) Flush();
-    dev_->queue().WaitForSerial(last);
-  }
-  for (const ListImport& im : r.imports) std::memcpy(im.slot.ptr, im.buffer->shadow(), im.buffer->size());
-}
-
-// Constant buffers the list wrote hold the list's last contents afterwards,
-// as if its updates had run on this context.
-void ContextImpl::ExportConstants(ListRecording& r) {
-  for (auto& [buffer, slice] : r.slices) {
-    if (!slice.written || !buffer->IsConstantBuffer()) continue;
-    auto* b = const_cast<BufferImpl*>(buffer);  // retained by the list
-    b->SyncShadow();  // drops a stale mark of this context's own discard
-    std::memcpy(b->shadow(), slice.ring.ptr, b->size());
-    b->ShadowChanged();
-  }
-  dirty_ |= kConstants;
-}
+void DeferredContext::ExecuteCommandList(CommandList* list, BOOL) { ValidateExecuteCommandList(*dev_, true, list); }
 
 // ---------------------------------------------------------------------------
 // Recording: synchronisation state local to the list
-ListSyncEntry& ContextImpl::ListEntry(SyncState* global, const Usage& u, bool* first) {
+ListSyncEntry& DeferredContext::ListEntry(SyncState* global, const Usage& u, bool* first) {
   auto [it, added] = rec_->syncIndex.emplace(global, static_cast<uint32_t>(rec_->syncs.size()));
   *first = added;
   if (added) {
@@ -211,7 +151,7 @@ ListSyncEntry& ContextImpl::ListEntry(SyncState* global, const Usage& u, bool* f
 // The list's entries of every subresource of `img`, made together at the
 // image's first use in the list (unused until touched): one lookup per
 // texture and use, not one per subresource.
-uint32_t ContextImpl::ListImageEntries(TextureCore* t, TextureImage& img) {
+uint32_t DeferredContext::ListImageEntries(TextureCore* t, TextureImage& img) {
   ListRecording& r = *rec_;
   const auto [it, added] = r.syncIndex.emplace(img.sync.data(), static_cast<uint32_t>(r.syncs.size()));
   if (added) {
@@ -229,7 +169,7 @@ uint32_t ContextImpl::ListImageEntries(TextureCore* t, TextureImage& img) {
   return it->second;
 }
 
-void ContextImpl::UseTextureInList(TextureCore* t, const SubresourceRange& r, const Usage& u) {
+void DeferredContext::UseTexture(TextureCore* t, const SubresourceRange& r, const Usage& u) {
   TextureImage& img = t->Cur();
   const uint32_t mipCount = t->desc.MipLevels;
   const uint32_t base = ListImageEntries(t, img);
@@ -249,7 +189,7 @@ void ContextImpl::UseTextureInList(TextureCore* t, const SubresourceRange& r, co
   if (u.layout != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) dirty_ |= kSrvLayouts;
 }
 
-void ContextImpl::UseBufferInList(VkBuffer buf, SyncState& s, const Usage& u) {
+void DeferredContext::UseBuffer(VkBuffer buf, SyncState& s, const Usage& u) {
   bool first;
   ListSyncEntry& e = ListEntry(&s, u, &first);
   // A write (a UAV, a fill) may feed a later draw's vertex or index reads:
@@ -264,25 +204,25 @@ void ContextImpl::UseBufferInList(VkBuffer buf, SyncState& s, const Usage& u) {
   barriers_.AddBuffer(buf, info);
 }
 
-void ContextImpl::NoteUseInList(GpuUse& u, bool write) {
+void DeferredContext::NoteUse(GpuUse& u, bool write) {
   auto [it, added] = rec_->uses.emplace(&u, write);
   if (!added) it->second = it->second || write;
 }
 
 template <class T>
-void ContextImpl::Retain(T* object) {
+void DeferredContext::Retain(T* object) {
   if (!object || !rec_->retained.insert(object).second) return;
   object->AddRef();
   rec_->held.push_back({object, [](void* p) { static_cast<T*>(p)->Release(); }});
 }
 
-void ContextImpl::RetainInList(Unknown* object) { Retain(object); }
+void DeferredContext::Hold(Unknown* object) { Retain(object); }
 
 // Every object a draw reads, referenced by the list (D3D11 lists keep them).
 // Only the groups whose dirty bits are set can bring objects the list does
 // not hold yet (every setter that binds a new object raises its group's bit,
 // and a new list starts with every bit set), so the others are skipped.
-void ContextImpl::RetainDrawState(bool indexed) {
+void DeferredContext::HoldDrawState(bool indexed) {
   if (dirty_ & (kPipeline | kProgram)) {  // shaders, input layout, fixed-function states, targets
     for (ShaderStage s : kGraphicsStages) Retain(state_.stages[s].shader.Get());
     Retain(state_.ia.layout.Get());
@@ -309,7 +249,7 @@ void ContextImpl::RetainDrawState(bool indexed) {
 }
 
 // Every object a dispatch reads or writes (compute on a deferred context).
-void ContextImpl::RetainComputeState() {
+void DeferredContext::HoldComputeState() {
   const ProgramLayout& p = *computeProgram_;
   const ShaderStageState& cs = state_.stages[ShaderStage::Compute];
   Retain(cs.shader.Get());
@@ -323,7 +263,7 @@ void ContextImpl::RetainComputeState() {
 
 // ---------------------------------------------------------------------------
 // Recording: buffer contents in the list's own ring
-ListRecording::Slice* ContextImpl::NewListSlice(BufferImpl* b, bool discarded, bool written) {
+ListRecording::Slice* DeferredContext::NewListSlice(BufferImpl* b, bool discarded, bool written) {
   const VkDeviceSize align = b->IsConstantBuffer() ? dev_->uboAlign() : kDynamicAlign;
   ListRecording& r = *rec_;
   RingAlloc a;
@@ -342,7 +282,7 @@ ListRecording::Slice* ContextImpl::NewListSlice(BufferImpl* b, bool discarded, b
 
 // The buffer's contents in this list so far (null: not yet), through the
 // single-entry cache (one constant buffer per draw is common).
-ListRecording::Slice* ContextImpl::FindListSlice(const BufferImpl* b) {
+ListRecording::Slice* DeferredContext::FindListSlice(const BufferImpl* b) {
   ListRecording& r = *rec_;
   if (r.lastBuffer == b) return r.lastEntry;
   const auto it = r.slices.find(b);
@@ -356,7 +296,7 @@ namespace {
 const RingAlloc kNoSlice{};
 }  // namespace
 
-const RingAlloc& ContextImpl::ListCbRing(BufferImpl* b) {
+const RingAlloc& DeferredContext::CbRing(BufferImpl* b) {
   if (const ListRecording::Slice* e = FindListSlice(b)) return e->ring;
   // Read before written in this list: its contents at execution.
   const ListRecording::Slice* e = NewListSlice(b, false, false);
@@ -365,15 +305,15 @@ const RingAlloc& ContextImpl::ListCbRing(BufferImpl* b) {
   return e->ring;
 }
 
-const RingAlloc& ContextImpl::ListDynRing(const BufferImpl* b) {
+const RingAlloc& DeferredContext::DynRing(const BufferImpl* b) {
   const ListRecording::Slice* e = FindListSlice(b);
   return e ? e->ring : kNoSlice;
 }
 
-HRESULT ContextImpl::MapInList(Resource* resource, UINT sub, MAP type, MAPPED_SUBRESOURCE* mapped) {
+HRESULT DeferredContext::Map(Resource* resource, UINT sub, MAP type, UINT, MAPPED_SUBRESOURCE* mapped) {
   BufferImpl* b = AsBuffer(resource);
   ListRecording::Slice* e = b ? FindListSlice(b) : nullptr;
-  const HRESULT hr = ValidateDeferredMap(*dev_, resource, sub, type, mapped, e && e->discarded);
+  const HRESULT hr = ValidateDeferredMap(*dev_, DescribeResource(resource), sub, type, mapped, e && e->discarded);
   if (mapped) *mapped = {};
   if (FAILED(hr)) return hr;
   if (type == MAP_WRITE_DISCARD && !(e = NewListSlice(b, true, true))) return E_OUTOFMEMORY;
@@ -382,7 +322,7 @@ HRESULT ContextImpl::MapInList(Resource* resource, UINT sub, MAP type, MAPPED_SU
   return S_OK;
 }
 
-void ContextImpl::UnmapInList(Resource* resource) {
+void DeferredContext::Unmap(Resource* resource, UINT) {
   const BufferImpl* b = AsBuffer(resource);
   if (!b) return;
   dirty_ |= b->IsConstantBuffer() ? uint32_t(kConstants) : uint32_t(kVertexBuffers | kIndexBuffer);
@@ -391,7 +331,7 @@ void ContextImpl::UnmapInList(Resource* resource) {
 // A new slice with the whole buffer: the list's latest contents (or the
 // shadow at recording time, for a partial update of a buffer the list did
 // not write yet) under the updated range.
-void ContextImpl::UpdateConstantsInList(BufferImpl* b, const BOX* box, const void* data) {
+void DeferredContext::UpdateConstantsInList(BufferImpl* b, const BOX* box, const void* data) {
   const ListRecording::Slice* prior = FindListSlice(b);
   const uint8_t* base = prior ? prior->ring.ptr : b->shadow();
   const UINT lo = box ? box->left : 0, hi = box ? box->right : b->size();

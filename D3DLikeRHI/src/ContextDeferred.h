@@ -15,6 +15,7 @@ namespace d3dl::impl {
 class DeferredContext final : public ContextImpl {
  public:
   explicit DeferredContext(DeviceImpl* dev);
+  ~DeferredContext() override;
   UINT AddRef() override { return ++refs_; }
   UINT Release() override;
   DEVICE_CONTEXT_TYPE GetType() override { return DEVICE_CONTEXT_DEFERRED; }
@@ -24,6 +25,10 @@ class DeferredContext final : public ContextImpl {
   void Unmap(Resource* resource, UINT subresource) override;
   void UpdateSubresource(Resource* dst, UINT dstSubresource, const BOX* dstBox, const void* srcData,
                          UINT srcRowPitch, UINT srcDepthPitch) override;
+  // Ends the list being recorded and begins the next one.
+  HRESULT FinishCommandList(BOOL restoreDeferredContextState, CommandList** commandList) override;
+  // Run only on the immediate context by this port (logged).
+  void ExecuteCommandList(CommandList* commandList, BOOL restoreContextState) override;
 
   // Forbidden by D3D11 on a deferred context.
   void Flush() override { Reject("Flush", false); }
@@ -45,24 +50,41 @@ class DeferredContext final : public ContextImpl {
 
  protected:
   // Into the list (ContextDeferred.cpp).
-  void UseTexture(TextureCore* t, const SubresourceRange& range, const Usage& u) override {
-    UseTextureInList(t, range, u);
-  }
-  void UseBuffer(VkBuffer buf, SyncState& s, const Usage& u) override { UseBufferInList(buf, s, u); }
-  void NoteUse(GpuUse& u, bool write) override { NoteUseInList(u, write); }
-  void Hold(Unknown* object) override { RetainInList(object); }
-  void HoldDrawState(bool indexed) override { RetainDrawState(indexed); }
-  void HoldComputeState() override { RetainComputeState(); }
+  void UseTexture(TextureCore* t, const SubresourceRange& range, const Usage& u) override;
+  void UseBuffer(VkBuffer buf, SyncState& s, const Usage& u) override;
+  void NoteUse(GpuUse& u, bool write) override;
+  void Hold(Unknown* object) override;
+  void HoldDrawState(bool indexed) override;
+  void HoldComputeState() override;
   DescriptorPools SetPools() override { return {rec_->descPools, rec_->descPoolCurrent, false}; }
   VkPipelineLayout BindingLayout(const ProgramLayout& p) override {
     return dev_->pipelines().ListLayout(p, listLayoutIndex_);
   }
+  const RingAlloc& CbRing(BufferImpl* b) override;
+  const RingAlloc& DynRing(const BufferImpl* b) override;
 
  private:
   // Logs that `fn` is forbidden here (as in D3D11), or not supported here by
   // this port (`portLimit`).
   void Reject(const char* fn, bool portLimit);
+  void BeginRecording();
+  // The list's synchronisation entries (its own view of resource states).
+  ListSyncEntry& ListEntry(SyncState* global, const Usage& u, bool* first);
+  uint32_t ListImageEntries(TextureCore* t, TextureImage& img);
+  // Buffer contents written or read by the list, in its own ring.
+  ListRecording::Slice* NewListSlice(BufferImpl* b, bool discarded, bool written);
+  ListRecording::Slice* FindListSlice(const BufferImpl* b);
+  void UpdateConstantsInList(BufferImpl* b, const BOX* box, const void* data);
+  template <class T>
+  void Retain(T* object);
+
   std::atomic<UINT> refs_{1};
+  // Binds descriptor sets with twin pipeline layout number this
+  // (ProgramLayout::listLayouts), so that contexts recording at once do not
+  // share one reference count in the driver.
+  const uint32_t listLayoutIndex_;
+  std::shared_ptr<ListRecycler> recycler_;  // this context's recordings for reuse (ListRecycler.cpp)
+  std::unique_ptr<ListRecording> rec_;      // the list being recorded (cmd_ is its secondary buffer)
 };
 
 }  // namespace d3dl::impl

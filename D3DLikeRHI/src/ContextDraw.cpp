@@ -165,8 +165,7 @@ bool ContextImpl::CommitSlow(bool indexed) {
     if (!program_) return ErrorOnce(OnceError::ProgramLayoutFailed), false;
     dirty_ |= kDescriptors | kConstants;
   }
-  if (program_->HasUavs() && !dev_->features().fragmentStores) return ErrorOnce(OnceError::NoFragmentStores), false;
-  if (program_->HasUavs() && !UavsBound(*program_, ShaderStage::Pixel)) return ErrorOnce(OnceError::UnboundUav), false;
+  if (program_->HasUavs() && !CheckUavs(*program_, ShaderStage::Pixel)) return false;
   UseDrawResources(indexed);
   HoldDrawState(indexed);
   if (HasPendingBarriers()) FlushBarriers();
@@ -255,7 +254,6 @@ void ContextImpl::BindVertexBuffers(VkCommandBuffer cmd) {
     VkDeviceSize off = 0, stride = v.stride;
     if (b && b->storage() == Storage::Ring) {
       const RingAlloc& ring = DynRing(b);
-      if (!rec_ && !b->RingFromFrame(dev_->CurrentSerial()) && ring.buffer) ErrorOnce(OnceError::StaleDynamicBuffer);
       if (ring.buffer) {
         buf = ring.buffer;
         off = ring.offset + v.offset;
@@ -275,9 +273,13 @@ void ContextImpl::BindVertexBuffers(VkCommandBuffer cmd) {
 bool ContextImpl::BindIndexBuffer(VkCommandBuffer cmd) {
   const InputAssemblerState& ia = state_.ia;
   const BufferImpl* ib = ia.indexBuffer.Get();
-  const bool ring = ib->storage() == Storage::Ring;
-  VkBuffer buf = ring ? DynRing(ib).buffer : ib->vkBuffer();
-  VkDeviceSize off = (ring ? DynRing(ib).offset : 0) + ia.indexOffset;
+  VkBuffer buf = ib->vkBuffer();
+  VkDeviceSize off = ia.indexOffset;
+  if (ib->storage() == Storage::Ring) {
+    const RingAlloc& ring = DynRing(ib);
+    buf = ring.buffer;
+    off += ring.offset;
+  }
   if (!buf) return ErrorOnce(OnceError::IndexBufferNeverMapped), false;
   vkCmdBindIndexBuffer(cmd, buf, off, ia.indexType);
   return true;
@@ -364,7 +366,7 @@ bool ContextImpl::WriteSet(const ProgramLayout& p, BoundDescriptors& d) {
     writes[nw++].pImageInfo = &imgInfo[ni++];
   }
   // Buffer SRVs (dummy when unbound) and UAVs
-  // (bound with the right kind: UavsBound checked it).
+  // (bound with the right kind: CheckUavs checked it).
   for (const auto& s : p.bufferSrvs) {
     const SRVImpl* v = Stage(s.stage).shaderResources[s.slot].Get();
     const bool buffer = v && v->v.buf;

@@ -9,18 +9,13 @@ constexpr uint32_t kTimestampsPerFrame = 1024;
 constexpr uint32_t kSetsPerPool = 512;
 }  // namespace
 
-ContextImpl::ContextImpl(DeviceImpl* dev, bool deferred)
-    : dev_(dev), deferred_(deferred), listLayoutIndex_(deferred ? dev->NextDeferredContextIndex() : 0) {
-  CreateDefaultStates();
-}
+ContextImpl::ContextImpl(DeviceImpl* dev) : dev_(dev) { CreateDefaultStates(); }
 
 ContextImpl::~ContextImpl() {
   if (activeStatistics_) activeStatistics_->Release();
   SaveDiscardedConstants();
   ClearState();
   defaults_ = {};
-  if (rec_) DestroyRecording(dev_, *rec_);  // an unfinished list, never submitted
-  if (recycler_) recycler_->Close();         // its lists may outlive it: they destroy theirs
   DestroyCommandFrames();
 }
 

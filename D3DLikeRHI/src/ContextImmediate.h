@@ -15,6 +15,12 @@ class ImmediateContext final : public ContextImpl {
   UINT Release() override { return dev_->Release(); }
   DEVICE_CONTEXT_TYPE GetType() override { return DEVICE_CONTEXT_IMMEDIATE; }
 
+  // Only a deferred context records command lists (logged).
+  HRESULT FinishCommandList(BOOL restoreDeferredContextState, CommandList** commandList) override;
+  // ContextImmediate.cpp: brings each resource into the list's entry state,
+  // executes its secondary buffer and makes its exit state current.
+  void ExecuteCommandList(CommandList* commandList, BOOL restoreContextState) override;
+
  protected:
   // Barriers.cpp: against the resources' global state.
   void UseTexture(TextureCore* t, const SubresourceRange& range, const Usage& u) override;
@@ -30,6 +36,15 @@ class ImmediateContext final : public ContextImpl {
     return {f.descPools, f.descPoolCurrent, true};
   }
   VkPipelineLayout BindingLayout(const ProgramLayout& p) override { return p.layout; }
+  const RingAlloc& CbRing(BufferImpl* b) override {
+    b->EnsureUploaded();
+    return b->ring();
+  }
+  const RingAlloc& DynRing(const BufferImpl* b) override;
+
+ private:
+  void CopyImports(CommandListImpl& list);
+  void ExportConstants(ListRecording& rec);
 };
 
 }  // namespace d3dl::impl

@@ -63,7 +63,7 @@ HRESULT ContextImpl::Map(Resource* resource, UINT sub, MAP type, UINT flags, MAP
     BufferImpl* b = AsBuffer(resource);
     if (b && b->storage() == Storage::DynamicConstants) return MapDiscardConstants(b, mapped);
   }
-  const HRESULT valid = ValidateMap(*dev_, resource, sub, type, mapped);
+  const HRESULT valid = ValidateMap(*dev_, DescribeResource(resource), sub, type, mapped);
   if (resource && mapped) *mapped = {};
   if (FAILED(valid)) return valid;
   if (BufferImpl* b = AsBuffer(resource)) return MapBuffer(b, type, flags, mapped);
@@ -173,7 +173,7 @@ void ContextImpl::CopyFromRing(TextureCore* t, const SubIndex& si, const RingAll
 // ---------------------------------------------------------------------------
 void ContextImpl::UpdateSubresource(Resource* dst, UINT sub, const BOX* box, const void* data, UINT rowPitch, UINT) {
   BOX region;
-  if (!ValidateUpdateSubresource(*dev_, dst, sub, box, data, rowPitch, &region)) return;
+  if (!ValidateUpdateSubresource(*dev_, DescribeResource(dst), sub, box, data, rowPitch, &region)) return;
   if (BufferImpl* b = AsBuffer(dst)) return UpdateBuffer(b, region.left, region.right, data);
   UpdateTexture(AsTexture(dst), sub, region, data, rowPitch);
 }

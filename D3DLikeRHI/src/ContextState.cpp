@@ -43,7 +43,8 @@ void ContextImpl::IASetVertexBuffers(UINT start, UINT num, Buffer* const* buffer
   bool changed = false;  // re-binding the bound buffers leaves the draw on its fast path
   for (UINT i = 0; i < num; ++i) {
     auto& v = state_.ia.vertexBuffers[start + i];
-    BufferImpl* b = CheckedVertexBuffer(*dev_, buffers ? buffers[i] : nullptr, start + i);
+    auto* b = static_cast<BufferImpl*>(buffers ? buffers[i] : nullptr);
+    if (!ValidateVertexBuffer(*dev_, b ? &b->desc() : nullptr, start + i)) b = nullptr;
     const UINT stride = strides ? strides[i] : 0, offset = offsets ? offsets[i] : 0;
     if (v.buffer.Get() == b && v.stride == stride && v.offset == offset) continue;
     Assign(v.buffer, b);
@@ -55,7 +56,8 @@ void ContextImpl::IASetVertexBuffers(UINT start, UINT num, Buffer* const* buffer
 }
 
 void ContextImpl::IASetIndexBuffer(Buffer* buffer, DXGI_FORMAT format, UINT offset) {
-  BufferImpl* b = CheckedIndexBuffer(*dev_, buffer, format);
+  auto* b = static_cast<BufferImpl*>(buffer);
+  if (!ValidateIndexBuffer(*dev_, b ? &b->desc() : nullptr, format)) b = nullptr;
   const VkIndexType type = format == DXGI_FORMAT_R32_UINT ? VK_INDEX_TYPE_UINT32 : VK_INDEX_TYPE_UINT16;
   InputAssemblerState& ia = state_.ia;
   if (ia.indexBuffer.Get() == b && ia.indexType == type && ia.indexOffset == offset) return;
@@ -93,7 +95,8 @@ void ContextImpl::SetCBs(ShaderStage stage, UINT start, UINT num, Buffer* const*
   auto& slots = Stage(stage).constantBuffers;
   bool changed = false;
   for (UINT i = 0; i < num; ++i) {
-    BufferImpl* b = CheckedConstantBuffer(*dev_, stage, buffers ? buffers[i] : nullptr, start + i);
+    auto* b = static_cast<BufferImpl*>(buffers ? buffers[i] : nullptr);
+    if (!ValidateConstantBuffer(*dev_, stage, b ? &b->desc() : nullptr, start + i)) b = nullptr;
     changed = changed || slots[start + i].Get() != b;
     Assign(slots[start + i], b);
   }

@@ -7,6 +7,7 @@
 #include "PipelineCache.h"
 #include "Queue.h"
 #include "Resources.h"
+#include "ValidationDevice.h"
 
 namespace d3dl::impl {
 
@@ -46,7 +47,7 @@ struct DebugUtils {
   PFN_vkSetDebugUtilsObjectNameEXT setObjectName = nullptr;
 };
 
-class DeviceImpl final : public Device {
+class DeviceImpl final : public Device, public ValidationDevice {
  public:
   DeviceImpl();
   ~DeviceImpl();
@@ -92,8 +93,9 @@ class DeviceImpl final : public Device {
   // Multisampling support (Textures.cpp)
   HRESULT CheckMultisampleQualityLevels(DXGI_FORMAT format, UINT sampleCount, UINT* numQualityLevels) const override;
 
-  // Logging
-  void Log(LogLevel level, const char* fmt, ...) __attribute__((format(printf, 3, 4)));
+  // ValidationDevice (VkDevice.cpp); Log is ValidationDevice's.
+  uint32_t FormatFeatures(DXGI_FORMAT format) const override;
+  UINT SampledSampleCounts(const TEXTURE2D_DESC& desc) const override;  // Textures.cpp
   void OnValidationMessage(const char* msg);
 
   // Memory
@@ -144,6 +146,7 @@ class DeviceImpl final : public Device {
   void LoadDebugUtils(bool validation, const VkDebugUtilsMessengerCreateInfoEXT& mci);
   bool PickAdapter(const DEVICE_CREATE_DESC& desc);
   bool CreateLogicalDevice();
+  void FillValidationCaps();  // DeviceSetup.cpp
   bool EnableFeatures(VkPhysicalDeviceFeatures2* enable, VkPhysicalDeviceVulkan12Features* e12,
                       VkPhysicalDeviceVulkan13Features* e13);
   void FillAdapterDesc(uint32_t timestampBits);
@@ -158,8 +161,6 @@ class DeviceImpl final : public Device {
   std::atomic<UINT> internalRefs_{0};
   bool orphaned_ = false;
   bool shuttingDown_ = false;
-  LogCallback log_ = nullptr;
-  void* logUser_ = nullptr;
 
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;

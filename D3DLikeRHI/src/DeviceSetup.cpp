@@ -209,7 +209,28 @@ bool DeviceImpl::EnableFeatures(VkPhysicalDeviceFeatures2* e2, VkPhysicalDeviceV
     Log(LogLevel::Error, "adapter %s lacks hostQueryReset", props_.deviceName);
     return false;
   }
+  FillValidationCaps();
   return true;
+}
+
+// What the validation layer checks against, from the adapter's limits and
+// the features enabled above.
+void DeviceImpl::FillValidationCaps() {
+  const VkPhysicalDeviceLimits& lim = props_.limits;
+  ValidationCaps& c = caps_;
+  c.maxTexture1D = lim.maxImageDimension1D;
+  c.maxTexture2D = lim.maxImageDimension2D;
+  c.maxArrayLayers = lim.maxImageArrayLayers;
+  c.maxUniformBufferRange = lim.maxUniformBufferRange;
+  c.storageBufferAlign = lim.minStorageBufferOffsetAlignment;
+  for (int i = 0; i < 3; ++i) c.maxDispatch[i] = lim.maxComputeWorkGroupCount[i];
+  c.bc = features_.bc;
+  c.minmax = features_.minmax;
+  c.independentBlend = features_.independentBlend;
+  c.fillNonSolid = features_.fillNonSolid;
+  c.pipelineStatistics = features_.pipelineStatistics;
+  c.cubeArray = features_.cubeArray;
+  std::snprintf(c.adapterName, sizeof(c.adapterName), "%s", props_.deviceName);
 }
 
 bool DeviceImpl::CreateLogicalDevice() {

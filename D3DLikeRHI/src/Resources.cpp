@@ -86,4 +86,34 @@ HRESULT DeviceImpl::CreateBuffer(const BUFFER_DESC* desc, const SUBRESOURCE_DATA
   return S_OK;
 }
 
+ResourceInfo DescribeResource(Resource* r) {
+  ResourceInfo info;
+  if (const BufferImpl* b = AsBuffer(r)) {
+    const BUFFER_DESC& d = b->desc();
+    info.dimension = RESOURCE_DIMENSION_BUFFER;
+    info.byteWidth = d.ByteWidth;
+    info.structureStride = d.StructureByteStride;
+    info.usage = d.Usage;
+    info.bindFlags = d.BindFlags;
+    info.cpuAccessFlags = d.CPUAccessFlags;
+    info.miscFlags = d.MiscFlags;
+  } else if (const TextureCore* t = AsTexture(r)) {
+    const TEXTURE2D_DESC& d = t->desc;
+    info.dimension = t->dim;
+    info.format = d.Format;
+    info.width = d.Width;
+    info.height = d.Height;
+    info.arraySize = d.ArraySize;
+    info.mipLevels = d.MipLevels;
+    info.samples = d.SampleDesc.Count;
+    info.usage = d.Usage;
+    info.bindFlags = d.BindFlags;
+    info.cpuAccessFlags = d.CPUAccessFlags;
+    info.miscFlags = d.MiscFlags;
+    info.depth = (t->aspect & VK_IMAGE_ASPECT_DEPTH_BIT) != 0;
+    info.stencil = (t->aspect & VK_IMAGE_ASPECT_STENCIL_BIT) != 0;
+  }
+  return info;
+}
+
 }  // namespace d3dl::impl

@@ -83,6 +83,10 @@ void ImageFormat(const TEXTURE2D_DESC& d, const FormatInfo& f, VkFormat* format,
 }
 }  // namespace
 
+UINT DeviceImpl::SampledSampleCounts(const TEXTURE2D_DESC& d) const {
+  return ImageSampleCounts(const_cast<DeviceImpl*>(this), d);
+}
+
 VkSampleCountFlags ImageSampleCounts(DeviceImpl* dev, const TEXTURE2D_DESC& d) {
   const FormatInfo* f = GetFormatInfo(d.Format);
   if (!f) return 0;

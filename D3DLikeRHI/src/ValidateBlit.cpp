@@ -11,27 +11,26 @@ bool InBounds(const RECT& r, uint32_t w, uint32_t h) {
          r.top != r.bottom;
 }
 
-bool ValidateBlitTextures(DeviceImpl& dev, const TextureCore* dst, const TextureCore* src) {
-  if (!dst || !src || dst == src) {
+bool ValidateBlitTextures(ValidationDevice& dev, const ResourceInfo& dst, const ResourceInfo& src, bool same) {
+  if (!dst.IsTexture() || !src.IsTexture() || same) {
     dev.Log(LogLevel::Error, "BlitRegion: source and destination must be two different textures");
     return false;
   }
-  if (dst->IsStaging() || src->IsStaging() || dst->aspect != VK_IMAGE_ASPECT_COLOR_BIT ||
-      src->aspect != VK_IMAGE_ASPECT_COLOR_BIT) {
+  if (dst.usage == USAGE_STAGING || src.usage == USAGE_STAGING || dst.depth || src.depth) {
     dev.Log(LogLevel::Error, "BlitRegion: only non-staging colour textures can be blitted");
     return false;
   }
-  if (dst->desc.Usage == USAGE_IMMUTABLE) {
+  if (dst.usage == USAGE_IMMUTABLE) {
     dev.Log(LogLevel::Error, "BlitRegion: the destination is IMMUTABLE");
     return false;
   }
   return true;
 }
 
-bool ValidateBlitRects(DeviceImpl& dev, const TextureCore* dst, const RECT& dstRect, const TextureCore* src,
+bool ValidateBlitRects(ValidationDevice& dev, const ResourceInfo& dst, const RECT& dstRect, const ResourceInfo& src,
                        const RECT& srcRect) {
-  const uint32_t sw = src->MipWidth(0), sh = src->MipHeight(0);
-  const uint32_t dw = dst->MipWidth(0), dh = dst->MipHeight(0);
+  const uint32_t sw = src.MipWidth(0), sh = src.MipHeight(0);
+  const uint32_t dw = dst.MipWidth(0), dh = dst.MipHeight(0);
   if (InBounds(srcRect, sw, sh) && InBounds(dstRect, dw, dh)) return true;
   dev.Log(LogLevel::Error,
           "BlitRegion: rectangle out of bounds or empty (src (%d,%d)-(%d,%d) of %ux%u, dst (%d,%d)-(%d,%d) of %ux%u)",
@@ -40,25 +39,24 @@ bool ValidateBlitRects(DeviceImpl& dev, const TextureCore* dst, const RECT& dstR
   return false;
 }
 
-bool ValidateBlitFormats(DeviceImpl& dev, const TextureCore* dst, const TextureCore* src, bool linear) {
-  VkFormatProperties sp, dp;
-  vkGetPhysicalDeviceFormatProperties(dev.phys(), src->format, &sp);
-  vkGetPhysicalDeviceFormatProperties(dev.phys(), dst->format, &dp);
-  if (!(sp.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_SRC_BIT) ||
-      !(dp.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT)) {
-    dev.Log(LogLevel::Error, "BlitRegion: %s -> %s is not blittable on this device", src->fmt->name, dst->fmt->name);
+bool ValidateBlitFormats(ValidationDevice& dev, const ResourceInfo& dst, const ResourceInfo& src, bool linear) {
+  const uint32_t sf = dev.FormatFeatures(src.format), df = dev.FormatFeatures(dst.format);
+  const char *srcName = FormatName(src.format), *dstName = FormatName(dst.format);
+  if (!(sf & FORMAT_FEATURE_BLIT_SRC) || !(df & FORMAT_FEATURE_BLIT_DST)) {
+    dev.Log(LogLevel::Error, "BlitRegion: %s -> %s is not blittable on this device", srcName, dstName);
     return false;
   }
-  if (linear && !(sp.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT)) {
-    dev.Log(LogLevel::Error, "BlitRegion: format %s cannot be blitted with linear filtering", src->fmt->name);
+  if (linear && !(sf & FORMAT_FEATURE_FILTER_LINEAR)) {
+    dev.Log(LogLevel::Error, "BlitRegion: format %s cannot be blitted with linear filtering", srcName);
     return false;
   }
   // Integer formats blit only into the same kind of integer format, with
   // point filtering (vkCmdBlitImage VUIDs 00229/00230, 00235 ... ).
-  auto isSigned = [](const TextureCore* t) { return std::strstr(t->fmt->name, "SINT") != nullptr; };
-  if (src->fmt->integer != dst->fmt->integer || (src->fmt->integer && (linear || isSigned(src) != isSigned(dst)))) {
+  const bool srcInteger = GetFormatInfo(src.format)->integer, dstInteger = GetFormatInfo(dst.format)->integer;
+  auto isSigned = [](const char* name) { return std::strstr(name, "SINT") != nullptr; };
+  if (srcInteger != dstInteger || (srcInteger && (linear || isSigned(srcName) != isSigned(dstName)))) {
     dev.Log(LogLevel::Error, "BlitRegion: %s -> %s: integer formats blit only to the same kind of integer format, with point filtering",
-            src->fmt->name, dst->fmt->name);
+            srcName, dstName);
     return false;
   }
   return true;
@@ -73,15 +71,13 @@ bool BlitIsLinear(const RECT& dstRect, const RECT& srcRect, FILTER filter) {
   return anisotropic || (magnifies ? (f & 0x04u) != 0 : (f & 0x10u) != 0);
 }
 
-bool ValidateBlitRegion(DeviceImpl& dev, Texture2D* dstTex, const RECT& dstRect, Texture2D* srcTex,
-                        const RECT& srcRect, FILTER filter) {
-  if (!dstTex || !srcTex) {
-    dev.Log(LogLevel::Error, "BlitRegion: %s is null", dstTex ? "pSrc" : "pDst");
+bool ValidateBlitRegion(ValidationDevice& dev, const ResourceInfo& dst, const RECT& dstRect, const ResourceInfo& src,
+                        const RECT& srcRect, FILTER filter, bool same) {
+  if (dst.dimension == RESOURCE_DIMENSION_UNKNOWN || src.dimension == RESOURCE_DIMENSION_UNKNOWN) {
+    dev.Log(LogLevel::Error, "BlitRegion: %s is null", dst.dimension != RESOURCE_DIMENSION_UNKNOWN ? "pSrc" : "pDst");
     return false;
   }
-  const TextureCore* dst = AsTexture(dstTex);
-  const TextureCore* src = AsTexture(srcTex);
-  return ValidateBlitTextures(dev, dst, src) && ValidateBlitRects(dev, dst, dstRect, src, srcRect) &&
+  return ValidateBlitTextures(dev, dst, src, same) && ValidateBlitRects(dev, dst, dstRect, src, srcRect) &&
          ValidateBlitFormats(dev, dst, src, BlitIsLinear(dstRect, srcRect, filter));
 }
 

@@ -9,41 +9,38 @@
 
 namespace d3dl::impl {
 
-bool ValidateSlots(DeviceImpl& dev, const char* stage, const char* fn, UINT start, UINT num, UINT count) {
+bool ValidateSlots(ValidationDevice& dev, const char* stage, const char* fn, UINT start, UINT num, UINT count) {
   if (start < count && num <= count - start) return true;
   dev.Log(LogLevel::Error, "%s%s: slots %u..%u out of range (0..%u)", stage, fn, start, start + num, count - 1);
   return false;
 }
 
-BufferImpl* CheckedVertexBuffer(DeviceImpl& dev, Buffer* buffer, UINT slot) {
-  auto* b = static_cast<BufferImpl*>(buffer);
-  if (!b || b->HasBindFlag(BIND_VERTEX_BUFFER)) return b;
+bool ValidateVertexBuffer(ValidationDevice& dev, const BUFFER_DESC* desc, UINT slot) {
+  if (!desc || (desc->BindFlags & BIND_VERTEX_BUFFER)) return true;
   dev.Log(LogLevel::Error, "IASetVertexBuffers: buffer in slot %u lacks BIND_VERTEX_BUFFER; unbound", slot);
-  return nullptr;
+  return false;
 }
 
-BufferImpl* CheckedConstantBuffer(DeviceImpl& dev, ShaderStage stage, Buffer* buffer, UINT slot) {
-  auto* b = static_cast<BufferImpl*>(buffer);
-  if (!b || b->IsConstantBuffer()) return b;
+bool ValidateConstantBuffer(ValidationDevice& dev, ShaderStage stage, const BUFFER_DESC* desc, UINT slot) {
+  if (!desc || (desc->BindFlags & BIND_CONSTANT_BUFFER)) return true;
   dev.Log(LogLevel::Error, "%sSetConstantBuffers: buffer in slot %u lacks BIND_CONSTANT_BUFFER; unbound",
           StagePrefix(stage), slot);
-  return nullptr;
+  return false;
 }
 
-BufferImpl* CheckedIndexBuffer(DeviceImpl& dev, Buffer* buffer, DXGI_FORMAT format) {
-  auto* b = static_cast<BufferImpl*>(buffer);
-  if (b && !b->HasBindFlag(BIND_INDEX_BUFFER)) {
+bool ValidateIndexBuffer(ValidationDevice& dev, const BUFFER_DESC* desc, DXGI_FORMAT format) {
+  if (desc && !(desc->BindFlags & BIND_INDEX_BUFFER)) {
     dev.Log(LogLevel::Error, "IASetIndexBuffer: buffer lacks BIND_INDEX_BUFFER; unbound");
-    return nullptr;
+    return false;
   }
-  if (b && format != DXGI_FORMAT_R16_UINT && format != DXGI_FORMAT_R32_UINT) {
+  if (desc && format != DXGI_FORMAT_R16_UINT && format != DXGI_FORMAT_R32_UINT) {
     dev.Log(LogLevel::Error, "IASetIndexBuffer: Format %s is not R16_UINT or R32_UINT; unbound", FormatName(format));
-    return nullptr;
+    return false;
   }
-  return b;
+  return true;
 }
 
-bool ValidateViewports(DeviceImpl& dev, UINT num, const VIEWPORT* viewports) {
+bool ValidateViewports(ValidationDevice& dev, UINT num, const VIEWPORT* viewports) {
   if (num && !viewports) {
     dev.Log(LogLevel::Error, "RSSetViewports: pViewports is null");
     return false;
@@ -52,20 +49,20 @@ bool ValidateViewports(DeviceImpl& dev, UINT num, const VIEWPORT* viewports) {
   return true;
 }
 
-bool ValidateScissorRects(DeviceImpl& dev, UINT num, const RECT* rects) {
+bool ValidateScissorRects(ValidationDevice& dev, UINT num, const RECT* rects) {
   if (!num || rects) return true;
   dev.Log(LogLevel::Error, "RSSetScissorRects: pRects is null");
   return false;
 }
 
-bool ValidateRenderTargets(DeviceImpl& dev, UINT num, RenderTargetView* const* rtvs) {
+bool ValidateRenderTargets(ValidationDevice& dev, UINT num, RenderTargetView* const* rtvs) {
   if (num <= SIMULTANEOUS_RENDER_TARGET_COUNT && (!num || rtvs)) return true;
   dev.Log(LogLevel::Error, "OMSetRenderTargets: %u views (at most 8, array required)", num);
   return false;
 }
 
 // D3D11: every bound view has the same sample count (one rasterization rate).
-bool ValidateTargetSamples(DeviceImpl& dev, UINT num, RenderTargetView* const* rtvs, DepthStencilView* dsv) {
+bool ValidateTargetSamples(ValidationDevice& dev, UINT num, RenderTargetView* const* rtvs, DepthStencilView* dsv) {
   uint32_t samples = dsv ? static_cast<DSVImpl*>(dsv)->v.Samples() : 0;
   for (UINT i = 0; i < num; ++i) {
     if (!rtvs[i]) continue;
@@ -80,19 +77,19 @@ bool ValidateTargetSamples(DeviceImpl& dev, UINT num, RenderTargetView* const* r
 }
 
 // ---------------------------------------------------------------------------
-bool ValidateClearRenderTargetView(DeviceImpl& dev, RenderTargetView* rtv, const float color[4]) {
+bool ValidateClearRenderTargetView(ValidationDevice& dev, RenderTargetView* rtv, const float color[4]) {
   if (rtv && color) return true;
   dev.Log(LogLevel::Error, "ClearRenderTargetView: %s is null", rtv ? "ColorRGBA" : "pRenderTargetView");
   return false;
 }
 
-bool ValidateClearDepthStencilView(DeviceImpl& dev, DepthStencilView* dsv) {
+bool ValidateClearDepthStencilView(ValidationDevice& dev, DepthStencilView* dsv) {
   if (dsv) return true;
   dev.Log(LogLevel::Error, "ClearDepthStencilView: pDepthStencilView is null");
   return false;
 }
 
-RTVImpl* ValidateClearView(DeviceImpl& dev, View* view, const float color[4], const RECT* rects, UINT numRects) {
+RTVImpl* ValidateClearView(ValidationDevice& dev, View* view, const float color[4], const RECT* rects, UINT numRects) {
   if (!view || !color || (numRects && !rects)) {
     dev.Log(LogLevel::Error, "ClearView: %s is null", !view ? "pView" : !color ? "Color" : "pRect");
     return nullptr;
@@ -110,106 +107,103 @@ bool CpuAccessAllows(MAP type, UINT cpuAccess) {
   return !(reads && !(cpuAccess & CPU_ACCESS_READ)) && !(type != MAP_READ && !(cpuAccess & CPU_ACCESS_WRITE));
 }
 
-HRESULT ValidateCpuAccess(DeviceImpl& dev, MAP type, UINT cpuAccess) {
+HRESULT ValidateCpuAccess(ValidationDevice& dev, MAP type, UINT cpuAccess) {
   if (CpuAccessAllows(type, cpuAccess)) return S_OK;
   dev.Log(LogLevel::Error, "Map: MapType %u does not match CPUAccessFlags 0x%x", type, cpuAccess);
   return E_INVALIDARG;
 }
 
-HRESULT ValidateMapBuffer(DeviceImpl& dev, const BufferImpl& b, UINT sub, MAP type) {
+HRESULT ValidateMapBuffer(ValidationDevice& dev, const ResourceInfo& b, UINT sub, MAP type) {
   if (sub != 0) {
     dev.Log(LogLevel::Error, "Map: buffers have one subresource (got %u)", sub);
     return E_INVALIDARG;
   }
-  switch (b.storage()) {
-    case Storage::Constants:
-    case Storage::DynamicConstants:
-      if (type != MAP_READ && type != MAP_READ_WRITE && b.storage() == Storage::DynamicConstants) return S_OK;
-      dev.Log(LogLevel::Error, "Map: a constant buffer can be mapped only with WRITE_DISCARD and USAGE_DYNAMIC");
-      return E_INVALIDARG;
-    case Storage::Ring:
-      if (type == MAP_WRITE_DISCARD || type == MAP_WRITE_NO_OVERWRITE) return S_OK;
-      dev.Log(LogLevel::Error, "Map: USAGE_DYNAMIC buffers accept WRITE_DISCARD or WRITE_NO_OVERWRITE only (got %u)", type);
-      return E_INVALIDARG;
-    case Storage::Staging: return ValidateCpuAccess(dev, type, b.desc().CPUAccessFlags);
-    case Storage::DeviceLocal: break;
+  const bool dynamic = b.usage == USAGE_DYNAMIC;
+  if (b.IsConstantBuffer()) {
+    if (type != MAP_READ && type != MAP_READ_WRITE && dynamic) return S_OK;
+    dev.Log(LogLevel::Error, "Map: a constant buffer can be mapped only with WRITE_DISCARD and USAGE_DYNAMIC");
+    return E_INVALIDARG;
   }
+  if (dynamic) {
+    if (type == MAP_WRITE_DISCARD || type == MAP_WRITE_NO_OVERWRITE) return S_OK;
+    dev.Log(LogLevel::Error, "Map: USAGE_DYNAMIC buffers accept WRITE_DISCARD or WRITE_NO_OVERWRITE only (got %u)", type);
+    return E_INVALIDARG;
+  }
+  if (b.usage == USAGE_STAGING) return ValidateCpuAccess(dev, type, b.cpuAccessFlags);
   dev.Log(LogLevel::Error, "Map: only DYNAMIC or STAGING buffers can be mapped");
   return E_INVALIDARG;
 }
 
-HRESULT ValidateMapTexture(DeviceImpl& dev, const TextureCore* t, UINT sub, MAP type) {
-  SubIndex si;
-  if (!t || !t->DecodeSub(sub, &si)) {
+HRESULT ValidateMapTexture(ValidationDevice& dev, const ResourceInfo& t, UINT sub, MAP type) {
+  UINT mip, layer;
+  if (!t.IsTexture() || !t.DecodeSub(sub, &mip, &layer)) {
     dev.Log(LogLevel::Error, "Map: subresource %u out of range", sub);
     return E_INVALIDARG;
   }
-  switch (t->storage) {
-    case Storage::Staging: return ValidateCpuAccess(dev, type, t->desc.CPUAccessFlags);
-    case Storage::Ring:
-      if (type == MAP_WRITE_DISCARD) return S_OK;
-      dev.Log(LogLevel::Error, "Map: DYNAMIC textures accept WRITE_DISCARD only (got %u)", type);
-      return E_INVALIDARG;
-    default: break;
+  if (t.usage == USAGE_STAGING) return ValidateCpuAccess(dev, type, t.cpuAccessFlags);
+  if (t.usage == USAGE_DYNAMIC) {
+    if (type == MAP_WRITE_DISCARD) return S_OK;
+    dev.Log(LogLevel::Error, "Map: DYNAMIC textures accept WRITE_DISCARD only (got %u)", type);
+    return E_INVALIDARG;
   }
   dev.Log(LogLevel::Error, "Map: only DYNAMIC or STAGING textures can be mapped");
   return E_INVALIDARG;
 }
 }  // namespace
 
-HRESULT ValidateMap(DeviceImpl& dev, Resource* resource, UINT sub, MAP type, const MAPPED_SUBRESOURCE* mapped) {
-  if (!resource || !mapped) {
-    dev.Log(LogLevel::Error, "Map: %s is null", resource ? "pMappedResource" : "pResource");
+HRESULT ValidateMap(ValidationDevice& dev, const ResourceInfo& r, UINT sub, MAP type, const MAPPED_SUBRESOURCE* mapped) {
+  if (r.dimension == RESOURCE_DIMENSION_UNKNOWN || !mapped) {
+    dev.Log(LogLevel::Error, "Map: %s is null", r.dimension != RESOURCE_DIMENSION_UNKNOWN ? "pMappedResource" : "pResource");
     return E_INVALIDARG;
   }
   if (type < MAP_READ || type > MAP_WRITE_NO_OVERWRITE) {
     dev.Log(LogLevel::Error, "Map: invalid MapType %u", type);
     return E_INVALIDARG;
   }
-  if (const BufferImpl* b = AsBuffer(resource)) return ValidateMapBuffer(dev, *b, sub, type);
-  return ValidateMapTexture(dev, AsTexture(resource), sub, type);
+  if (r.IsBuffer()) return ValidateMapBuffer(dev, r, sub, type);
+  return ValidateMapTexture(dev, r, sub, type);
 }
 
 // ---------------------------------------------------------------------------
 // UpdateSubresource
 namespace {
-bool ValidateUpdateBuffer(DeviceImpl& dev, const BufferImpl& b, UINT sub, const BOX* box, BOX* region) {
-  const UINT width = b.size();
+bool ValidateUpdateBuffer(ValidationDevice& dev, const ResourceInfo& b, UINT sub, const BOX* box, BOX* region) {
+  const UINT width = b.byteWidth;
   const UINT lo = box ? box->left : 0, hi = box ? box->right : width;
   if (sub != 0 || hi > width || lo > hi) {
     dev.Log(LogLevel::Error, "UpdateSubresource: range [%u, %u) outside the buffer (%u bytes)", lo, hi, width);
     return false;
   }
   if (lo == hi) return false;
-  const USAGE usage = b.desc().Usage;
-  if (usage == USAGE_IMMUTABLE || usage == USAGE_DYNAMIC) {
-    dev.Log(LogLevel::Error, "UpdateSubresource: buffer Usage %u cannot be updated (use Map for DYNAMIC)", usage);
+  if (b.usage == USAGE_IMMUTABLE || b.usage == USAGE_DYNAMIC) {
+    dev.Log(LogLevel::Error, "UpdateSubresource: buffer Usage %u cannot be updated (use Map for DYNAMIC)", b.usage);
     return false;
   }
   *region = BOX{lo, 0, 0, hi, 1, 1};
   return true;
 }
 
-bool ValidateUpdateTexture(DeviceImpl& dev, const TextureCore& t, UINT sub, const BOX* box, UINT rowPitch,
+bool ValidateUpdateTexture(ValidationDevice& dev, const ResourceInfo& t, UINT sub, const BOX* box, UINT rowPitch,
                            BOX* region) {
-  SubIndex si;
-  if (!t.DecodeSub(sub, &si)) {
+  UINT mip, layer;
+  if (!t.DecodeSub(sub, &mip, &layer)) {
     dev.Log(LogLevel::Error, "UpdateSubresource: subresource %u out of range", sub);
     return false;
   }
-  const uint32_t mw = t.MipWidth(si.mip), mh = t.MipHeight(si.mip);
+  const uint32_t mw = t.MipWidth(mip), mh = t.MipHeight(mip);
   const BOX b = box ? *box : BOX{0, 0, 0, mw, mh, 1};
   if (b.right > mw || b.bottom > mh || b.left >= b.right || b.top >= b.bottom) {
     if (box && (b.left >= b.right || b.top >= b.bottom)) return false;  // empty box: no-op, as D3D
     dev.Log(LogLevel::Error, "UpdateSubresource: box (%u,%u)-(%u,%u) outside mip %u (%ux%u)", b.left, b.top, b.right,
-            b.bottom, si.mip, mw, mh);
+            b.bottom, mip, mw, mh);
     return false;
   }
-  if (t.fmt->bc && ((b.left % 4) || (b.top % 4))) {
+  const FormatInfo& f = *GetFormatInfo(t.format);
+  if (f.bc && ((b.left % 4) || (b.top % 4))) {
     dev.Log(LogLevel::Error, "UpdateSubresource: box of a block-compressed texture must be 4-aligned");
     return false;
   }
-  const uint32_t pitch = LinearLayout(*t.fmt, b.right - b.left, b.bottom - b.top).rowPitch;
+  const uint32_t pitch = LinearLayout(f, b.right - b.left, b.bottom - b.top).rowPitch;
   if (rowPitch != 0 && rowPitch < pitch) {
     dev.Log(LogLevel::Error, "UpdateSubresource: SrcRowPitch %u is smaller than a row (%u bytes)", rowPitch, pitch);
     return false;
@@ -219,34 +213,32 @@ bool ValidateUpdateTexture(DeviceImpl& dev, const TextureCore& t, UINT sub, cons
 }
 }  // namespace
 
-bool ValidateUpdateSubresource(DeviceImpl& dev, Resource* dst, UINT sub, const BOX* box, const void* data,
+bool ValidateUpdateSubresource(ValidationDevice& dev, const ResourceInfo& dst, UINT sub, const BOX* box, const void* data,
                                UINT rowPitch, BOX* region) {
-  if (!dst || !data) {
-    dev.Log(LogLevel::Error, "UpdateSubresource: %s is null", dst ? "pSrcData" : "pDstResource");
+  if (dst.dimension == RESOURCE_DIMENSION_UNKNOWN || !data) {
+    dev.Log(LogLevel::Error, "UpdateSubresource: %s is null",
+            dst.dimension != RESOURCE_DIMENSION_UNKNOWN ? "pSrcData" : "pDstResource");
     return false;
   }
-  if (const BufferImpl* b = AsBuffer(dst)) return ValidateUpdateBuffer(dev, *b, sub, box, region);
-  const TextureCore* t = AsTexture(dst);
-  if (!t) return false;
-  if (t->desc.Usage == USAGE_IMMUTABLE || t->desc.Usage == USAGE_DYNAMIC) {
-    dev.Log(LogLevel::Error, "UpdateSubresource: texture Usage %u cannot be updated", t->desc.Usage);
+  if (dst.IsBuffer()) return ValidateUpdateBuffer(dev, dst, sub, box, region);
+  if (dst.usage == USAGE_IMMUTABLE || dst.usage == USAGE_DYNAMIC) {
+    dev.Log(LogLevel::Error, "UpdateSubresource: texture Usage %u cannot be updated", dst.usage);
     return false;
   }
-  return ValidateUpdateTexture(dev, *t, sub, box, rowPitch, region);
+  return ValidateUpdateTexture(dev, dst, sub, box, rowPitch, region);
 }
 
 // ---------------------------------------------------------------------------
 // Copies
 namespace {
-bool ValidateCopyBufferRegion(DeviceImpl& dev, const BufferImpl& dst, UINT dstX, const BufferImpl& src,
+bool ValidateCopyBufferRegion(ValidationDevice& dev, const ResourceInfo& dst, UINT dstX, const ResourceInfo& src,
                               const BOX* box) {
-  const UINT lo = box ? box->left : 0, hi = box ? box->right : src.size();
-  if (lo >= hi || hi > src.size() || dstX + (hi - lo) > dst.size()) {
+  const UINT lo = box ? box->left : 0, hi = box ? box->right : src.byteWidth;
+  if (lo >= hi || hi > src.byteWidth || dstX + (hi - lo) > dst.byteWidth) {
     dev.Log(LogLevel::Error, "CopySubresourceRegion: buffer range [%u, %u) -> %u out of bounds", lo, hi, dstX);
     return false;
   }
-  const bool writable = dst.storage() == Storage::Staging ||
-                        (dst.storage() == Storage::DeviceLocal && dst.desc().Usage != USAGE_IMMUTABLE);
+  const bool writable = !dst.IsConstantBuffer() && dst.usage != USAGE_DYNAMIC && dst.usage != USAGE_IMMUTABLE;
   if (!writable) {
     dev.Log(LogLevel::Error, "CopySubresourceRegion: the destination buffer must be DEFAULT or STAGING (not a constant, dynamic or immutable buffer)");
     return false;
@@ -254,34 +246,36 @@ bool ValidateCopyBufferRegion(DeviceImpl& dev, const BufferImpl& dst, UINT dstX,
   return true;
 }
 
-bool CopyCompatible(const TextureCore& dst, const TextureCore& src) {
-  return dst.fmt->bytes == src.fmt->bytes && dst.fmt->bc == src.fmt->bc &&
-         (dst.IsStaging() || src.IsStaging() || dst.aspect == src.aspect);
+bool CopyCompatible(const ResourceInfo& dst, const ResourceInfo& src) {
+  const FormatInfo &d = *GetFormatInfo(dst.format), &s = *GetFormatInfo(src.format);
+  const bool staging = dst.usage == USAGE_STAGING || src.usage == USAGE_STAGING;
+  return d.bytes == s.bytes && d.bc == s.bc && (staging || (dst.depth == src.depth && dst.stencil == src.stencil));
 }
 }  // namespace
 
-bool ValidateCopyTextureRegion(DeviceImpl& dev, const TextureCore* dst, UINT dstSub, UINT x, UINT y,
-                               const TextureCore* src, UINT srcSub, const BOX* box) {
-  SubIndex ds, ss;
-  if (!dst->DecodeSub(dstSub, &ds) || !src->DecodeSub(srcSub, &ss)) {
+bool ValidateCopyTextureRegion(ValidationDevice& dev, const ResourceInfo& dst, UINT dstSub, UINT x, UINT y,
+                               const ResourceInfo& src, UINT srcSub, const BOX* box) {
+  UINT dm, dl, sm, sl;
+  if (!dst.DecodeSub(dstSub, &dm, &dl) || !src.DecodeSub(srcSub, &sm, &sl)) {
     dev.Log(LogLevel::Error, "CopySubresourceRegion: subresource out of range (dst %u, src %u)", dstSub, srcSub);
     return false;
   }
-  if (!CopyCompatible(*dst, *src)) {
-    dev.Log(LogLevel::Error, "CopySubresourceRegion: formats %s and %s are not copy-compatible", dst->fmt->name, src->fmt->name);
+  if (!CopyCompatible(dst, src)) {
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: formats %s and %s are not copy-compatible", FormatName(dst.format),
+            FormatName(src.format));
     return false;
   }
-  if (dst->desc.SampleDesc.Count != src->desc.SampleDesc.Count) {
+  if (dst.samples != src.samples) {
     dev.Log(LogLevel::Error, "CopySubresourceRegion: sample counts differ (dst %u, src %u); use ResolveSubresource",
-            dst->desc.SampleDesc.Count, src->desc.SampleDesc.Count);
+            dst.samples, src.samples);
     return false;
   }
-  if ((dst->aspect | src->aspect) & VK_IMAGE_ASPECT_STENCIL_BIT) {
+  if (dst.stencil || src.stencil) {
     dev.Log(LogLevel::Error, "CopySubresourceRegion: copies of packed depth-stencil textures are not supported");
     return false;
   }
-  const uint32_t sw = src->MipWidth(ss.mip), sh = src->MipHeight(ss.mip);
-  const uint32_t dw = dst->MipWidth(ds.mip), dh = dst->MipHeight(ds.mip);
+  const uint32_t sw = src.MipWidth(sm), sh = src.MipHeight(sm);
+  const uint32_t dw = dst.MipWidth(dm), dh = dst.MipHeight(dm);
   const BOX b = box ? *box : BOX{0, 0, 0, sw, sh, 1};
   if (b.left >= b.right || b.top >= b.bottom || b.right > sw || b.bottom > sh || x + (b.right - b.left) > dw ||
       y + (b.bottom - b.top) > dh) {
@@ -290,68 +284,65 @@ bool ValidateCopyTextureRegion(DeviceImpl& dev, const TextureCore* dst, UINT dst
             b.left, b.top, b.right, b.bottom, x, y, sw, sh, dw, dh);
     return false;
   }
-  if (dst->IsStaging() && src->IsStaging()) {
+  if (dst.usage == USAGE_STAGING && src.usage == USAGE_STAGING) {
     dev.Log(LogLevel::Error, "CopySubresourceRegion: staging-to-staging copies are not supported");
     return false;
   }
   return true;
 }
 
-bool ValidateCopySubresourceRegion(DeviceImpl& dev, Resource* dst, UINT dstSub, UINT x, UINT y, Resource* src,
-                                   UINT srcSub, const BOX* box) {
-  if (!dst || !src) {
-    dev.Log(LogLevel::Error, "CopySubresourceRegion: %s is null", dst ? "pSrcResource" : "pDstResource");
+bool ValidateCopySubresourceRegion(ValidationDevice& dev, const ResourceInfo& dst, UINT dstSub, UINT x, UINT y,
+                                   const ResourceInfo& src, UINT srcSub, const BOX* box, bool same) {
+  if (dst.dimension == RESOURCE_DIMENSION_UNKNOWN || src.dimension == RESOURCE_DIMENSION_UNKNOWN) {
+    dev.Log(LogLevel::Error, "CopySubresourceRegion: %s is null",
+            dst.dimension != RESOURCE_DIMENSION_UNKNOWN ? "pSrcResource" : "pDstResource");
     return false;
   }
-  if (dst == src && dstSub == srcSub) {
+  if (same && dstSub == srcSub) {
     dev.Log(LogLevel::Error, "CopySubresourceRegion: source and destination are the same subresource");
     return false;
   }
-  const BufferImpl *bd = AsBuffer(dst), *bs = AsBuffer(src);
-  if (bd && bs) {
-    if (!dstSub && !srcSub) return ValidateCopyBufferRegion(dev, *bd, x, *bs, box);
+  if (dst.IsBuffer() && src.IsBuffer()) {
+    if (!dstSub && !srcSub) return ValidateCopyBufferRegion(dev, dst, x, src, box);
     dev.Log(LogLevel::Error, "CopySubresourceRegion: buffers have one subresource");
     return false;
   }
-  const TextureCore *td = AsTexture(dst), *ts = AsTexture(src);
-  if (!td || !ts) {
+  if (!dst.IsTexture() || !src.IsTexture()) {
     dev.Log(LogLevel::Error, "CopySubresourceRegion: cannot copy between a buffer and a texture");
     return false;
   }
-  if (td->desc.Usage == USAGE_IMMUTABLE) {
+  if (dst.usage == USAGE_IMMUTABLE) {
     dev.Log(LogLevel::Error, "CopySubresourceRegion: the destination is IMMUTABLE");
     return false;
   }
-  return ValidateCopyTextureRegion(dev, td, dstSub, x, y, ts, srcSub, box);
+  return ValidateCopyTextureRegion(dev, dst, dstSub, x, y, src, srcSub, box);
 }
 
-bool ValidateCopyResource(DeviceImpl& dev, Resource* dst, Resource* src) {
-  if (!dst || !src || dst == src) {
-    dev.Log(LogLevel::Error, "CopyResource: %s", dst == src && dst ? "source and destination are the same" : "null resource");
+bool ValidateCopyResource(ValidationDevice& dev, const ResourceInfo& d, const ResourceInfo& s, bool same) {
+  const bool null = d.dimension == RESOURCE_DIMENSION_UNKNOWN || s.dimension == RESOURCE_DIMENSION_UNKNOWN;
+  if (null || same) {
+    dev.Log(LogLevel::Error, "CopyResource: %s", !null ? "source and destination are the same" : "null resource");
     return false;
   }
-  const BufferImpl *bd = AsBuffer(dst), *bs = AsBuffer(src);
-  if (bd || bs) {
-    if (bd && bs && bd->size() == bs->size()) return ValidateCopyBufferRegion(dev, *bd, 0, *bs, nullptr);
+  if (d.IsBuffer() || s.IsBuffer()) {
+    if (d.IsBuffer() && s.IsBuffer() && d.byteWidth == s.byteWidth) return ValidateCopyBufferRegion(dev, d, 0, s, nullptr);
     dev.Log(LogLevel::Error, "CopyResource: buffers must have the same size");
     return false;
   }
-  const TextureCore *td = AsTexture(dst), *ts = AsTexture(src);
-  const TEXTURE2D_DESC &d = td->desc, &s = ts->desc;
-  if (td->dim != ts->dim || d.Width != s.Width || d.Height != s.Height || d.MipLevels != s.MipLevels ||
-      d.ArraySize != s.ArraySize) {
+  if (d.dimension != s.dimension || d.width != s.width || d.height != s.height || d.mipLevels != s.mipLevels ||
+      d.arraySize != s.arraySize) {
     dev.Log(LogLevel::Error, "CopyResource: textures differ in size, mips or array size (%ux%u/%u vs %ux%u/%u)",
-            d.Width, d.Height, d.MipLevels, s.Width, s.Height, s.MipLevels);
+            d.width, d.height, d.mipLevels, s.width, s.height, s.mipLevels);
     return false;
   }
-  if (d.Usage == USAGE_IMMUTABLE) {
+  if (d.usage == USAGE_IMMUTABLE) {
     dev.Log(LogLevel::Error, "CopyResource: the destination is IMMUTABLE");
     return false;
   }
   return true;
 }
 
-bool ValidateGenerateMips(DeviceImpl& dev, ShaderResourceView* srv) {
+bool ValidateGenerateMips(ValidationDevice& dev, ShaderResourceView* srv) {
   if (!srv) {
     dev.Log(LogLevel::Error, "GenerateMips: pShaderResourceView is null");
     return false;
@@ -361,11 +352,8 @@ bool ValidateGenerateMips(DeviceImpl& dev, ShaderResourceView* srv) {
     dev.Log(LogLevel::Error, "GenerateMips: the texture was not created with RESOURCE_MISC_GENERATE_MIPS");
     return false;
   }
-  VkFormatProperties fp;
-  vkGetPhysicalDeviceFormatProperties(dev.phys(), t->format, &fp);
-  const VkFormatFeatureFlags need = VK_FORMAT_FEATURE_BLIT_SRC_BIT | VK_FORMAT_FEATURE_BLIT_DST_BIT |
-                                    VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
-  if ((fp.optimalTilingFeatures & need) != need) {
+  const uint32_t need = FORMAT_FEATURE_BLIT_SRC | FORMAT_FEATURE_BLIT_DST | FORMAT_FEATURE_FILTER_LINEAR;
+  if ((dev.FormatFeatures(t->desc.Format) & need) != need) {
     dev.Log(LogLevel::Error, "GenerateMips: format %s cannot be blitted with linear filtering", t->fmt->name);
     return false;
   }
@@ -374,13 +362,13 @@ bool ValidateGenerateMips(DeviceImpl& dev, ShaderResourceView* srv) {
 
 // ---------------------------------------------------------------------------
 // Queries
-bool ValidateBegin(DeviceImpl& dev, const QUERY_DESC& desc) {
+bool ValidateBegin(ValidationDevice& dev, const QUERY_DESC& desc) {
   if (desc.Query == QUERY_TIMESTAMP_DISJOINT || desc.Query == QUERY_PIPELINE_STATISTICS) return true;
   dev.Log(LogLevel::Warning, "Begin: query type %u has no Begin (only End)", desc.Query);
   return false;
 }
 
-bool ValidateGetData(DeviceImpl& dev, const QueryImpl* q, const void* data, UINT size) {
+bool ValidateGetData(ValidationDevice& dev, const QueryImpl* q, const void* data, UINT size) {
   if (!q) {
     dev.Log(LogLevel::Error, "GetData: pAsync is null");
     return false;
@@ -398,7 +386,7 @@ bool ValidateGetData(DeviceImpl& dev, const QueryImpl* q, const void* data, UINT
 
 // ---------------------------------------------------------------------------
 // Tessellation: primitive topologies
-bool ValidateTopology(DeviceImpl& dev, PRIMITIVE_TOPOLOGY t) {
+bool ValidateTopology(ValidationDevice& dev, PRIMITIVE_TOPOLOGY t) {
   if (IsSupportedTopology(t)) return true;
   dev.Log(LogLevel::Error,
           "IASetPrimitiveTopology: topology %u is not supported (1..5: point/line/triangle lists and strips, "
@@ -408,7 +396,7 @@ bool ValidateTopology(DeviceImpl& dev, PRIMITIVE_TOPOLOGY t) {
 }
 
 // Deferred contexts and command lists
-HRESULT ValidateCreateDeferredContext(DeviceImpl& dev, UINT flags, DeviceContext** out) {
+HRESULT ValidateCreateDeferredContext(ValidationDevice& dev, UINT flags, DeviceContext** out) {
   if (!out) {
     dev.Log(LogLevel::Error, "CreateDeferredContext: ppDeferredContext is null");
     return E_INVALIDARG;
@@ -419,7 +407,7 @@ HRESULT ValidateCreateDeferredContext(DeviceImpl& dev, UINT flags, DeviceContext
   return E_INVALIDARG;
 }
 
-HRESULT ValidateFinishCommandList(DeviceImpl& dev, bool deferredContext, CommandList** out) {
+HRESULT ValidateFinishCommandList(ValidationDevice& dev, bool deferredContext, CommandList** out) {
   if (!deferredContext) {
     dev.Log(LogLevel::Error, "FinishCommandList: only a deferred context records command lists");
     return DXGI_ERROR_INVALID_CALL;
@@ -429,7 +417,7 @@ HRESULT ValidateFinishCommandList(DeviceImpl& dev, bool deferredContext, Command
   return E_INVALIDARG;
 }
 
-bool ValidateExecuteCommandList(DeviceImpl& dev, bool deferredContext, CommandList* list) {
+bool ValidateExecuteCommandList(ValidationDevice& dev, bool deferredContext, CommandList* list) {
   if (deferredContext) {
     dev.Log(LogLevel::Error, "ExecuteCommandList: not supported on deferred contexts by this port (execute on the immediate context)");
     return false;
@@ -443,14 +431,13 @@ bool ValidateExecuteCommandList(DeviceImpl& dev, bool deferredContext, CommandLi
   return false;
 }
 
-HRESULT ValidateDeferredMap(DeviceImpl& dev, Resource* resource, UINT sub, MAP type,
+HRESULT ValidateDeferredMap(ValidationDevice& dev, const ResourceInfo& r, UINT sub, MAP type,
                             const MAPPED_SUBRESOURCE* mapped, bool discardedInList) {
-  if (!resource || !mapped) {
-    dev.Log(LogLevel::Error, "Map: %s is null", resource ? "pMappedResource" : "pResource");
+  if (r.dimension == RESOURCE_DIMENSION_UNKNOWN || !mapped) {
+    dev.Log(LogLevel::Error, "Map: %s is null", r.dimension != RESOURCE_DIMENSION_UNKNOWN ? "pMappedResource" : "pResource");
     return E_INVALIDARG;
   }
-  const BufferImpl* b = AsBuffer(resource);
-  if (!b) {
+  if (!r.IsBuffer()) {
     dev.Log(LogLevel::Error, "Map: textures cannot be mapped on deferred contexts by this port");
     return E_NOTIMPL;
   }
@@ -458,7 +445,7 @@ HRESULT ValidateDeferredMap(DeviceImpl& dev, Resource* resource, UINT sub, MAP t
     dev.Log(LogLevel::Error, "Map: buffers have one subresource (got %u)", sub);
     return E_INVALIDARG;
   }
-  if (b->storage() != Storage::DynamicConstants && b->storage() != Storage::Ring) {
+  if (r.usage != USAGE_DYNAMIC) {
     dev.Log(LogLevel::Error, "Map: a deferred context maps USAGE_DYNAMIC buffers only");
     return E_INVALIDARG;
   }
@@ -469,23 +456,22 @@ HRESULT ValidateDeferredMap(DeviceImpl& dev, Resource* resource, UINT sub, MAP t
   return E_INVALIDARG;
 }
 
-bool ValidateDeferredUpdate(DeviceImpl& dev, Resource* dst) {
-  const BufferImpl* b = AsBuffer(dst);
-  if (b && b->IsConstantBuffer()) return true;
+bool ValidateDeferredUpdate(ValidationDevice& dev, const ResourceInfo& dst) {
+  if (dst.IsConstantBuffer()) return true;
   dev.Log(LogLevel::Error, "UpdateSubresource: on deferred contexts this port updates constant buffers only");
   return false;
 }
 
 // UAV binding and dispatch arguments
-UAVImpl* CheckedUav(DeviceImpl& dev, const char* fn, UnorderedAccessView* uav, UINT slot) {
+UAVImpl* CheckedUav(ValidationDevice& dev, const char* fn, UnorderedAccessView* uav, UINT slot) {
   auto* v = static_cast<UAVImpl*>(uav);
   if (!v || v->v.tex || v->v.buf) return v;
   dev.Log(LogLevel::Error, "%s: slot %u: not an unordered access view; unbound", fn, slot);
   return nullptr;
 }
 
-bool ValidateDispatch(DeviceImpl& dev, UINT x, UINT y, UINT z) {
-  const uint32_t* lim = dev.props().limits.maxComputeWorkGroupCount;
+bool ValidateDispatch(ValidationDevice& dev, UINT x, UINT y, UINT z) {
+  const uint32_t* lim = dev.caps().maxDispatch;
   const UINT d3dMax = 65535;  // D3D11_CS_DISPATCH_MAX_THREAD_GROUPS_PER_DIMENSION
   if (x <= std::min(d3dMax, lim[0]) && y <= std::min(d3dMax, lim[1]) && z <= std::min(d3dMax, lim[2])) return true;
   dev.Log(LogLevel::Error, "Dispatch: %u x %u x %u thread groups; at most 65535 per dimension (adapter: %u x %u x %u)",
@@ -493,7 +479,7 @@ bool ValidateDispatch(DeviceImpl& dev, UINT x, UINT y, UINT z) {
   return false;
 }
 
-bool ValidateDispatchIndirect(DeviceImpl& dev, Buffer* args, UINT offset) {
+bool ValidateDispatchIndirect(ValidationDevice& dev, Buffer* args, UINT offset) {
   const BufferImpl* b = static_cast<BufferImpl*>(args);
   if (!b) {
     dev.Log(LogLevel::Error, "DispatchIndirect: pBufferForArgs is null");
@@ -508,7 +494,7 @@ bool ValidateDispatchIndirect(DeviceImpl& dev, Buffer* args, UINT offset) {
   return false;
 }
 
-UAVImpl* ValidateClearUav(DeviceImpl& dev, UnorderedAccessView* uav, const void* values, bool isFloat) {
+UAVImpl* ValidateClearUav(ValidationDevice& dev, UnorderedAccessView* uav, const void* values, bool isFloat) {
   const char* fn = isFloat ? "ClearUnorderedAccessViewFloat" : "ClearUnorderedAccessViewUint";
   auto* v = static_cast<UAVImpl*>(uav);
   if (!v || !values) {
@@ -521,14 +507,14 @@ UAVImpl* ValidateClearUav(DeviceImpl& dev, UnorderedAccessView* uav, const void*
             f ? f->name : "raw and structured buffers");
     return nullptr;
   }
-  if (f && !isFloat && !UavClearBitsSupported(v->v.format)) {
+  if (f && !isFloat && !UavClearBitsSupported(v->v.dxgiFormat)) {
     dev.Log(LogLevel::Error, "%s: bit-exact clears of %s are not supported", fn, f->name);
     return nullptr;
   }
   return v;
 }
 
-bool ValidateOMUavs(DeviceImpl& dev, UINT numRTVs, UINT uavStart, UINT numUAVs) {
+bool ValidateOMUavs(ValidationDevice& dev, UINT numRTVs, UINT uavStart, UINT numUAVs) {
   const char* fn = "OMSetRenderTargetsAndUnorderedAccessViews";
   if (numUAVs == KEEP_UNORDERED_ACCESS_VIEWS) return true;
   if (uavStart > kMaxUnorderedAccessSlots || numUAVs > kMaxUnorderedAccessSlots - uavStart) {

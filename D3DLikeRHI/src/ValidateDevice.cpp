@@ -17,7 +17,10 @@ uint32_t FullMipCount(uint32_t w, uint32_t h) {
   return m;
 }
 bool ValidCompare(COMPARISON_FUNC f) { return f >= COMPARISON_NEVER && f <= COMPARISON_ALWAYS; }
-bool ValidBlend(BLEND b) { return ToVkBlendFactor(b) != VK_BLEND_FACTOR_MAX_ENUM; }
+bool ValidBlend(BLEND b) {
+  return (b >= BLEND_ZERO && b <= BLEND_SRC_ALPHA_SAT) || b == BLEND_BLEND_FACTOR || b == BLEND_INV_BLEND_FACTOR;
+}
+bool ValidAddress(TEXTURE_ADDRESS_MODE m) { return m >= TEXTURE_ADDRESS_WRAP && m <= TEXTURE_ADDRESS_MIRROR_ONCE; }
 bool ValidBlendOp(BLEND_OP o) { return o >= BLEND_OP_ADD && o <= BLEND_OP_MAX; }
 bool ValidStencilOp(STENCIL_OP o) { return o >= STENCIL_OP_KEEP && o <= STENCIL_OP_DECR; }
 bool ValidStencilFace(const DEPTH_STENCILOP_DESC& f) {
@@ -26,7 +29,7 @@ bool ValidStencilFace(const DEPTH_STENCILOP_DESC& f) {
 }
 }  // namespace
 
-bool ValidatePointers(DeviceImpl& dev, const char* fn, const void* desc, const char* descName, const void* out,
+bool ValidatePointers(ValidationDevice& dev, const char* fn, const void* desc, const char* descName, const void* out,
                       const char* outName) {
   if (desc && out) return true;
   dev.Log(LogLevel::Error, "%s: %s is null", fn, desc ? outName : descName);
@@ -38,7 +41,7 @@ bool ValidatePointers(DeviceImpl& dev, const char* fn, const void* desc, const c
 namespace {
 // SRV/UAV buffers are structured or raw (typed
 // buffer views are not supported), DEFAULT or IMMUTABLE (no UAV).
-HRESULT ValidateBufferViewFlags(DeviceImpl& dev, const BUFFER_DESC& d) {
+HRESULT ValidateBufferViewFlags(ValidationDevice& dev, const BUFFER_DESC& d) {
   const bool structured = d.MiscFlags & RESOURCE_MISC_BUFFER_STRUCTURED;
   const bool raw = d.MiscFlags & RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS;
   const bool views = d.BindFlags & (BIND_SHADER_RESOURCE | BIND_UNORDERED_ACCESS);
@@ -65,7 +68,7 @@ HRESULT ValidateBufferViewFlags(DeviceImpl& dev, const BUFFER_DESC& d) {
   return E_INVALIDARG;
 }
 
-HRESULT ValidateBufferBinding(DeviceImpl& dev, const BUFFER_DESC& d) {
+HRESULT ValidateBufferBinding(ValidationDevice& dev, const BUFFER_DESC& d) {
   if (d.BindFlags & (BIND_RENDER_TARGET | BIND_DEPTH_STENCIL)) {
     dev.Log(LogLevel::Error, "CreateBuffer: BindFlags 0x%x: buffer render-target/depth views are not supported", d.BindFlags);
     return E_INVALIDARG;
@@ -77,14 +80,14 @@ HRESULT ValidateBufferBinding(DeviceImpl& dev, const BUFFER_DESC& d) {
     dev.Log(LogLevel::Error, "CreateBuffer: BIND_CONSTANT_BUFFER cannot be combined with other bind flags (0x%x)", d.BindFlags);
     return E_INVALIDARG;
   }
-  if (isCB && (d.ByteWidth % 16 != 0 || d.ByteWidth > 65536 || d.ByteWidth > dev.props().limits.maxUniformBufferRange)) {
+  if (isCB && (d.ByteWidth % 16 != 0 || d.ByteWidth > 65536 || d.ByteWidth > dev.caps().maxUniformBufferRange)) {
     dev.Log(LogLevel::Error, "CreateBuffer: constant buffer ByteWidth %u must be a multiple of 16 and <= 65536", d.ByteWidth);
     return E_INVALIDARG;
   }
   return S_OK;
 }
 
-HRESULT ValidateBufferUsage(DeviceImpl& dev, const BUFFER_DESC& d, const SUBRESOURCE_DATA* init) {
+HRESULT ValidateBufferUsage(ValidationDevice& dev, const BUFFER_DESC& d, const SUBRESOURCE_DATA* init) {
   if (d.Usage > USAGE_STAGING) {
     dev.Log(LogLevel::Error, "CreateBuffer: invalid Usage %u", d.Usage);
     return E_INVALIDARG;
@@ -109,7 +112,7 @@ HRESULT ValidateBufferUsage(DeviceImpl& dev, const BUFFER_DESC& d, const SUBRESO
 }
 }  // namespace
 
-HRESULT ValidateCreateBuffer(DeviceImpl& dev, const BUFFER_DESC* desc, const SUBRESOURCE_DATA* init, Buffer** out) {
+HRESULT ValidateCreateBuffer(ValidationDevice& dev, const BUFFER_DESC* desc, const SUBRESOURCE_DATA* init, Buffer** out) {
   if (!ValidatePointers(dev, "CreateBuffer", desc, "pDesc", out, "ppBuffer")) return E_INVALIDARG;
   const BUFFER_DESC& d = *desc;
   if (d.ByteWidth == 0) {
@@ -135,14 +138,14 @@ HRESULT ValidateCreateBuffer(DeviceImpl& dev, const BUFFER_DESC* desc, const SUB
 // ---------------------------------------------------------------------------
 // Textures
 namespace {
-HRESULT ValidateTextureShape(DeviceImpl& dev, const char* fn, bool is1D, TEXTURE2D_DESC& d) {
-  const auto& lim = dev.props().limits;
-  const uint32_t maxDim = is1D ? lim.maxImageDimension1D : lim.maxImageDimension2D;
+HRESULT ValidateTextureShape(ValidationDevice& dev, const char* fn, bool is1D, TEXTURE2D_DESC& d) {
+  const ValidationCaps& caps = dev.caps();
+  const uint32_t maxDim = is1D ? caps.maxTexture1D : caps.maxTexture2D;
   if (d.Width == 0 || d.Height == 0 || d.Width > maxDim || d.Height > maxDim) {
     dev.Log(LogLevel::Error, "%s: size %ux%u is invalid (1..%u)", fn, d.Width, d.Height, maxDim);
     return E_INVALIDARG;
   }
-  if (d.ArraySize == 0 || d.ArraySize > lim.maxImageArrayLayers) {
+  if (d.ArraySize == 0 || d.ArraySize > caps.maxArrayLayers) {
     dev.Log(LogLevel::Error, "%s: ArraySize %u is invalid", fn, d.ArraySize);
     return E_INVALIDARG;
   }
@@ -151,7 +154,7 @@ HRESULT ValidateTextureShape(DeviceImpl& dev, const char* fn, bool is1D, TEXTURE
     dev.Log(LogLevel::Error, "%s: Format %u (%s) is not supported", fn, d.Format, FormatName(d.Format));
     return E_INVALIDARG;
   }
-  if (f->bc && !dev.features().bc) {
+  if (f->bc && !caps.bc) {
     dev.Log(LogLevel::Error, "%s: Format %s: the adapter has no BC support", fn, f->name);
     return DXGI_ERROR_UNSUPPORTED;
   }
@@ -168,7 +171,7 @@ HRESULT ValidateTextureShape(DeviceImpl& dev, const char* fn, bool is1D, TEXTURE
   return S_OK;
 }
 
-HRESULT ValidateTextureUsage(DeviceImpl& dev, const char* fn, const TEXTURE2D_DESC& d) {
+HRESULT ValidateTextureUsage(ValidationDevice& dev, const char* fn, const TEXTURE2D_DESC& d) {
   if (d.Usage > USAGE_STAGING) {
     dev.Log(LogLevel::Error, "%s: invalid Usage %u", fn, d.Usage);
     return E_INVALIDARG;
@@ -194,7 +197,7 @@ HRESULT ValidateTextureUsage(DeviceImpl& dev, const char* fn, const TEXTURE2D_DE
   return S_OK;
 }
 
-HRESULT ValidateTextureBinding(DeviceImpl& dev, const char* fn, const TEXTURE2D_DESC& d) {
+HRESULT ValidateTextureBinding(ValidationDevice& dev, const char* fn, const TEXTURE2D_DESC& d) {
   const FormatInfo* f = GetFormatInfo(d.Format);
   if (d.BindFlags & (BIND_VERTEX_BUFFER | BIND_INDEX_BUFFER | BIND_CONSTANT_BUFFER)) {
     dev.Log(LogLevel::Error, "%s: BindFlags 0x%x include buffer bindings", fn, d.BindFlags);
@@ -233,7 +236,7 @@ HRESULT ValidateTextureBinding(DeviceImpl& dev, const char* fn, const TEXTURE2D_
 }
 
 // One entry per subresource with data; rows at least as long as the mip's.
-HRESULT ValidateInitialData(DeviceImpl& dev, const char* fn, const TEXTURE2D_DESC& d, const SUBRESOURCE_DATA* init) {
+HRESULT ValidateInitialData(ValidationDevice& dev, const char* fn, const TEXTURE2D_DESC& d, const SUBRESOURCE_DATA* init) {
   if (d.Usage == USAGE_IMMUTABLE && !init) {
     dev.Log(LogLevel::Error, "%s: USAGE_IMMUTABLE needs initial data", fn);
     return E_INVALIDARG;
@@ -261,7 +264,7 @@ HRESULT ValidateInitialData(DeviceImpl& dev, const char* fn, const TEXTURE2D_DES
 }  // namespace
 
 // ---- Cube maps and multisampled textures.
-static HRESULT ValidateCubeDesc(DeviceImpl& dev, const char* fn, bool is1D, const TEXTURE2D_DESC& d) {
+static HRESULT ValidateCubeDesc(ValidationDevice& dev, const char* fn, bool is1D, const TEXTURE2D_DESC& d) {
   if (!(d.MiscFlags & RESOURCE_MISC_TEXTURECUBE)) return S_OK;
   if (is1D || d.ArraySize == 0 || d.ArraySize % 6 != 0 || d.Width != d.Height || d.SampleDesc.Count != 1) {
     dev.Log(LogLevel::Error, "%s: RESOURCE_MISC_TEXTURECUBE needs a square single-sampled Texture2D with ArraySize 6*n (got %ux%u, ArraySize %u, SampleDesc.Count %u)",
@@ -271,7 +274,7 @@ static HRESULT ValidateCubeDesc(DeviceImpl& dev, const char* fn, bool is1D, cons
   return S_OK;
 }
 
-static HRESULT ValidateMultisampleDesc(DeviceImpl& dev, const char* fn, bool is1D, const TEXTURE2D_DESC& d,
+static HRESULT ValidateMultisampleDesc(ValidationDevice& dev, const char* fn, bool is1D, const TEXTURE2D_DESC& d,
                                 const SUBRESOURCE_DATA* init) {
   const UINT n = d.SampleDesc.Count;
   const char* problem = nullptr;
@@ -291,13 +294,13 @@ static HRESULT ValidateMultisampleDesc(DeviceImpl& dev, const char* fn, bool is1
   else if (d.MiscFlags & RESOURCE_MISC_GENERATE_MIPS) problem = "RESOURCE_MISC_GENERATE_MIPS is not allowed";
   else if (FAILED(dev.CheckMultisampleQualityLevels(d.Format, n, &levels)) || levels == 0) problem = "not supported for this format on this adapter (CheckMultisampleQualityLevels)";
   else if (d.SampleDesc.Quality >= levels && !standard) problem = "Quality must be 0 or STANDARD_MULTISAMPLE_PATTERN";
-  else if ((d.BindFlags & BIND_SHADER_RESOURCE) && !(ImageSampleCounts(&dev, d) & n)) problem = "cannot be sampled (TEXTURE2DMS) with this format on this adapter";
+  else if ((d.BindFlags & BIND_SHADER_RESOURCE) && !(dev.SampledSampleCounts(d) & n)) problem = "cannot be sampled (TEXTURE2DMS) with this format on this adapter";
   if (!problem) return S_OK;
   dev.Log(LogLevel::Error, "%s: SampleDesc.Count %u (%s, MipLevels %u): %s", fn, n, FormatName(d.Format), d.MipLevels, problem);
   return E_INVALIDARG;
 }
 
-HRESULT ValidateCreateTexture(DeviceImpl& dev, const char* fn, bool is1D, const SUBRESOURCE_DATA* init,
+HRESULT ValidateCreateTexture(ValidationDevice& dev, const char* fn, bool is1D, const SUBRESOURCE_DATA* init,
                               TEXTURE2D_DESC* desc) {
   if (is1D && (desc->BindFlags & BIND_DEPTH_STENCIL)) {
     dev.Log(LogLevel::Error, "CreateTexture1D: BIND_DEPTH_STENCIL is not supported for 1-D textures");
@@ -315,43 +318,67 @@ HRESULT ValidateCreateTexture(DeviceImpl& dev, const char* fn, bool is1D, const 
 // ---------------------------------------------------------------------------
 // ---------------------------------------------------------------------------
 // Buffer and texture UAVs, buffer SRVs
-HRESULT ValidateBufferView(DeviceImpl& dev, const ViewKindInfo& kind, Resource* r, const void* out,
-                           const BufferViewRequest* req, VkDeviceSize* offset, VkDeviceSize* range) {
+HRESULT BufferSrvRequest(ValidationDevice& dev, const SHADER_RESOURCE_VIEW_DESC* desc, BufferViewRequest* req) {
+  if (!desc) return S_OK;
+  if (desc->ViewDimension != SRV_DIMENSION_BUFFEREX && desc->ViewDimension != SRV_DIMENSION_BUFFER) {
+    dev.Log(LogLevel::Error, "%s: ViewDimension %u does not match a buffer (SRV_DIMENSION_BUFFEREX)", kSrvKind.fn,
+            desc->ViewDimension);
+    return E_INVALIDARG;
+  }
+  const BUFFEREX_SRV& e = desc->BufferEx;
+  *req = {desc->Format, e.FirstElement, e.NumElements, e.Flags & ~UINT(BUFFEREX_SRV_FLAG_RAW),
+          (e.Flags & BUFFEREX_SRV_FLAG_RAW) != 0};
+  return S_OK;
+}
+
+HRESULT BufferUavRequest(ValidationDevice& dev, const UNORDERED_ACCESS_VIEW_DESC* desc, BufferViewRequest* req) {
+  if (!desc) return S_OK;
+  if (desc->ViewDimension != UAV_DIMENSION_BUFFER) {
+    dev.Log(LogLevel::Error, "%s: ViewDimension %u does not match a buffer (UAV_DIMENSION_BUFFER)", kUavKind.fn,
+            desc->ViewDimension);
+    return E_INVALIDARG;
+  }
+  const BUFFER_UAV& u = desc->Buffer;
+  *req = {desc->Format, u.FirstElement, u.NumElements, u.Flags & ~UINT(BUFFER_UAV_FLAG_RAW),
+          (u.Flags & BUFFER_UAV_FLAG_RAW) != 0};
+  return S_OK;
+}
+
+HRESULT ValidateBufferView(ValidationDevice& dev, const ViewKindInfo& kind, const ResourceInfo& d, const void* out,
+                           const BufferViewRequest* req, UINT64* offset, UINT64* range) {
   const char* fn = kind.fn;
-  BufferImpl* b = AsBuffer(r);
-  if (!out || !b) {
+  if (!out || !d.IsBuffer()) {
     dev.Log(LogLevel::Error, "%s: %s is null", fn, out ? "pResource" : kind.outName);
     return E_INVALIDARG;
   }
-  const BUFFER_DESC& d = b->desc();
-  const bool structured = d.MiscFlags & RESOURCE_MISC_BUFFER_STRUCTURED;
-  if (!(d.BindFlags & kind.bind)) {
-    dev.Log(LogLevel::Error, "%s: the buffer was not created with %s (BindFlags 0x%x)", fn, kind.bindName, d.BindFlags);
+  const bool structured = d.miscFlags & RESOURCE_MISC_BUFFER_STRUCTURED;
+  if (!(d.bindFlags & kind.bind)) {
+    dev.Log(LogLevel::Error, "%s: the buffer was not created with %s (BindFlags 0x%x)", fn, kind.bindName, d.bindFlags);
     return E_INVALIDARG;
   }
   if (!req && !structured) {
     dev.Log(LogLevel::Error, "%s: a view of a raw buffer needs a description (R32_TYPELESS, RAW flag)", fn);
     return E_INVALIDARG;
   }
-  const BufferViewRequest whole{DXGI_FORMAT_UNKNOWN, 0, d.ByteWidth / std::max(1u, d.StructureByteStride), 0, false};
+  const BufferViewRequest whole{DXGI_FORMAT_UNKNOWN, 0, d.byteWidth / std::max(1u, d.structureStride), 0, false};
   const BufferViewRequest& q = req ? *req : whole;
   const UINT extraFlags = q.flags & ~1u;  // anything but RAW: append/consume counters
   if (extraFlags) {
     dev.Log(LogLevel::Error, "%s: Flags 0x%x: append/consume counters are not supported", fn, q.flags);
     return E_NOTIMPL;
   }
-  if (q.raw != (q.format == DXGI_FORMAT_R32_TYPELESS) || (q.raw && !(d.MiscFlags & RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS)) ||
+  if (q.raw != (q.format == DXGI_FORMAT_R32_TYPELESS) || (q.raw && !(d.miscFlags & RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS)) ||
       (!q.raw && (!structured || q.format != DXGI_FORMAT_UNKNOWN))) {
     dev.Log(LogLevel::Error, "%s: Format %s with Flags 0x%x does not fit the buffer (raw views: R32_TYPELESS + RAW flag + RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS; structured: UNKNOWN + RESOURCE_MISC_BUFFER_STRUCTURED; typed buffer views are not supported)",
             fn, FormatName(q.format), q.flags);
     return E_INVALIDARG;
   }
-  const uint64_t element = q.raw ? 4 : d.StructureByteStride;
+  const uint64_t element = q.raw ? 4 : d.structureStride;
   const uint64_t end = (uint64_t(q.first) + q.num) * element;
-  const uint64_t align = dev.props().limits.minStorageBufferOffsetAlignment;
-  if (q.num == 0 || end > d.ByteWidth) {
+  const uint64_t align = dev.caps().storageBufferAlign;
+  if (q.num == 0 || end > d.byteWidth) {
     dev.Log(LogLevel::Error, "%s: elements [%u, %u + %u) out of range (%llu elements)", fn, q.first, q.first, q.num,
-            static_cast<unsigned long long>(d.ByteWidth / element));
+            static_cast<unsigned long long>(d.byteWidth / element));
     return E_INVALIDARG;
   }
   if ((q.first * element) % align) {
@@ -364,25 +391,24 @@ HRESULT ValidateBufferView(DeviceImpl& dev, const ViewKindInfo& kind, Resource* 
   return S_OK;
 }
 
-HRESULT ValidateTextureUav(DeviceImpl& dev, Resource* r, const UNORDERED_ACCESS_VIEW_DESC* desc, const void* out,
-                           ViewFormat* format, uint32_t* mip) {
+HRESULT ValidateTextureUav(ValidationDevice& dev, const ResourceInfo& t, const UNORDERED_ACCESS_VIEW_DESC* desc,
+                           const void* out, ViewFormat* format, uint32_t* mip) {
   const char* fn = kUavKind.fn;
-  HRESULT hr = ValidateViewResource(dev, kUavKind, r, out, desc ? desc->Format : DXGI_FORMAT_UNKNOWN, format);
+  HRESULT hr = ValidateViewResource(dev, kUavKind, t, out, desc ? desc->Format : DXGI_FORMAT_UNKNOWN, format);
   if (FAILED(hr)) return hr;
-  const TextureCore& t = *AsTexture(r);
   *mip = desc ? desc->Texture2D.MipSlice : 0;
-  if (t.dim != RESOURCE_DIMENSION_TEXTURE2D || t.desc.ArraySize != 1 ||
+  if (t.dimension != RESOURCE_DIMENSION_TEXTURE2D || t.arraySize != 1 ||
       (desc && desc->ViewDimension != UAV_DIMENSION_TEXTURE2D && desc->ViewDimension != UAV_DIMENSION_UNKNOWN)) {
     dev.Log(LogLevel::Error, "%s: only UAVs of single 2-D textures are supported (ViewDimension %u)", fn,
             desc ? desc->ViewDimension : 0u);
     return E_INVALIDARG;
   }
-  if (!dev.CheckFormatSupport(format->dxgi, BIND_UNORDERED_ACCESS)) {
-    dev.Log(LogLevel::Error, "%s: Format %s cannot be written as a UAV on this adapter", fn, FormatName(format->dxgi));
+  if (!dev.CheckFormatSupport(format->format, BIND_UNORDERED_ACCESS)) {
+    dev.Log(LogLevel::Error, "%s: Format %s cannot be written as a UAV on this adapter", fn, FormatName(format->format));
     return E_INVALIDARG;
   }
-  if (*mip >= t.desc.MipLevels) {
-    dev.Log(LogLevel::Error, "%s: MipSlice %u out of range (%u mips)", fn, *mip, t.desc.MipLevels);
+  if (*mip >= t.mipLevels) {
+    dev.Log(LogLevel::Error, "%s: MipSlice %u out of range (%u mips)", fn, *mip, t.mipLevels);
     return E_INVALIDARG;
   }
   return S_OK;
@@ -390,7 +416,7 @@ HRESULT ValidateTextureUav(DeviceImpl& dev, Resource* r, const UNORDERED_ACCESS_
 
 // ---------------------------------------------------------------------------
 // Pipeline state objects, shaders, queries, swap chains
-HRESULT ValidateSamplerDesc(DeviceImpl& dev, const SAMPLER_DESC* desc, SamplerState** out) {
+HRESULT ValidateSamplerDesc(ValidationDevice& dev, const SAMPLER_DESC* desc, SamplerState** out) {
   const char* fn = "CreateSamplerState";
   if (!ValidatePointers(dev, fn, desc, "pSamplerDesc", out, "ppSamplerState")) return E_INVALIDARG;
   const SAMPLER_DESC& d = *desc;
@@ -399,13 +425,11 @@ HRESULT ValidateSamplerDesc(DeviceImpl& dev, const SAMPLER_DESC* desc, SamplerSt
   const uint32_t f = d.Filter;
   const bool anisotropic = (f & 0x40) != 0;
   const uint32_t reduction = (f >> 7) & 3;
-  VkSamplerAddressMode mode;
   if (f & ~0x1D5u) {
     dev.Log(LogLevel::Error, "%s: Filter 0x%x is not a D3D11 filter", fn, f);
   } else if (anisotropic && (f & 0x15) != 0x15) {
     dev.Log(LogLevel::Error, "%s: Filter 0x%x: anisotropic filters need linear min/mag/mip bits", fn, f);
-  } else if (!ToVkAddressMode(d.AddressU, &mode) || !ToVkAddressMode(d.AddressV, &mode) ||
-             !ToVkAddressMode(d.AddressW, &mode)) {
+  } else if (!ValidAddress(d.AddressU) || !ValidAddress(d.AddressV) || !ValidAddress(d.AddressW)) {
     dev.Log(LogLevel::Error, "%s: invalid address mode (U %u, V %u, W %u)", fn, d.AddressU, d.AddressV, d.AddressW);
   } else if (!std::isfinite(d.MipLODBias) || d.MipLODBias < -16.0f || d.MipLODBias > 15.99f) {
     dev.Log(LogLevel::Error, "%s: MipLODBias %g out of range [-16, 15.99]", fn, d.MipLODBias);
@@ -413,7 +437,7 @@ HRESULT ValidateSamplerDesc(DeviceImpl& dev, const SAMPLER_DESC* desc, SamplerSt
     dev.Log(LogLevel::Error, "%s: MaxAnisotropy %u out of range [1, 16]", fn, d.MaxAnisotropy);
   } else if (reduction == 1 && !ValidCompare(d.ComparisonFunc)) {
     dev.Log(LogLevel::Error, "%s: ComparisonFunc %u is invalid", fn, d.ComparisonFunc);
-  } else if (reduction >= 2 && !dev.features().minmax) {
+  } else if (reduction >= 2 && !dev.caps().minmax) {
     dev.Log(LogLevel::Error, "%s: Filter 0x%x needs min/max reduction (samplerFilterMinmax), which this adapter lacks", fn, f);
   } else if (std::isnan(d.MinLOD) || std::isnan(d.MaxLOD) || d.MinLOD > d.MaxLOD) {
     dev.Log(LogLevel::Error, "%s: MinLOD %g > MaxLOD %g", fn, d.MinLOD, d.MaxLOD);
@@ -423,7 +447,7 @@ HRESULT ValidateSamplerDesc(DeviceImpl& dev, const SAMPLER_DESC* desc, SamplerSt
   return E_INVALIDARG;
 }
 
-HRESULT ValidateBlendDesc(DeviceImpl& dev, const BLEND_DESC* desc, BlendState** out) {
+HRESULT ValidateBlendDesc(ValidationDevice& dev, const BLEND_DESC* desc, BlendState** out) {
   const char* fn = "CreateBlendState";
   if (!ValidatePointers(dev, fn, desc, "pBlendStateDesc", out, "ppBlendState")) return E_INVALIDARG;
   const uint32_t n = desc->IndependentBlendEnable ? SIMULTANEOUS_RENDER_TARGET_COUNT : 1;
@@ -435,7 +459,7 @@ HRESULT ValidateBlendDesc(DeviceImpl& dev, const BLEND_DESC* desc, BlendState** 
       return E_INVALIDARG;
     }
     // Vulkan without independentBlend needs every attachment's state equal.
-    if (i > 0 && !dev.features().independentBlend &&
+    if (i > 0 && !dev.caps().independentBlend &&
         std::memcmp(&r, &desc->RenderTarget[0], sizeof(r)) != 0) {
       dev.Log(LogLevel::Error, "%s: RenderTarget[%u] differs from RenderTarget[0] with IndependentBlendEnable, but the adapter lacks independentBlend", fn, i);
       return DXGI_ERROR_UNSUPPORTED;
@@ -444,7 +468,7 @@ HRESULT ValidateBlendDesc(DeviceImpl& dev, const BLEND_DESC* desc, BlendState** 
   return S_OK;
 }
 
-HRESULT ValidateDepthStencilDesc(DeviceImpl& dev, const DEPTH_STENCIL_DESC* desc, DepthStencilState** out) {
+HRESULT ValidateDepthStencilDesc(ValidationDevice& dev, const DEPTH_STENCIL_DESC* desc, DepthStencilState** out) {
   const char* fn = "CreateDepthStencilState";
   if (!ValidatePointers(dev, fn, desc, "pDepthStencilDesc", out, "ppDepthStencilState")) return E_INVALIDARG;
   const auto& d = *desc;
@@ -456,7 +480,7 @@ HRESULT ValidateDepthStencilDesc(DeviceImpl& dev, const DEPTH_STENCIL_DESC* desc
   return S_OK;
 }
 
-HRESULT ValidateRasterizerDesc(DeviceImpl& dev, const RASTERIZER_DESC* desc, RasterizerState** out) {
+HRESULT ValidateRasterizerDesc(ValidationDevice& dev, const RASTERIZER_DESC* desc, RasterizerState** out) {
   const char* fn = "CreateRasterizerState";
   if (!ValidatePointers(dev, fn, desc, "pRasterizerDesc", out, "ppRasterizerState")) return E_INVALIDARG;
   const auto& d = *desc;
@@ -468,14 +492,14 @@ HRESULT ValidateRasterizerDesc(DeviceImpl& dev, const RASTERIZER_DESC* desc, Ras
     dev.Log(LogLevel::Error, "%s: CullMode %u is invalid", fn, d.CullMode);
     return E_INVALIDARG;
   }
-  if (d.FillMode == FILL_WIREFRAME && !dev.features().fillNonSolid) {
+  if (d.FillMode == FILL_WIREFRAME && !dev.caps().fillNonSolid) {
     dev.Log(LogLevel::Error, "%s: FILL_WIREFRAME needs fillModeNonSolid", fn);
     return DXGI_ERROR_UNSUPPORTED;
   }
   return S_OK;
 }
 
-HRESULT ValidateShaderBytecode(DeviceImpl& dev, const char* fn, const void* code, size_t len, const void* out) {
+HRESULT ValidateShaderBytecode(ValidationDevice& dev, const char* fn, const void* code, size_t len, const void* out) {
   if (!ValidatePointers(dev, fn, code, "pShaderBytecode", out, "ppShader")) return E_INVALIDARG;
   if (len < 20 || len % 4 != 0) {
     dev.Log(LogLevel::Error, "%s: bytecode length %zu is not SPIR-V (a multiple of 4, at least 20)", fn, len);
@@ -484,22 +508,22 @@ HRESULT ValidateShaderBytecode(DeviceImpl& dev, const char* fn, const void* code
   return S_OK;
 }
 
-HRESULT ValidateCreateQuery(DeviceImpl& dev, const QUERY_DESC* desc, Query** out) {
+HRESULT ValidateCreateQuery(ValidationDevice& dev, const QUERY_DESC* desc, Query** out) {
   if (!ValidatePointers(dev, "CreateQuery", desc, "pQueryDesc", out, "ppQuery")) return E_INVALIDARG;
   if (desc->Query != QUERY_EVENT && desc->Query != QUERY_TIMESTAMP && desc->Query != QUERY_TIMESTAMP_DISJOINT &&
       desc->Query != QUERY_PIPELINE_STATISTICS) {
     dev.Log(LogLevel::Error, "CreateQuery: query type %u is not supported", desc->Query);
     return E_INVALIDARG;
   }
-  if (desc->Query == QUERY_PIPELINE_STATISTICS && !dev.features().pipelineStatistics) {
+  if (desc->Query == QUERY_PIPELINE_STATISTICS && !dev.caps().pipelineStatistics) {
     dev.Log(LogLevel::Error, "CreateQuery: QUERY_PIPELINE_STATISTICS needs pipelineStatisticsQuery, which the adapter %s lacks",
-            dev.props().deviceName);
+            dev.caps().adapterName);
     return E_NOTIMPL;
   }
   return S_OK;
 }
 
-HRESULT ValidateHeadlessSwapChain(DeviceImpl& dev, const SWAP_CHAIN_DESC& d) {
+HRESULT ValidateHeadlessSwapChain(ValidationDevice& dev, const SWAP_CHAIN_DESC& d) {
   if (d.Width == 0 || d.Height == 0 || d.BufferCount == 0 || d.BufferCount > 16) {
     dev.Log(LogLevel::Error, "CreateHeadlessSwapChain: size %ux%u / BufferCount %u invalid (a headless swap chain needs an explicit size, 1..16 buffers)", d.Width, d.Height, d.BufferCount);
     return E_INVALIDARG;

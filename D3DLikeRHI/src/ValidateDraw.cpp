@@ -1,5 +1,5 @@
-// Draw-time checks of the bound state (see Validate.h): on D3D11 terms only,
-// the context reports each kind of error once.
+// Draw- and dispatch-time checks of the bound state (see Validate.h): on
+// D3D11 terms only, the context reports each kind of error once.
 #include "Topology.h"
 #include "Validate.h"
 
@@ -41,6 +41,23 @@ DrawVerdict ValidateDraw(const DrawInputs& in, OnceError* error) {
   }
   *error = missing;
   return DrawVerdict::SkipWithError;
+}
+
+bool ValidateShaderUavs(const ShaderUavInputs& in, OnceError* error) {
+  if (!in.declared) return true;
+  if (!in.storesSupported)
+    *error = OnceError::NoFragmentStores;
+  else if (!in.allBound)
+    *error = OnceError::UnboundUav;
+  else
+    return true;
+  return false;
+}
+
+bool ValidateDispatchShader(bool computeShaderBound, OnceError* error) {
+  if (computeShaderBound) return true;
+  *error = OnceError::NoComputeShader;
+  return false;
 }
 
 }  // namespace d3dl::impl

@@ -10,39 +10,38 @@ namespace {
 // Depth textures: DSVs name the depth format (D32_FLOAT, D24_UNORM_S8_UINT)
 // and see every aspect; SRVs name the colour-like member (R32_FLOAT,
 // R24_UNORM_X8_TYPELESS) and read the depth aspect.
-HRESULT DepthViewFormat(DeviceImpl& dev, const ViewKindInfo& kind, const TextureCore& t, const FormatInfo& f,
+HRESULT DepthViewFormat(ValidationDevice& dev, const ViewKindInfo& kind, const ResourceInfo& t, const FormatInfo& f,
                         ViewFormat* format) {
   const bool dsv = kind.bind == BIND_DEPTH_STENCIL;
   if (dsv && !f.depth) {
-    dev.Log(LogLevel::Error, "%s: Format %s is not a depth format (texture %s)", kind.fn, f.name, t.fmt->name);
+    dev.Log(LogLevel::Error, "%s: Format %s is not a depth format (texture %s)", kind.fn, f.name, FormatName(t.format));
     return E_INVALIDARG;
   }
-  *format = {t.format, f.dxgi, dsv ? t.aspect : VkImageAspectFlags(VK_IMAGE_ASPECT_DEPTH_BIT)};
+  *format = {f.dxgi, dsv ? ViewAspect::Attachment : ViewAspect::Depth};
   return S_OK;
 }
 }  // namespace
 
-HRESULT ValidateViewResource(DeviceImpl& dev, const ViewKindInfo& kind, Resource* r, const void* out,
+HRESULT ValidateViewResource(ValidationDevice& dev, const ViewKindInfo& kind, const ResourceInfo& t, const void* out,
                              DXGI_FORMAT requested, ViewFormat* format) {
   const char* fn = kind.fn;
   if (!out) {
     dev.Log(LogLevel::Error, "%s: %s is null", fn, kind.outName);
     return E_INVALIDARG;
   }
-  if (!r) {
+  if (t.dimension == RESOURCE_DIMENSION_UNKNOWN) {
     dev.Log(LogLevel::Error, "%s: pResource is null", fn);
     return E_INVALIDARG;
   }
-  const TextureCore* t = AsTexture(r);
-  if (!t) {
+  if (!t.IsTexture()) {
     dev.Log(LogLevel::Error, "%s: the resource is a buffer; only texture views are supported", fn);
     return E_INVALIDARG;
   }
-  if (!(t->desc.BindFlags & kind.bind)) {
-    dev.Log(LogLevel::Error, "%s: the texture was not created with %s (BindFlags 0x%x)", fn, kind.bindName, t->desc.BindFlags);
+  if (!(t.bindFlags & kind.bind)) {
+    dev.Log(LogLevel::Error, "%s: the texture was not created with %s (BindFlags 0x%x)", fn, kind.bindName, t.bindFlags);
     return E_INVALIDARG;
   }
-  const DXGI_FORMAT f = requested == DXGI_FORMAT_UNKNOWN ? t->desc.Format : requested;
+  const DXGI_FORMAT f = requested == DXGI_FORMAT_UNKNOWN ? t.format : requested;
   const FormatInfo* fi = GetFormatInfo(f);
   if (!fi) {
     dev.Log(LogLevel::Error, "%s: Format %u (%s) cannot be used for a view", fn, f, FormatName(f));
@@ -53,17 +52,18 @@ HRESULT ValidateViewResource(DeviceImpl& dev, const ViewKindInfo& kind, Resource
             fi->name, requested == DXGI_FORMAT_UNKNOWN ? " (a description with Format is required)" : "");
     return E_INVALIDARG;
   }
-  if (!SameFamily(*t->fmt, *fi)) {
+  if (!SameFamily(*GetFormatInfo(t.format), *fi)) {
     dev.Log(LogLevel::Error, "%s: view Format %s is not compatible with texture Format %s (not in its typeless family)", fn,
-            fi->name, t->fmt->name);
+            fi->name, FormatName(t.format));
     return E_INVALIDARG;
   }
-  if (t->aspect & VK_IMAGE_ASPECT_DEPTH_BIT) return DepthViewFormat(dev, kind, *t, *fi, format);
+  if (t.depth) return DepthViewFormat(dev, kind, t, *fi, format);
   if (fi->depth) {
-    dev.Log(LogLevel::Error, "%s: Format %s is a depth format; texture %s has no depth binding", fn, fi->name, t->fmt->name);
+    dev.Log(LogLevel::Error, "%s: Format %s is a depth format; texture %s has no depth binding", fn, fi->name,
+            FormatName(t.format));
     return E_INVALIDARG;
   }
-  *format = {fi->vk, f, VK_IMAGE_ASPECT_COLOR_BIT};
+  *format = {f, ViewAspect::Color};
   return S_OK;
 }
 
@@ -114,7 +114,7 @@ bool IsArrayDim(ViewDim d) {
 }
 bool IsMsDim(ViewDim d) { return d == ViewDim::Tex2DMS || d == ViewDim::Tex2DMSArray; }
 bool IsCubeDim(ViewDim d) { return d == ViewDim::Cube || d == ViewDim::CubeArray; }
-bool IsCube(const TextureCore& t) { return (t.desc.MiscFlags & RESOURCE_MISC_TEXTURECUBE) != 0; }
+bool IsCube(const ResourceInfo& t) { return (t.miscFlags & RESOURCE_MISC_TEXTURECUBE) != 0; }
 const char* DimName(ViewDim d) {
   static const char* const kNames[] = {"UNKNOWN", "TEXTURE1D", "TEXTURE1DARRAY", "TEXTURE2D", "TEXTURE2DARRAY",
                                        "TEXTURE2DMS", "TEXTURE2DMSARRAY", "TEXTURECUBE", "TEXTURECUBEARRAY", "(invalid)"};
@@ -122,52 +122,40 @@ const char* DimName(ViewDim d) {
 }
 
 // What a view without a description (or with UNKNOWN) covers.
-ViewDim DefaultDim(const TextureCore& t, bool srv) {
-  const bool array = t.desc.ArraySize > 1;
-  if (t.dim == RESOURCE_DIMENSION_TEXTURE1D) return array ? ViewDim::Tex1DArray : ViewDim::Tex1D;
-  if (t.desc.SampleDesc.Count > 1) return array ? ViewDim::Tex2DMSArray : ViewDim::Tex2DMS;
-  if (srv && IsCube(t)) return t.desc.ArraySize == 6 ? ViewDim::Cube : ViewDim::CubeArray;
+ViewDim DefaultDim(const ResourceInfo& t, bool srv) {
+  const bool array = t.arraySize > 1;
+  if (t.dimension == RESOURCE_DIMENSION_TEXTURE1D) return array ? ViewDim::Tex1DArray : ViewDim::Tex1D;
+  if (t.samples > 1) return array ? ViewDim::Tex2DMSArray : ViewDim::Tex2DMS;
+  if (srv && IsCube(t)) return t.arraySize == 6 ? ViewDim::Cube : ViewDim::CubeArray;
   return array ? ViewDim::Tex2DArray : ViewDim::Tex2D;
-}
-
-VkImageViewType VkViewType(ViewDim d) {
-  switch (d) {
-    case ViewDim::Tex1D: return VK_IMAGE_VIEW_TYPE_1D;
-    case ViewDim::Tex1DArray: return VK_IMAGE_VIEW_TYPE_1D_ARRAY;
-    case ViewDim::Tex2DArray:
-    case ViewDim::Tex2DMSArray: return VK_IMAGE_VIEW_TYPE_2D_ARRAY;
-    case ViewDim::Cube: return VK_IMAGE_VIEW_TYPE_CUBE;
-    case ViewDim::CubeArray: return VK_IMAGE_VIEW_TYPE_CUBE_ARRAY;
-    default: return VK_IMAGE_VIEW_TYPE_2D;
-  }
 }
 
 // The dimension must fit the texture: 1-D or 2-D, multisampled or not, cube
 // flag, and a single-slice dimension only for a single-slice texture.
-HRESULT CheckDimension(DeviceImpl& dev, const char* fn, const TextureCore& t, ViewDim d) {
+HRESULT CheckDimension(ValidationDevice& dev, const char* fn, const ResourceInfo& t, ViewDim d) {
   const char* problem = nullptr;
   const bool is1D = d == ViewDim::Tex1D || d == ViewDim::Tex1DArray;
-  if (is1D != (t.dim == RESOURCE_DIMENSION_TEXTURE1D)) problem = "does not match the texture's dimension (1-D/2-D)";
-  else if (IsMsDim(d) && t.desc.SampleDesc.Count == 1) problem = "is multisampled but the texture has SampleDesc.Count 1";
-  else if (!IsMsDim(d) && t.desc.SampleDesc.Count > 1) problem = "is single-sampled but the texture is multisampled (use TEXTURE2DMS or TEXTURE2DMSARRAY)";
+  if (is1D != (t.dimension == RESOURCE_DIMENSION_TEXTURE1D)) problem = "does not match the texture's dimension (1-D/2-D)";
+  else if (IsMsDim(d) && t.samples == 1) problem = "is multisampled but the texture has SampleDesc.Count 1";
+  else if (!IsMsDim(d) && t.samples > 1) problem = "is single-sampled but the texture is multisampled (use TEXTURE2DMS or TEXTURE2DMSARRAY)";
   else if (IsCubeDim(d) && !IsCube(t)) problem = "needs a texture created with RESOURCE_MISC_TEXTURECUBE";
-  else if (!IsArrayDim(d) && !IsCubeDim(d) && t.desc.ArraySize > 1) problem = "views one slice but the texture is an array (use an *ARRAY dimension)";
+  else if (!IsArrayDim(d) && !IsCubeDim(d) && t.arraySize > 1) problem = "views one slice but the texture is an array (use an *ARRAY dimension)";
   if (!problem) return S_OK;
   dev.Log(LogLevel::Error, "%s: ViewDimension %s %s (ArraySize %u, SampleDesc.Count %u, MiscFlags 0x%x)", fn,
-          DimName(d), problem, t.desc.ArraySize, t.desc.SampleDesc.Count, t.desc.MiscFlags);
+          DimName(d), problem, t.arraySize, t.samples, t.miscFlags);
   return E_INVALIDARG;
 }
 
 // Array slices: the whole texture for single-slice dimensions, `range` for
 // arrays, 6 faces for a cube, 6 * NumCubes faces for a cube array.
-HRESULT LayerRange(DeviceImpl& dev, const char* fn, const TextureCore& t, ViewDim d, const TEX_ARRAY_RANGE& range,
+HRESULT LayerRange(ValidationDevice& dev, const char* fn, const ResourceInfo& t, ViewDim d, const TEX_ARRAY_RANGE& range,
                    const TEXCUBE_ARRAY_SRV& cubes, ViewShape* shape) {
-  const uint32_t total = t.desc.ArraySize;
+  const uint32_t total = t.arraySize;
   uint32_t first = 0, count = 1;
   if (d == ViewDim::Cube) {
     count = 6;
   } else if (d == ViewDim::CubeArray) {
-    if (!dev.features().cubeArray) {
+    if (!dev.caps().cubeArray) {
       dev.Log(LogLevel::Error, "%s: TEXTURECUBEARRAY needs the imageCubeArray feature, which this adapter lacks", fn);
       return DXGI_ERROR_UNSUPPORTED;
     }
@@ -184,13 +172,13 @@ HRESULT LayerRange(DeviceImpl& dev, const char* fn, const TextureCore& t, ViewDi
   }
   shape->baseLayer = first;
   shape->layerCount = count;
-  shape->type = VkViewType(d);
+  shape->dim = d;
   return S_OK;
 }
 
-HRESULT SrvMips(DeviceImpl& dev, const TextureCore& t, const TEX_SRV& mips, ViewShape* shape) {
+HRESULT SrvMips(ValidationDevice& dev, const ResourceInfo& t, const TEX_SRV& mips, ViewShape* shape) {
   const char* fn = kSrvKind.fn;
-  const uint32_t total = t.desc.MipLevels;
+  const uint32_t total = t.mipLevels;
   const uint32_t most = mips.MostDetailedMip;
   if (most >= total) {
     dev.Log(LogLevel::Error, "%s: MostDetailedMip %u out of range (texture has %u mips)", fn, most, total);
@@ -207,10 +195,14 @@ HRESULT SrvMips(DeviceImpl& dev, const TextureCore& t, const TEX_SRV& mips, View
 }
 }  // namespace
 
-HRESULT ValidateSrvShape(DeviceImpl& dev, const TextureCore& t, const SHADER_RESOURCE_VIEW_DESC* desc,
+HRESULT ValidateSrvShape(ValidationDevice& dev, const ResourceInfo& t, const SHADER_RESOURCE_VIEW_DESC* desc,
                          ViewShape* shape) {
   const SHADER_RESOURCE_VIEW_DESC d = desc ? *desc : SHADER_RESOURCE_VIEW_DESC{};
   ViewDim dim = FromSrvDimension(d.ViewDimension);
+  if (dim == ViewDim::Invalid) {
+    dev.Log(LogLevel::Error, "%s: ViewDimension %u is invalid", kSrvKind.fn, static_cast<UINT>(d.ViewDimension));
+    return E_INVALIDARG;
+  }
   if (dim == ViewDim::Unknown) dim = DefaultDim(t, true);
   HRESULT hr = CheckDimension(dev, kSrvKind.fn, t, dim);
   if (SUCCEEDED(hr) && !IsMsDim(dim)) hr = SrvMips(dev, t, d.Texture, shape);
@@ -218,13 +210,17 @@ HRESULT ValidateSrvShape(DeviceImpl& dev, const TextureCore& t, const SHADER_RES
   return hr;
 }
 
-HRESULT ValidateTargetShape(DeviceImpl& dev, const ViewKindInfo& kind, const TextureCore& t, ViewDim dim, UINT mip,
-                            const TEX_ARRAY_RANGE& range, ViewShape* shape) {
+HRESULT ValidateTargetShape(ValidationDevice& dev, const ViewKindInfo& kind, const ResourceInfo& t, ViewDim dim,
+                            UINT rawDim, UINT mip, const TEX_ARRAY_RANGE& range, ViewShape* shape) {
+  if (dim == ViewDim::Invalid) {
+    dev.Log(LogLevel::Error, "%s: ViewDimension %u is invalid", kind.fn, rawDim);
+    return E_INVALIDARG;
+  }
   if (dim == ViewDim::Unknown) dim = DefaultDim(t, false);
   HRESULT hr = CheckDimension(dev, kind.fn, t, dim);
   if (FAILED(hr)) return hr;
-  if (mip >= t.desc.MipLevels) {
-    dev.Log(LogLevel::Error, "%s: MipSlice %u out of range (texture has %u mips)", kind.fn, mip, t.desc.MipLevels);
+  if (mip >= t.mipLevels) {
+    dev.Log(LogLevel::Error, "%s: MipSlice %u out of range (texture has %u mips)", kind.fn, mip, t.mipLevels);
     return E_INVALIDARG;
   }
   shape->baseMip = mip;
@@ -236,29 +232,29 @@ HRESULT ValidateTargetShape(DeviceImpl& dev, const ViewKindInfo& kind, const Tex
 // ResolveSubresource: D3D11 resolves float and UNORM formats only (no
 // integer, no depth); vkCmdResolveImage also needs both images created with
 // the same VkFormat and a destination format with colour-attachment support.
-bool ValidateResolveSubresource(DeviceImpl& dev, Resource* dst, UINT dstSub, Resource* src, UINT srcSub,
-                                DXGI_FORMAT format) {
+bool ValidateResolveSubresource(ValidationDevice& dev, const ResourceInfo& td, UINT dstSub, const ResourceInfo& ts,
+                                UINT srcSub, DXGI_FORMAT format) {
   const char* fn = "ResolveSubresource";
-  TextureCore *td = AsTexture(dst), *ts = AsTexture(src);
-  if (!td || !ts) {
-    dev.Log(LogLevel::Error, "%s: %s is not a texture", fn, !td ? "pDstResource" : "pSrcResource");
+  if (!td.IsTexture() || !ts.IsTexture()) {
+    dev.Log(LogLevel::Error, "%s: %s is not a texture", fn, !td.IsTexture() ? "pDstResource" : "pSrcResource");
     return false;
   }
-  SubIndex ds, ss;
+  UINT dm, dl, sm, sl;
   const FormatInfo* f = GetFormatInfo(format);
+  const FormatInfo &tdf = *GetFormatInfo(td.format), &tsf = *GetFormatInfo(ts.format);
   const char* problem = nullptr;
-  if (!td->DecodeSub(dstSub, &ds) || !ts->DecodeSub(srcSub, &ss)) problem = "subresource out of range";
-  else if (ts->desc.SampleDesc.Count == 1) problem = "the source is not multisampled";
-  else if (td->desc.SampleDesc.Count != 1) problem = "the destination is multisampled";
-  else if (td->IsStaging() || td->desc.Usage == USAGE_IMMUTABLE) problem = "the destination must be a DEFAULT texture";
-  else if (td->MipWidth(ds.mip) != ts->MipWidth(ss.mip) || td->MipHeight(ds.mip) != ts->MipHeight(ss.mip)) problem = "source and destination sizes differ";
+  if (!td.DecodeSub(dstSub, &dm, &dl) || !ts.DecodeSub(srcSub, &sm, &sl)) problem = "subresource out of range";
+  else if (ts.samples == 1) problem = "the source is not multisampled";
+  else if (td.samples != 1) problem = "the destination is multisampled";
+  else if (td.usage == USAGE_STAGING || td.usage == USAGE_IMMUTABLE) problem = "the destination must be a DEFAULT texture";
+  else if (td.MipWidth(dm) != ts.MipWidth(sm) || td.MipHeight(dm) != ts.MipHeight(sm)) problem = "source and destination sizes differ";
   else if (!f || f->typeless) problem = "Format must be a typed format";
-  else if (!SameFamily(*ts->fmt, *f) || !SameFamily(*td->fmt, *f)) problem = "Format is not in the family of both textures";
-  else if (f->integer || f->depth || (ts->aspect & VK_IMAGE_ASPECT_DEPTH_BIT)) problem = "integer and depth formats cannot be resolved (D3D11 rule)";
-  else if (ts->format != td->format) problem = "source and destination were created with different formats (vkCmdResolveImage needs the same)";
+  else if (!SameFamily(tsf, *f) || !SameFamily(tdf, *f)) problem = "Format is not in the family of both textures";
+  else if (f->integer || f->depth || ts.depth) problem = "integer and depth formats cannot be resolved (D3D11 rule)";
+  else if (tsf.vk != tdf.vk) problem = "source and destination were created with different formats (vkCmdResolveImage needs the same)";
   if (!problem) return true;
-  dev.Log(LogLevel::Error, "%s: %s (dst %s x%u sub %u, src %s x%u sub %u, Format %s)", fn, problem, td->fmt->name,
-          td->desc.SampleDesc.Count, dstSub, ts->fmt->name, ts->desc.SampleDesc.Count, srcSub, FormatName(format));
+  dev.Log(LogLevel::Error, "%s: %s (dst %s x%u sub %u, src %s x%u sub %u, Format %s)", fn, problem, tdf.name,
+          td.samples, dstSub, tsf.name, ts.samples, srcSub, FormatName(format));
   return false;
 }
 

@@ -1,6 +1,7 @@
 // Shader-resource, render-target and depth-stencil views: VkImageViews (one
 // per image of the texture; swap-chain back buffers have several). The
-// arguments are checked by ValidateViewResource & co. first.
+// arguments are checked by ValidateViewResource & co. first; what they return
+// (a DXGI format, an aspect, a D3D11 view dimension) becomes Vulkan's here.
 #include "Context.h"
 #include "Validate.h"
 
@@ -44,7 +45,36 @@ template class ViewImpl<RenderTargetView, ViewKind::RTV>;
 template class ViewImpl<DepthStencilView, ViewKind::DSV>;
 template class ViewImpl<UnorderedAccessView, ViewKind::UAV>;
 
+void SetViewFormat(ViewCore& v, const ViewFormat& format) {
+  v.dxgiFormat = format.format;
+  switch (format.aspect) {
+    case ViewAspect::Color:
+      v.format = ToVkFormat(format.format);
+      v.aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+      break;
+    case ViewAspect::Depth:  // the depth image's own format, its depth aspect
+      v.format = v.tex->format;
+      v.aspect = VK_IMAGE_ASPECT_DEPTH_BIT;
+      break;
+    case ViewAspect::Attachment:
+      v.format = v.tex->format;
+      v.aspect = v.tex->aspect;
+      break;
+  }
+}
+
 namespace {
+VkImageViewType VkViewType(ViewDim d) {
+  switch (d) {
+    case ViewDim::Tex1D: return VK_IMAGE_VIEW_TYPE_1D;
+    case ViewDim::Tex1DArray: return VK_IMAGE_VIEW_TYPE_1D_ARRAY;
+    case ViewDim::Tex2DArray:
+    case ViewDim::Tex2DMSArray: return VK_IMAGE_VIEW_TYPE_2D_ARRAY;
+    case ViewDim::Cube: return VK_IMAGE_VIEW_TYPE_CUBE;
+    case ViewDim::CubeArray: return VK_IMAGE_VIEW_TYPE_CUBE_ARRAY;
+    default: return VK_IMAGE_VIEW_TYPE_2D;
+  }
+}
 
 // A view of `r` (validated) in `format` over the mips and slices of `shape`.
 template <class Impl, class Iface>
@@ -53,14 +83,12 @@ HRESULT MakeView(DeviceImpl* dev, const char* fn, Resource* r, const ViewFormat&
   auto* view = new Impl(dev);
   ViewCore& v = view->v;
   v.tex = AsTexture(r);
-  v.aspect = format.aspect;
-  v.format = format.vk;
-  v.dxgiFormat = format.dxgi;
+  SetViewFormat(v, format);
   v.baseMip = shape.baseMip;
   v.mipCount = shape.mipCount;
   v.baseLayer = shape.baseLayer;
   v.layerCount = shape.layerCount;
-  v.type = shape.type;
+  v.type = VkViewType(shape.dim);
   if (!RebuildViews(dev, v)) {
     dev->Log(LogLevel::Error, "%s: vkCreateImageView failed", fn);
     view->Release();
@@ -85,13 +113,10 @@ HRESULT CreateTargetView(DeviceImpl* dev, const ViewKindInfo& kind, Resource* r,
   if (out) *out = nullptr;
   ViewFormat format;
   ViewShape shape;
-  HRESULT hr = ValidateViewResource(*dev, kind, r, out, RequestedFormat(desc), &format);
-  if (SUCCEEDED(hr) && dim == ViewDim::Invalid) {
-    dev->Log(LogLevel::Error, "%s: ViewDimension %u is invalid", kind.fn, static_cast<UINT>(desc->ViewDimension));
-    hr = E_INVALIDARG;
-  }
+  const ResourceInfo info = DescribeResource(r);
+  HRESULT hr = ValidateViewResource(*dev, kind, info, out, RequestedFormat(desc), &format);
   if (SUCCEEDED(hr))
-    hr = ValidateTargetShape(*dev, kind, *AsTexture(r), dim, desc ? desc->MipSlice : 0,
+    hr = ValidateTargetShape(*dev, kind, info, dim, desc ? UINT(desc->ViewDimension) : 0, desc ? desc->MipSlice : 0,
                              desc ? desc->Array : TEX_ARRAY_RANGE{}, &shape);
   if (FAILED(hr)) return hr;
   return MakeView<Impl>(dev, kind.fn, r, format, shape, out);
@@ -105,12 +130,9 @@ HRESULT DeviceImpl::CreateShaderResourceView(Resource* r, const SHADER_RESOURCE_
   if (AsBuffer(r)) return CreateBufferSRV(this, r, desc, out);
   ViewFormat format;
   ViewShape shape;
-  HRESULT hr = ValidateViewResource(*this, kSrvKind, r, out, RequestedFormat(desc), &format);
-  if (SUCCEEDED(hr) && desc && FromSrvDimension(desc->ViewDimension) == ViewDim::Invalid) {
-    Log(LogLevel::Error, "%s: ViewDimension %u is invalid", kSrvKind.fn, static_cast<UINT>(desc->ViewDimension));
-    hr = E_INVALIDARG;
-  }
-  if (SUCCEEDED(hr)) hr = ValidateSrvShape(*this, *AsTexture(r), desc, &shape);
+  const ResourceInfo info = DescribeResource(r);
+  HRESULT hr = ValidateViewResource(*this, kSrvKind, info, out, RequestedFormat(desc), &format);
+  if (SUCCEEDED(hr)) hr = ValidateSrvShape(*this, info, desc, &shape);
   if (FAILED(hr)) return hr;
   return MakeView<SRVImpl>(this, kSrvKind.fn, r, format, shape, out);
 }

@@ -29,6 +29,10 @@ struct ViewCore {
 enum class ViewKind { SRV, RTV, DSV, UAV };
 // (Re)creates the VkImageViews of a view, one per image of its texture.
 bool RebuildViews(DeviceImpl* dev, ViewCore& v);
+struct ViewFormat;  // Validate.h
+// The Vulkan format and aspect of a texture view (`v.tex` set) from the DXGI
+// format and aspect its validation settled on (Views.cpp).
+void SetViewFormat(ViewCore& v, const ViewFormat& format);
 
 template <class Iface, ViewKind Kind>
 class ViewImpl final : public Child<Iface> {

@@ -38,7 +38,7 @@ std::atomic<UINT> g_liveDevices{0};
 DeviceImpl::DeviceImpl() { ++g_liveDevices; }
 DeviceImpl::~DeviceImpl() { --g_liveDevices; }
 
-void DeviceImpl::Log(LogLevel level, const char* fmt, ...) {
+void ValidationDevice::Log(LogLevel level, const char* fmt, ...) const {
   char buf[2048];
   va_list ap;
   va_start(ap, fmt);
@@ -235,6 +235,17 @@ void DeviceImpl::GetStats(DEVICE_STATS* s) const {
   *s = stats;
   s->DeferredDestructionsPending = queue_.PendingGarbage();
   s->LiveObjects = internalRefs_.load();
+}
+
+uint32_t DeviceImpl::FormatFeatures(DXGI_FORMAT format) const {
+  VkFormatProperties fp;
+  vkGetPhysicalDeviceFormatProperties(phys_, ToVkFormat(format), &fp);
+  const VkFormatFeatureFlags f = fp.optimalTilingFeatures;
+  uint32_t out = 0;
+  if (f & VK_FORMAT_FEATURE_BLIT_SRC_BIT) out |= FORMAT_FEATURE_BLIT_SRC;
+  if (f & VK_FORMAT_FEATURE_BLIT_DST_BIT) out |= FORMAT_FEATURE_BLIT_DST;
+  if (f & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) out |= FORMAT_FEATURE_FILTER_LINEAR;
+  return out;
 }
 
 bool DeviceImpl::CheckFormatSupport(DXGI_FORMAT format, UINT bindFlags) const {

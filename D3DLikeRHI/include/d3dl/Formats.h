@@ -1,0 +1,55 @@
+// D3DLikeRHI public types: DXGI_FORMAT (Direct3D's numbering, the subset the
+// sample and its loaders need) and what the RHI can say about a format.
+#pragma once
+
+#include "d3dl/Base.h"
+
+namespace d3dl {
+
+enum DXGI_FORMAT : uint32_t {
+  DXGI_FORMAT_UNKNOWN = 0,
+  DXGI_FORMAT_R32G32B32A32_FLOAT = 2,
+  DXGI_FORMAT_R32G32B32_FLOAT = 6,
+  DXGI_FORMAT_R16G16B16A16_TYPELESS = 9,  // typeless families (views name a typed member)
+  DXGI_FORMAT_R16G16B16A16_FLOAT = 10,
+  DXGI_FORMAT_R16G16B16A16_UNORM = 11,
+  DXGI_FORMAT_R32G32_FLOAT = 16,
+  DXGI_FORMAT_R10G10B10A2_TYPELESS = 23,
+  DXGI_FORMAT_R10G10B10A2_UNORM = 24,
+  DXGI_FORMAT_R11G11B10_FLOAT = 26,
+  DXGI_FORMAT_R8G8B8A8_TYPELESS = 27,
+  DXGI_FORMAT_R8G8B8A8_UNORM = 28,
+  DXGI_FORMAT_R8G8B8A8_UNORM_SRGB = 29,
+  DXGI_FORMAT_R8G8B8A8_UINT = 30,
+  DXGI_FORMAT_R16G16_FLOAT = 34,
+  DXGI_FORMAT_R32_TYPELESS = 39,  // depth texture that is also sampled
+  DXGI_FORMAT_D32_FLOAT = 40,
+  DXGI_FORMAT_R32_FLOAT = 41,
+  DXGI_FORMAT_R32_UINT = 42,
+  DXGI_FORMAT_R24G8_TYPELESS = 44,         // depth-stencil texture that is also sampled
+  DXGI_FORMAT_D24_UNORM_S8_UINT = 45,      // Vulkan D24_UNORM_S8_UINT, where the adapter has it
+  DXGI_FORMAT_R24_UNORM_X8_TYPELESS = 46,  // SRV of the depth half of R24G8_TYPELESS
+  DXGI_FORMAT_R8G8_UNORM = 49,
+  DXGI_FORMAT_R16_FLOAT = 54,
+  DXGI_FORMAT_R16_UINT = 57,
+  DXGI_FORMAT_R8_UNORM = 61,
+  DXGI_FORMAT_BC1_UNORM = 71,
+  DXGI_FORMAT_BC1_UNORM_SRGB = 72,
+  DXGI_FORMAT_BC2_UNORM = 74,
+  DXGI_FORMAT_BC2_UNORM_SRGB = 75,
+  DXGI_FORMAT_BC3_UNORM = 77,
+  DXGI_FORMAT_BC3_UNORM_SRGB = 78,
+  DXGI_FORMAT_BC4_UNORM = 80,
+  DXGI_FORMAT_BC4_SNORM = 81,
+  DXGI_FORMAT_BC5_UNORM = 83,
+  DXGI_FORMAT_BC5_SNORM = 84,
+  DXGI_FORMAT_B8G8R8A8_UNORM = 87,
+  DXGI_FORMAT_B8G8R8A8_UNORM_SRGB = 91,
+};
+
+// Bytes per texel (or per 4x4 block for BC formats); 0 for unknown formats.
+UINT FormatBytesPerElement(DXGI_FORMAT format);
+bool FormatIsBlockCompressed(DXGI_FORMAT format);
+const char* FormatName(DXGI_FORMAT format);
+
+}  // namespace d3dl
