@@ -4,7 +4,7 @@
 #include <cstring>
 #include <vector>
 
-#include "FramePasses.h"
+#include "FrameConstants.h"
 #include "d3dl/BlitExtension.h"
 #include "ResolveFilters.h"
 
@@ -95,7 +95,7 @@ bool ComputeUpscale::Init(d3dl::Device* device, const ShaderLibrary& shaders, st
 }
 
 bool ComputeUpscale::CreateStates(d3dl::Device* device) {
-  d3dl::SAMPLER_DESC linear;  // as FramePasses' linear clamp sampler (g_LinearClamp)
+  d3dl::SAMPLER_DESC linear;  // as the full-screen passes' linear clamp sampler (g_LinearClamp)
   linear.Filter = d3dl::FILTER_MIN_MAG_MIP_LINEAR;
   linear.MinLOD = 0.0f;
   linear.ComparisonFunc = d3dl::COMPARISON_ALWAYS;

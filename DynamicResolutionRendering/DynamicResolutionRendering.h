@@ -1,10 +1,13 @@
 // The application, as the original's DynamicResolutionRendering.cpp: device
 // and swap-chain set-up, OnFrameMove, OnFrameRender, InitDynamicResolution /
-// ReleaseDynamicResolution, UpdateStats and ControlResolution. It coordinates
-// the units beside it: AppWindow (window and input), Cameras, FramePasses
-// (one function per pass), RenderTargets (the target table), GuiPanel and
-// FrameLog (records, captures, screenshot, report). It is a class so tests
-// can drive it in process (Init, RenderFrame, Shutdown).
+// ReleaseDynamicResolution, UpdateStats and ControlResolution. Each frame it
+// runs the control step, asks PlanFrame (FramePlan.h) for the frame's plan
+// and records the plan's passes (passes/PassRegistry.h). Beside it: AppWindow
+// (window and input), Cameras, RenderTargets (the target table),
+// TemporalHistory, GuiPanel and FrameLog (records, captures, screenshot,
+// report); SampleServices.cpp holds what is not the frame loop (settings,
+// keys, reload, GUI view, report and statistics). It is a class so tests can
+// drive it in process (Init, RenderFrame, Shutdown).
 #pragma once
 
 #include <array>
@@ -19,14 +22,14 @@
 
 #include "AppWindow.h"
 #include "Cameras.h"
-#include "DeferredPasses.h"
 #include "DeviceResources.h"
 #include "DynamicResolution.h"
 #include "FrameLog.h"
 #include "FramePacer.h"
 #include "FrameProfiler.h"
-#include "FramePasses.h"
 #include "FramePlan.h"
+#include "TemporalHistory.h"
+#include "passes/PassRegistry.h"
 #include "GuiPanel.h"
 #include "Options.h"
 #include "ResolutionController.h"
@@ -77,7 +80,7 @@ class Sample {
   uint64_t RenderTargetBytes() const;
   const std::map<std::string, uint64_t>& PassesRun() const { return m_Profiler.PassesRun(); }
   const RenderTargetSet& Targets() const { return m_Targets; }
-  const DeferredPasses& Deferred() const { return m_Deferred; }
+  const DeferredShared& Deferred() const { return m_Passes.Deferred(); }
   // The deferred renderer's line of --stats (G-buffer targets and bytes, shadow maps, lights).
   std::string DeferredStats() const;
   const std::vector<FrameRecord>& Frames() const { return m_Log.Frames(); }
@@ -124,6 +127,7 @@ class Sample {
   void OnMouse(int button, int action, double x, double y);
 
  private:
+  static constexpr uint32_t kMaxRTSize = 8192;  // as the original
   // Units of the original.
   void OnFrameMove(double elapsed);
   void OnFrameRender(double elapsed);
@@ -137,10 +141,9 @@ class Sample {
   // This frame's plan (FramePlan.h) from the settings and the back buffer.
   FramePlan PlanNow() const;
   void RunResolutionControl();
-  FrameSetup MakeFrameSetup(const FramePlan& plan);
-  SceneRenderParams SceneParams() const;
-  void RenderGui(double elapsed);
-  void RunGuiActions();
+  void BuildGui(double elapsed);
+  void PrintStats() const;
+    void RunGuiActions();
 
   Options m_Options;
   std::string m_ScenePath;
@@ -152,13 +155,11 @@ class Sample {
 
   DynamicResolution m_DynamicResolution;
   RenderTargetSet m_Targets;
-  TemporalHistory m_History;  // the TAA ping-pong of the final/velocity targets
+  TemporalHistory m_History;  // the TAA ping-pong and TAAU's history (FramePlan::history)
   bool m_ResetVelocityHistory = true;  // the scene's previous matrices restart (first frame, resize)
 
   FrameProfiler m_Profiler;  // GPU timers, pass counts, the scale of recent frames
-  FramePasses m_Passes;
-  DeferredPasses m_Deferred;  // --renderer deferred (Docs/Deferred.md)
-  DeferredFrame MakeDeferredFrame(const FrameSetup& s) const;
+  PassRegistry m_Passes;  // every pass of the frame (passes/)
   GuiPanel m_Gui;
   std::unique_ptr<Scene> m_Scene;
   // Fallback textures, rejected transforms, cut scales, ignored options: on

@@ -12,21 +12,13 @@
 
 namespace drr {
 
-namespace {
-struct GuiConstants {
-  float scale[2];
-  float translate[2];
-};
-}  // namespace
 
-bool GuiRenderer::LoadShaders(const ShaderLibrary& lib, bool fromSource, std::string* error, bool* compiled) {
+bool GuiRenderer::LoadShaders(ShaderLoad& load) {
   d3dl::ComPtr<d3dl::VertexShader> vs;
   d3dl::ComPtr<d3dl::PixelShader> ps;
   d3dl::ComPtr<d3dl::InputLayout> layout;
   std::vector<uint32_t> vsCode;
-  if (!lib.CreateVertexShader(m_Device, "Gui_GuiVS", fromSource, vs.GetAddressOf(), &vsCode, error, compiled) ||
-      !lib.CreatePixelShader(m_Device, "Gui_GuiPS", fromSource, ps.GetAddressOf(), error))
-    return false;
+  if (!load.Load({{"Gui_GuiVS", &vs, &vsCode}}, {{"Gui_GuiPS", &ps}})) return false;
   const d3dl::INPUT_ELEMENT_DESC elements[] = {
       {"POSITION", 0, d3dl::DXGI_FORMAT_R32G32_FLOAT, 0, uint32_t(offsetof(ImDrawVert, pos))},
       {"TEXCOORD", 0, d3dl::DXGI_FORMAT_R32G32_FLOAT, 0, uint32_t(offsetof(ImDrawVert, uv))},
@@ -34,7 +26,7 @@ bool GuiRenderer::LoadShaders(const ShaderLibrary& lib, bool fromSource, std::st
   };
   if (d3dl::FAILED(m_Device->CreateInputLayout(elements, 3, vsCode.data(), vsCode.size() * 4,
                                                layout.GetAddressOf()))) {
-    if (error) *error = "GUI: CreateInputLayout failed";
+    *load.error = "GUI: CreateInputLayout failed";
     return false;
   }
   m_VS = vs;
@@ -45,8 +37,11 @@ bool GuiRenderer::LoadShaders(const ShaderLibrary& lib, bool fromSource, std::st
 
 bool GuiRenderer::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* error) {
   m_Device = device;
-  if (!LoadShaders(shaders, false, error)) return false;
+  ShaderLoad load{device, &shaders, false, error};
+  return LoadShaders(load) && CreateFontAtlas(error) && CreateStates(error);
+}
 
+bool GuiRenderer::CreateFontAtlas(std::string* error) {
   ImGuiIO& io = ImGui::GetIO();
   unsigned char* pixels = nullptr;
   int w = 0, h = 0;
@@ -60,21 +55,20 @@ bool GuiRenderer::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::
   d3dl::SUBRESOURCE_DATA init;
   init.pSysMem = pixels;
   init.SysMemPitch = uint32_t(w) * 4u;
-  if (d3dl::FAILED(device->CreateTexture2D(&td, &init, m_FontTexture.ReleaseAndGetAddressOf())) ||
-      d3dl::FAILED(device->CreateShaderResourceView(m_FontTexture.Get(), nullptr,
+  if (d3dl::FAILED(m_Device->CreateTexture2D(&td, &init, m_FontTexture.ReleaseAndGetAddressOf())) ||
+      d3dl::FAILED(m_Device->CreateShaderResourceView(m_FontTexture.Get(), nullptr,
                                                     m_FontSRV.ReleaseAndGetAddressOf()))) {
     if (error) *error = "GUI: cannot create the font atlas texture";
     return false;
   }
   m_FontTexture->SetDebugName("ImGuiFontAtlas");
   io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(m_FontSRV.Get()));
+  return true;
+}
 
-  d3dl::BUFFER_DESC cb;
-  cb.ByteWidth = 16;
-  cb.Usage = d3dl::USAGE_DYNAMIC;
-  cb.BindFlags = d3dl::BIND_CONSTANT_BUFFER;
-  cb.CPUAccessFlags = d3dl::CPU_ACCESS_WRITE;
-  device->CreateBuffer(&cb, nullptr, m_CB.ReleaseAndGetAddressOf());
+bool GuiRenderer::CreateStates(std::string* error) {
+  d3dl::Device* device = m_Device;
+  const bool cbOk = m_CB.Create(device);
 
   d3dl::SAMPLER_DESC sd;
   sd.Filter = d3dl::FILTER_MIN_MAG_MIP_LINEAR;
@@ -98,11 +92,7 @@ bool GuiRenderer::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::
   rd.DepthClipEnable = 1;
   device->CreateRasterizerState(&rd, m_Raster.ReleaseAndGetAddressOf());
 
-  d3dl::DEPTH_STENCIL_DESC dd;
-  dd.DepthEnable = 0;
-  dd.DepthWriteMask = d3dl::DEPTH_WRITE_MASK_ZERO;
-  device->CreateDepthStencilState(&dd, m_Depth.ReleaseAndGetAddressOf());
-  if (!m_CB || !m_Sampler || !m_Blend || !m_Raster || !m_Depth) {
+  if (!cbOk || !CreateNoDepthState(device, &m_Depth) || !m_Sampler || !m_Blend || !m_Raster || !m_Depth) {
     if (error) *error = "GUI: cannot create states";
     return false;
   }
@@ -113,7 +103,8 @@ void GuiRenderer::Release() {
   m_VS = nullptr;
   m_PS = nullptr;
   m_Layout = nullptr;
-  m_VB = m_IB = m_CB = nullptr;
+  m_VB = m_IB = nullptr;
+  m_CB.Release();
   m_VBCapacity = m_IBCapacity = 0;
   m_FontSRV = nullptr;
   m_FontTexture = nullptr;
@@ -172,17 +163,14 @@ bool UploadGeometry(d3dl::DeviceContext* ctx, d3dl::Buffer* vb, d3dl::Buffer* ib
 }
 
 // Orthographic mapping of ImGui's pixel space (origin top-left) to clip space.
-void UploadProjection(d3dl::DeviceContext* ctx, d3dl::Buffer* cb, const ImDrawData* dd) {
-  GuiConstants c;
+template <class Constants>
+Constants Projection(const ImDrawData* dd) {
+  Constants c;
   c.scale[0] = 2.0f / dd->DisplaySize.x;
   c.scale[1] = -2.0f / dd->DisplaySize.y;
   c.translate[0] = -1.0f - dd->DisplayPos.x * c.scale[0];
   c.translate[1] = 1.0f - dd->DisplayPos.y * c.scale[1];
-  d3dl::MAPPED_SUBRESOURCE cm;
-  if (d3dl::SUCCEEDED(ctx->Map(cb, 0, d3dl::MAP_WRITE_DISCARD, 0, &cm))) {
-    std::memcpy(cm.pData, &c, sizeof c);
-    ctx->Unmap(cb, 0);
-  }
+  return c;
 }
 
 // One indexed draw per command, scissored to its clip rectangle, with its
@@ -226,7 +214,7 @@ void GuiRenderer::Render(d3dl::DeviceContext* ctx, ImDrawData* dd) {
     return;
   if (!EnsureBuffers(dd->TotalVtxCount, dd->TotalIdxCount)) return;
   if (!UploadGeometry(ctx, m_VB.Get(), m_IB.Get(), dd)) return;
-  UploadProjection(ctx, m_CB.Get(), dd);
+  m_CB.Upload(ctx, Projection<Constants>(dd));
 
   const uint32_t stride = sizeof(ImDrawVert), offset = 0;
   ctx->IASetInputLayout(m_Layout.Get());
@@ -235,7 +223,7 @@ void GuiRenderer::Render(d3dl::DeviceContext* ctx, ImDrawData* dd) {
                         sizeof(ImDrawIdx) == 2 ? d3dl::DXGI_FORMAT_R16_UINT : d3dl::DXGI_FORMAT_R32_UINT, 0);
   ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLELIST);
   ctx->VSSetShader(m_VS.Get());
-  ctx->VSSetConstantBuffers(0, 1, m_CB.GetAddressOf());
+  ctx->VSSetConstantBuffers(0, 1, m_CB.Address());
   ctx->PSSetShader(m_PS.Get());
   ctx->PSSetSamplers(0, 1, m_Sampler.GetAddressOf());
   const float blendFactor[4] = {0, 0, 0, 0};

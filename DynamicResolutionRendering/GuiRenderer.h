@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "ConstantBuffer.h"
 #include "ShaderLibrary.h"
 #include "d3dl/D3DLike.h"
 
@@ -17,20 +18,27 @@ class GuiRenderer {
  public:
   // Needs an ImGui context; builds the font atlas texture.
   bool Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* error);
-  // Keeps the old shaders on error (F4); *compiled: compiled from HLSL.
-  bool LoadShaders(const ShaderLibrary& shaders, bool fromSource, std::string* error, bool* compiled = nullptr);
+  // Keeps the old shaders on error (F4).
+  bool LoadShaders(ShaderLoad& load);
   void Release();
   // Draws into the bound render target; the caller set the back-buffer viewport.
   void Render(d3dl::DeviceContext* ctx, ImDrawData* drawData);
 
  private:
   bool EnsureBuffers(int vertexCount, int indexCount);
+  bool CreateFontAtlas(std::string* error);
+  bool CreateStates(std::string* error);
 
   d3dl::Device* m_Device = nullptr;
   d3dl::ComPtr<d3dl::VertexShader> m_VS;
   d3dl::ComPtr<d3dl::PixelShader> m_PS;
   d3dl::ComPtr<d3dl::InputLayout> m_Layout;
-  d3dl::ComPtr<d3dl::Buffer> m_VB, m_IB, m_CB;
+  d3dl::ComPtr<d3dl::Buffer> m_VB, m_IB;
+  struct Constants {  // Gui.hlsl's cbuffer: pixel space -> clip space
+    float scale[2];
+    float translate[2];
+  };
+  ConstantBuffer<Constants> m_CB;
   int m_VBCapacity = 0, m_IBCapacity = 0;
   d3dl::ComPtr<d3dl::Texture2D> m_FontTexture;
   d3dl::ComPtr<d3dl::ShaderResourceView> m_FontSRV;

@@ -123,8 +123,9 @@ const OptionRow kRows[] = {
            ChoicesOf<UpscaleShader, UpscaleShaderOption, UpscaleShaderName>("upscale shader"),
            "the port's upscalers (TAAU, r.Upscale.Quality, edge-\n"
            "adaptive, secondary) as {choices} shaders (default\n"
-           "{default}; pixel, with a notice, where the device has\n"
-           "no storage images); the original's filters stay pixel")
+           "{default}: compute on GPUs, pixel on CPU rasterisers;\n"
+           "pixel, with a notice, where the device has no storage\n"
+           "images); the original's filters stay pixel")
         .Json("upscale_shader").Gui(Widget::Combo, "Upscaler shaders:").EnabledIf(Dynamic),
     Number("--secondary-screen-percentage", "P", &Options::secondaryScreenPercentage, 25, 100,
            "static second spatial upscale after the primary one (or\n"

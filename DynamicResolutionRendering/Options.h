@@ -16,10 +16,18 @@ namespace drr {
 
 // --upscale-shader: the port's upscalers (TAAU, r.Upscale.Quality, edge-adaptive,
 // sharpening, secondary) as compute passes (ComputeUpscale.h) or pixel shaders.
-enum class UpscaleShader : int { Compute, Pixel, Count };
-inline const char* UpscaleShaderOption(UpscaleShader u) { return u == UpscaleShader::Compute ? "compute" : "pixel"; }
+// Auto: compute on GPUs; pixel on CPU rasterisers, where the compute TAAU's
+// group-shared tile costs more than the loads it saves (about 3x the pixel
+// pass on lavapipe, Docs/Upscaling.md).
+enum class UpscaleShader : int { Auto, Compute, Pixel, Count };
+inline const char* UpscaleShaderOption(UpscaleShader u) {
+  return u == UpscaleShader::Auto ? "auto" : u == UpscaleShader::Compute ? "compute" : "pixel";
+}
 inline const char* UpscaleShaderName(UpscaleShader u) {
-  return u == UpscaleShader::Compute ? "Compute shaders" : "Pixel shaders";
+  return u == UpscaleShader::Auto ? "Auto" : u == UpscaleShader::Compute ? "Compute shaders" : "Pixel shaders";
+}
+inline bool UseComputeUpscale(UpscaleShader u, bool softwareAdapter) {
+  return u == UpscaleShader::Compute || (u == UpscaleShader::Auto && !softwareAdapter);
 }
 
 // ControlMode (--control) and ControlLaw (--law) and their names are the
@@ -85,7 +93,7 @@ struct Options {
   bool autoMipBias = true;                  // TAAU: texture sampling biased by log2(screen percentage)
   std::string mipBiasOptOut;                // materials (comma-separated names) sampled without it
   bool taaMipBias = true;                   // the original's TAA sampler bias -0.5 (--no-taa-mip-bias: 0, an ablation)
-  UpscaleShader upscaleShader = UpscaleShader::Compute;  // the port's upscalers as compute or pixel shaders
+  UpscaleShader upscaleShader = UpscaleShader::Auto;  // the port's upscalers as compute or pixel shaders
   // Deferred shading (Docs/Deferred.md); the forward path ignores the others.
   Renderer renderer = Renderer::Forward;    // --renderer
   bool ssao = true;                         // screen-space ambient occlusion into the G-buffer's AO target

@@ -5,32 +5,39 @@
 namespace drr {
 
 namespace {
-struct TargetInfo {
-  const char* name;
-  d3dl::DXGI_FORMAT format;
-  bool dynamic;  // sized as the dynamic RT, else as the back buffer
-  bool output = false;  // port addition: on the dynamic path, at the upscale's output size
-  bool gbuffer = false;  // deferred shading: the dynamic RT's size on both paths
-};
+using Plan = const RenderTargetPlan&;
 // The original's colour targets are R8G8B8A8_UNORM: they hold the shader's
 // linear values in 8 bits; only the back buffer is sRGB.
 constexpr d3dl::DXGI_FORMAT kColor = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM;
 constexpr d3dl::DXGI_FORMAT kVelocity = d3dl::DXGI_FORMAT_R16G16_FLOAT;
 constexpr d3dl::DXGI_FORMAT kDepth = d3dl::DXGI_FORMAT_D32_FLOAT;
-constexpr TargetInfo kTargets[] = {
-    {"g_ColorDynamic", kColor, true},          {"g_DepthDynamic", kDepth, true},
-    {"g_VelocityDynamic[0]", kVelocity, true}, {"g_VelocityDynamic[1]", kVelocity, true},
-    {"g_FinalRTDynamic[0]", kColor, true},     {"g_FinalRTDynamic[1]", kColor, true},
-    {"g_ColorFull", kColor, false},            {"g_VelocityFull", kVelocity, false},
-    {"g_DepthFull", kDepth, false},
-    {"upscale history[0]", d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT, false, true},
-    {"upscale history[1]", d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT, false, true},
-    {"upscale output", kColor, false, true},
-    {"upscale sharpen input", kColor, false, true},
-    {"g_GBufferDiffuse", d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB, true, false, true},
-    {"g_GBufferSpecular", d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB, true, false, true},
-    {"g_GBufferNormal", d3dl::DXGI_FORMAT_R10G10B10A2_UNORM, true, false, true},
-    {"g_GBufferAO", d3dl::DXGI_FORMAT_R8_UNORM, true, false, true},
+constexpr d3dl::DXGI_FORMAT kHistory = d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT;
+constexpr d3dl::DXGI_FORMAT kSrgb = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
+// One row per target: its name, format, size rule and when the plan needs it
+// (the original's InitDynamicResolution rules, then the port's additions).
+// The fast TAA path reads velocity from the motion-blur alpha: one velocity
+// target is enough there. TAAU reads velocity 0 and writes its history; the
+// secondary upscale reads the history or the primary spatial upscale's output.
+constexpr RenderTargetRow kTargets[] = {
+    {"g_ColorDynamic", kColor, SizeRule::Dynamic, [](Plan p) { return p.dynamic && p.motionBlur; }},
+    {"g_DepthDynamic", kDepth, SizeRule::Dynamic, [](Plan p) { return p.dynamic; }},
+    {"g_VelocityDynamic[0]", kVelocity, SizeRule::Dynamic,
+     [](Plan p) { return p.dynamic && (p.motionBlur || p.taa || p.taau); }},
+    {"g_VelocityDynamic[1]", kVelocity, SizeRule::Dynamic, [](Plan p) { return p.dynamic && p.taa && !p.motionBlur; }},
+    {"g_FinalRTDynamic[0]", kColor, SizeRule::Dynamic, [](Plan p) { return p.dynamic; }},
+    {"g_FinalRTDynamic[1]", kColor, SizeRule::Dynamic, [](Plan p) { return p.dynamic && p.taa; }},
+    {"g_ColorFull", kColor, SizeRule::Full, [](Plan p) { return !p.dynamic && p.motionBlur; }},
+    {"g_VelocityFull", kVelocity, SizeRule::Full, [](Plan p) { return !p.dynamic && p.motionBlur; }},
+    {"g_DepthFull", kDepth, SizeRule::Full, [](Plan p) { return !p.dynamic; }},
+    {"upscale history[0]", kHistory, SizeRule::Output, [](Plan p) { return p.dynamic && p.taau; }},
+    {"upscale history[1]", kHistory, SizeRule::Output, [](Plan p) { return p.dynamic && p.taau; }},
+    {"upscale output", kColor, SizeRule::Output, [](Plan p) { return p.dynamic && p.Secondary() && !p.taau; }},
+    {"upscale sharpen input", kColor, SizeRule::Output, [](Plan p) { return p.dynamic && p.sharpenPass; }},
+    // Deferred shading: the dynamic RT's size on both paths.
+    {"g_GBufferDiffuse", kSrgb, SizeRule::Dynamic, [](Plan p) { return p.deferred; }},
+    {"g_GBufferSpecular", kSrgb, SizeRule::Dynamic, [](Plan p) { return p.deferred; }},
+    {"g_GBufferNormal", d3dl::DXGI_FORMAT_R10G10B10A2_UNORM, SizeRule::Dynamic, [](Plan p) { return p.deferred; }},
+    {"g_GBufferAO", d3dl::DXGI_FORMAT_R8_UNORM, SizeRule::Dynamic, [](Plan p) { return p.deferred && p.ssao; }},
 };
 // TAAU reads the dynamic depth: typeless, with a depth and a float view.
 constexpr d3dl::DXGI_FORMAT kReadableDepth = d3dl::DXGI_FORMAT_R32_TYPELESS;
@@ -105,29 +112,15 @@ uint64_t RenderTargetSet::OriginalBytes(uint32_t backW, uint32_t backH, uint32_t
   return full + dyn;
 }
 
-bool RenderTargetSet::Needed(RT rt, const RenderTargetPlan& p) {
-  if (kTargets[int(rt)].gbuffer) return p.deferred && (rt != RT::GBufferAO || p.ssao);
-  if (kTargets[int(rt)].output) {
-    if (!p.dynamic) return false;
-    // TAAU writes its history; the secondary upscale reads it, or the primary spatial upscale's output.
-    if (rt == RT::UpscaleOutput) return p.Secondary() && !p.taau;
-    if (rt == RT::UpscaleSharpenInput) return p.sharpenPass;
-    return p.taau;
-  }
-  if (kTargets[int(rt)].dynamic != p.dynamic) return false;
-  if (rt == RT::VelocityDynamic0 && p.taau) return true;
-  switch (rt) {
-    case RT::DepthDynamic:
-    case RT::FinalDynamic0:
-    case RT::DepthFull: return true;
-    case RT::FinalDynamic1: return p.taa;
-    case RT::ColorDynamic:
-    case RT::ColorFull:
-    case RT::VelocityFull: return p.motionBlur;
-    case RT::VelocityDynamic0: return p.motionBlur || p.taa;
-    // The fast TAA path reads velocity from the motion-blur alpha: one velocity target is enough.
-    case RT::VelocityDynamic1: return p.taa && !p.motionBlur;
-    default: return false;
+const RenderTargetRow& RenderTargetSet::Row(RT rt) { return kTargets[int(rt)]; }
+
+bool RenderTargetSet::Needed(RT rt, const RenderTargetPlan& plan) { return Row(rt).needed(plan); }
+
+void RenderTargetPlan::Size(SizeRule rule, uint32_t dynW, uint32_t dynH, uint32_t* w, uint32_t* h) const {
+  switch (rule) {
+    case SizeRule::Dynamic: *w = dynW, *h = dynH; break;
+    case SizeRule::Output: *w = outputW, *h = outputH; break;
+    case SizeRule::Full: *w = backBufferW, *h = backBufferH; break;
   }
 }
 
@@ -137,9 +130,8 @@ bool RenderTargetSet::Allocate(d3dl::Device* device, const RenderTargetPlan& pla
   for (int i = 0; i < int(RT::Count); ++i) {
     const RT rt = RT(i);
     if (!Needed(rt, plan)) continue;
-    const bool dyn = kTargets[i].dynamic, out = kTargets[i].output;
-    const uint32_t w = dyn ? dynW : out ? plan.outputW : plan.backBufferW;
-    const uint32_t h = dyn ? dynH : out ? plan.outputH : plan.backBufferH;
+    uint32_t w = 0, h = 0;
+    plan.Size(kTargets[i].size, dynW, dynH, &w, &h);
     // Depth read by TAAU or by the deferred passes: typeless.
     const bool readDepth = (rt == RT::DepthDynamic && (plan.taau || plan.deferred)) || (rt == RT::DepthFull && plan.deferred);
     const d3dl::DXGI_FORMAT fmt = readDepth ? kReadableDepth : Format(rt, plan.srgbColour);

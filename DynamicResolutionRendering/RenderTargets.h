@@ -55,6 +55,11 @@ enum class RT : int {
   Count
 };
 
+// How a target is sized: as the dynamic RT (DynamicResolution's oversized
+// RT), the back buffer, or the primary upscale's output (the back buffer's
+// times the secondary screen percentage).
+enum class SizeRule { Dynamic, Full, Output };
+
 // What decides which targets exist and their sizes; a change re-allocates.
 struct RenderTargetPlan {
   bool dynamic = false, superSampling = false, motionBlur = false, taa = false;
@@ -66,7 +71,16 @@ struct RenderTargetPlan {
   uint32_t outputW = 0, outputH = 0;
   bool deferred = false, ssao = false;  // --renderer deferred; its SSAO
   bool Secondary() const { return outputW != 0 && (outputW != backBufferW || outputH != backBufferH); }
+  void Size(SizeRule rule, uint32_t dynW, uint32_t dynH, uint32_t* w, uint32_t* h) const;
   bool operator==(const RenderTargetPlan&) const = default;
+};
+
+// A row of the target table (RenderTargets.cpp).
+struct RenderTargetRow {
+  const char* name;  // the original's g_* global
+  d3dl::DXGI_FORMAT format;
+  SizeRule size;
+  bool (*needed)(const RenderTargetPlan& plan);
 };
 
 class RenderTargetSet {
@@ -96,7 +110,8 @@ class RenderTargetSet {
 
   static const char* Name(RT rt);  // "g_FinalRTDynamic[0]"
   static d3dl::DXGI_FORMAT Format(RT rt, bool srgbColour = false);
-  // Whether the plan needs rt (the original's InitDynamicResolution rules).
+  static const RenderTargetRow& Row(RT rt);
+  // Whether the plan needs rt: its row's test.
   static bool Needed(RT rt, const RenderTargetPlan& plan);
 
  private:

@@ -2,12 +2,77 @@
 // command-line names, the pixel shader that scales the dynamic viewport to the
 // back buffer (and its fast variant when motion blur has left the velocity in
 // the colour's alpha), the sampler it reads with, and whether it is temporal.
-// To add a filter: a value here, a row in ResolveFilters.cpp, its entry point
-// in Shaders/PostProcessDynamic.hlsl and a drr_shader() line in
-// Shaders/CMakeLists.txt (Docs/Architecture.md).
+// To add a filter: a row of kFilters here, its entry point in a shader file
+// (Shaders/PostProcessDynamic.hlsl) and a drr_shader() line in
+// Shaders/CMakeLists.txt (Docs/Architecture.md, "Where do I add").
 #pragma once
 
+#include <iterator>
+
 namespace drr {
+
+// What a filter does to the frame, which decides the passes and targets
+// (FramePlan): Debug shows the whole dynamic RT (None); Spatial scales the
+// viewport in one pass; SpatialSharpen adds a sharpening pass over an
+// output-size target; TemporalAA is the original's TAA (two final targets,
+// jitter); TemporalUpsample is TAAU (output-resolution history).
+enum class FilterKind { Debug, Spatial, SpatialSharpen, TemporalAA, TemporalUpsample };
+
+struct FilterInfo {
+  const char* name;        // GUI ("Temporal AA")
+  const char* option;      // command line ("taa")
+  const char* shader;      // in Shaders/CMakeLists.txt
+  const char* fastShader;  // with motion blur on (null: the same shader)
+  const char* pass;        // in the report's passes_run
+  const char* fastPass;
+  bool linearSampler;      // s0 linear instead of point, as the original binds for Bilinear and Bicubic
+  FilterKind kind;
+  bool noisePerFrame = false;  // Noise: a new noise offset each frame (the original's two rand() calls)
+};
+
+namespace filter_row {
+constexpr const char* kPoint = "PostProcessDynamic_ResolvePS";
+// name, option, shader, fast shader, pass, fast pass, linear sampler, kind, noise per frame
+constexpr FilterKind kDebug = FilterKind::Debug, kSpatial = FilterKind::Spatial,
+                     kSharpen = FilterKind::SpatialSharpen, kTAA = FilterKind::TemporalAA,
+                     kTAAU = FilterKind::TemporalUpsample;
+// The table, in the order of the original's combo box; port additions after
+// it. A row's index is its Filter value.
+inline constexpr FilterInfo kFilters[] = {
+    {"None (Debug)", "none", kPoint, nullptr, "ResolveNone", "ResolveNone", false, kDebug},
+    {"Point", "point", kPoint, nullptr, "ResolvePoint", "ResolvePoint", false, kSpatial},
+    {"Bilinear", "bilinear", kPoint, nullptr, "ResolveBilinear", "ResolveBilinear", true, kSpatial},
+    {"Bicubic", "bicubic", "PostProcessDynamic_BicubicPS", nullptr, "ResolveBicubic", "ResolveBicubic", true, kSpatial},
+    {"Noise", "noise", "PostProcessDynamic_NoisePS", nullptr, "ResolveNoise", "ResolveNoise", false, kSpatial, true},
+    {"Noise Offset", "noise-offset", "PostProcessDynamic_NoiseOffsetPS", nullptr, "ResolveNoiseOffset",
+     "ResolveNoiseOffset", false, kSpatial},
+    {"Temporal AA", "taa", "PostProcessDynamic_TAAPS", "PostProcessDynamic_TAAFastPS", "ResolveTAA",
+     "ResolveTAAFast", false, kTAA},
+    {"TAA Noise Off.", "taa-noise-offset", "PostProcessDynamic_TAANoiseOffsetPS",
+     "PostProcessDynamic_TAANoiseOffsetFastPS", "ResolveTAANoiseOffset", "ResolveTAANoiseOffsetFast", false, kTAA},
+    {"TAA Basic", "taa-basic", "PostProcessDynamic_TAABasicPS", nullptr, "ResolveTAABasic", "ResolveTAABasic", false,
+     kTAA},
+    {"Bicubic B-spline", "bicubic-bspline", "PostProcessDynamic_BicubicBSplinePS", nullptr, "ResolveBicubicBSpline",
+     "ResolveBicubicBSpline", false, kSpatial},
+    {"Upscale 0: Nearest", "upscale-nearest", "UpscaleSpatial_NearestPS", nullptr, "UpscaleNearest",
+     "UpscaleNearest", false, kSpatial},
+    {"Upscale 1: Bilinear", "upscale-bilinear", "UpscaleSpatial_BilinearPS", nullptr, "UpscaleBilinear",
+     "UpscaleBilinear", false, kSpatial},
+    {"Upscale 2: Directional", "upscale-directional", "UpscaleSpatial_DirectionalPS", nullptr,
+     "UpscaleDirectional", "UpscaleDirectional", false, kSpatial},
+    {"Upscale 3: Catmull-Rom", "upscale-catmull-rom", "UpscaleSpatial_CatmullRomPS", nullptr, "UpscaleCatmullRom",
+     "UpscaleCatmullRom", false, kSpatial},
+    {"Upscale 4: Lanczos 3", "upscale-lanczos3", "UpscaleSpatial_Lanczos3PS", nullptr, "UpscaleLanczos3",
+     "UpscaleLanczos3", false, kSpatial},
+    {"Upscale 5: Gauss. unsharp", "upscale-gaussian-unsharp", "UpscaleSpatial_GaussianUnsharpPS", nullptr,
+     "UpscaleGaussianUnsharp", "UpscaleGaussianUnsharp", false, kSpatial},
+    {"Temporal Upsample", "taau", "UpscaleTemporal_TemporalUpsamplePS", nullptr, "TemporalUpsample",
+     "TemporalUpsample", false, kTAAU},
+    {"Edge-adaptive + sharpen", "upscale-edge-adaptive", "UpscaleSpatial_EdgeAdaptivePS", nullptr,
+     "UpscaleEdgeAdaptive", "UpscaleEdgeAdaptive", false, kSharpen},
+};
+}  // namespace filter_row
+using filter_row::kFilters;
 
 // In the order of the original's combo box; port additions after it.
 enum class Filter : int {
@@ -29,29 +94,12 @@ enum class Filter : int {
   UpscaleCatmullRom,
   UpscaleLanczos3,
   UpscaleGaussianUnsharp,
-  TAAU,  // temporal upsample: output-resolution history (FramePasses::TemporalUpsample)
+  TAAU,  // temporal upsample: output-resolution history (passes/TemporalUpsamplePass.cpp)
   UpscaleEdgeAdaptive,  // port design: edge-adaptive upscale + contrast-limited sharpening (two passes)
-  Count
+  // A row after these needs no name here: the table decides the count.
+  Count = int(std::size(kFilters))
 };
-
-// What a filter does to the frame, which decides the passes and targets
-// (FramePlan): Debug shows the whole dynamic RT (None); Spatial scales the
-// viewport in one pass; SpatialSharpen adds a sharpening pass over an
-// output-size target; TemporalAA is the original's TAA (two final targets,
-// jitter); TemporalUpsample is TAAU (output-resolution history).
-enum class FilterKind { Debug, Spatial, SpatialSharpen, TemporalAA, TemporalUpsample };
-
-struct FilterInfo {
-  const char* name;        // GUI ("Temporal AA")
-  const char* option;      // command line ("taa")
-  const char* shader;      // in Shaders/CMakeLists.txt
-  const char* fastShader;  // with motion blur on (null: the same shader)
-  const char* pass;        // in the report's passes_run
-  const char* fastPass;
-  bool linearSampler;      // s0 linear instead of point, as the original binds for Bilinear and Bicubic
-  FilterKind kind;
-  bool noisePerFrame = false;  // Noise: a new noise offset each frame (the original's two rand() calls)
-};
+static_assert(int(Filter::UpscaleEdgeAdaptive) < int(Filter::Count));
 
 const FilterInfo& GetFilterInfo(Filter f);
 inline const char* FilterName(Filter f) { return GetFilterInfo(f).name; }

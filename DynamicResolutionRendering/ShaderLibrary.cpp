@@ -108,4 +108,33 @@ std::string ShaderLibrary::DefaultSpvDir(const std::string& option) {
   return env && *env ? env : DRR_DEFAULT_SHADER_DIR;
 }
 
+bool ShaderLoad::Load(std::initializer_list<Vertex> vertex, std::initializer_list<Pixel> pixel) {
+  std::vector<d3dl::ComPtr<d3dl::VertexShader>> vs(vertex.size());
+  std::vector<d3dl::ComPtr<d3dl::PixelShader>> ps(pixel.size());
+  std::vector<std::vector<uint32_t>> code(vertex.size());
+  size_t n = 0, i = 0;
+  for (const Vertex& v : vertex) {
+    bool c = false;
+    if (!library->CreateVertexShader(device, v.name, fromSource, vs[i].GetAddressOf(), &code[i], error, &c)) return false;
+    n += c;
+    ++i;
+  }
+  i = 0;
+  for (const Pixel& p : pixel) {
+    bool c = false;
+    if (!library->CreatePixelShader(device, p.name, fromSource, ps[i++].GetAddressOf(), error, &c)) return false;
+    n += c;
+  }
+  i = 0;
+  for (const Vertex& v : vertex) {
+    *v.shader = vs[i];
+    if (v.code) *v.code = std::move(code[i]);
+    ++i;
+  }
+  i = 0;
+  for (const Pixel& p : pixel) *p.shader = ps[i++];
+  compiled += n;
+  return true;
+}
+
 }  // namespace drr

@@ -5,6 +5,7 @@
 // recompiles the HLSL source with the same entry and defines (F4).
 #pragma once
 
+#include <initializer_list>
 #include <map>
 #include <string>
 #include <vector>
@@ -46,6 +47,26 @@ class ShaderLibrary {
   };
   std::string m_SpvDir, m_SourceDir;
   std::map<std::string, Entry> m_Entries;
+};
+
+// One pass's shaders by name, created all or none: a reload (F4) keeps the
+// old set on any error. compiled counts those compiled from HLSL.
+struct ShaderLoad {
+  struct Vertex {
+    const char* name;
+    d3dl::ComPtr<d3dl::VertexShader>* shader;
+    std::vector<uint32_t>* code = nullptr;  // the SPIR-V, for an input layout
+  };
+  struct Pixel {
+    const char* name;
+    d3dl::ComPtr<d3dl::PixelShader>* shader;
+  };
+  d3dl::Device* device = nullptr;
+  const ShaderLibrary* library = nullptr;
+  bool fromSource = false;
+  std::string* error = nullptr;
+  size_t compiled = 0;
+  bool Load(std::initializer_list<Vertex> vertex, std::initializer_list<Pixel> pixel);
 };
 
 }  // namespace drr

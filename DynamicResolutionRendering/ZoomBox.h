@@ -1,15 +1,11 @@
-// Zoom box, as the original's ZoomBox.cpp/.hlsl: the back buffer is copied to
-// a texture and a region of 2 % of its width and height around the zoom
+// Zoom box geometry, as the original's ZoomBox.cpp/.hlsl (the pass is
+// passes/ZoomBoxPass.h): the back buffer is copied to a texture and a region of 2 % of its width and height around the zoom
 // centre is shown 10x magnified (point sampling, clamped) in a box left of
 // the screen's centre line, with a white one-pixel frame around the box and
 // around the source region, joined by two lines.
 #pragma once
 
 #include <array>
-#include <string>
-
-#include "ShaderLibrary.h"
-#include "d3dl/D3DLike.h"
 
 namespace drr {
 
@@ -32,36 +28,5 @@ struct ZoomBoxGeometry {
 };
 // centre in UV of the back buffer (0..1, unclamped as the original's).
 ZoomBoxGeometry MakeZoomBoxGeometry(float centreU, float centreV);
-
-class ZoomBox {
- public:
-  bool Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* error);
-  // Keeps the old shaders on error (F4).
-  bool LoadShaders(const ShaderLibrary& shaders, bool fromSource, std::string* error);
-  void Release();
-  // Called when the back buffer changes size; the copy is made lazily.
-  void ReleaseCopy();
-  // Draws the box into bbRTV (bound by this call); the zoom centre in UV
-  // of the back buffer (the original's SetZoomCenterPosition).
-  void Render(d3dl::DeviceContext* ctx, d3dl::Texture2D* backBuffer, d3dl::RenderTargetView* bbRTV,
-              uint32_t bbW, uint32_t bbH, float centreU, float centreV);
-  uint64_t Bytes() const { return m_Bytes; }
-
- private:
-  bool EnsureCopy(d3dl::Texture2D* backBuffer);
-  void Upload(d3dl::DeviceContext* ctx, const ZoomBoxGeometry& g);
-
-  d3dl::Device* m_Device = nullptr;
-  d3dl::ComPtr<d3dl::VertexShader> m_ZoomVS, m_FrameVS;
-  d3dl::ComPtr<d3dl::PixelShader> m_ZoomPS, m_FramePS;
-  d3dl::ComPtr<d3dl::Buffer> m_CB;
-  d3dl::ComPtr<d3dl::SamplerState> m_Point;
-  d3dl::ComPtr<d3dl::DepthStencilState> m_NoDepth;
-  d3dl::ComPtr<d3dl::Texture2D> m_Copy;
-  d3dl::ComPtr<d3dl::ShaderResourceView> m_CopySRV;
-  uint32_t m_CopyW = 0, m_CopyH = 0;
-  d3dl::DXGI_FORMAT m_CopyFormat = d3dl::DXGI_FORMAT_UNKNOWN;
-  uint64_t m_Bytes = 0;
-};
 
 }  // namespace drr

@@ -162,9 +162,10 @@ const Mode kModes[] = {
     {"taa-symmetric", "--filter taa --symmetric-taa",
      {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]"},
      {"ClearPS", "MotionBlurDynamic", "ResolveTAAFast", "Scene"}},
+    // MarkOutside: a test aid the plan lists but passes_run does not count.
     {"marker-bilinear", "--filter bilinear --debug-marker-outside",
      {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
-     {"ClearPS", "MotionBlurDynamic", "ResolveBilinear", "Scene"}},
+     {"ClearPS", "MarkOutside", "MotionBlurDynamic", "ResolveBilinear", "Scene"}},
 };
 
 Options Parse(const char* extra) {
@@ -194,7 +195,7 @@ TEST_P(FramePlanModes, TargetsAndPassesAsTheSampleRan) {
   std::vector<std::string> targets;
   for (RT rt : plan.NeededTargets()) targets.push_back(RenderTargetSet::Name(rt));
   EXPECT_EQ(targets, m.targets) << m.name;
-  std::vector<std::string> passes = plan.passes;
+  std::vector<std::string> passes = plan.PassNames();
   std::sort(passes.begin(), passes.end());
   EXPECT_EQ(passes, m.passes) << m.name;
   // Each pass once a frame.
@@ -217,7 +218,7 @@ TEST(FramePlan, PassOrderOfTheDeferredTemporalUpsampleWithZoomAndGui) {
   const std::vector<std::string> expected = {"ClearPS", "ShadowMaps", "GBuffer", "SSAO", "Lighting",
                                              "MotionBlurDynamic", "TemporalUpsample", "SecondaryUpscale",
                                              "ZoomBox", "GUI"};
-  EXPECT_EQ(plan.passes, expected);
+  EXPECT_EQ(plan.PassNames(), expected);
   EXPECT_TRUE(plan.TAAU());
   EXPECT_TRUE(plan.secondary);
   EXPECT_FALSE(plan.flipsTargets);
@@ -226,9 +227,9 @@ TEST(FramePlan, PassOrderOfTheDeferredTemporalUpsampleWithZoomAndGui) {
 TEST(FramePlan, NoneClearsItsFinalTargetBeforeTheSceneOnlyWithTheFix) {
   const FramePlan original = PlanFrame(Parse("--filter none"), MatrixInputs());
   const FramePlan fixed = PlanFrame(Parse("--filter none --fix none-shows-rt"), MatrixInputs());
-  EXPECT_EQ(original.passes, (std::vector<std::string>{"ClearPS", "Scene", "ClearFinalNone", "MotionBlurDynamic",
+  EXPECT_EQ(original.PassNames(), (std::vector<std::string>{"ClearPS", "Scene", "ClearFinalNone", "MotionBlurDynamic",
                                                        "ResolveNone"}));
-  EXPECT_EQ(fixed.passes, (std::vector<std::string>{"ClearFinalNone", "ClearPS", "Scene", "MotionBlurDynamic",
+  EXPECT_EQ(fixed.PassNames(), (std::vector<std::string>{"ClearFinalNone", "ClearPS", "Scene", "MotionBlurDynamic",
                                                     "ResolveNone"}));
 }
 
@@ -240,4 +241,52 @@ TEST(FramePlan, TheOriginalsFlipQuirkAndItsFix) {
   EXPECT_FALSE(PlanFrame(Parse("--no-dynamic-resolution --filter taa"), MatrixInputs()).flipsTargets);
   EXPECT_TRUE(PlanFrame(Parse("--filter taa"), MatrixInputs()).flipsTargets);
   EXPECT_FALSE(PlanFrame(Parse("--filter taau"), MatrixInputs()).flipsTargets);
+}
+
+// The temporal state a plan leaves is the next plan's input (TemporalHistory):
+// TAA writes the other final target each frame and reads the last one once
+// the history holds a frame.
+TEST(FramePlan, TAAHistoryAlternatesAndReadsTheLastFrameOnceValid) {
+  FrameInputs in = MatrixInputs();
+  const Options o = Parse("--filter taa");
+  const FramePlan first = PlanFrame(o, in);
+  EXPECT_EQ(first.setup.cur, 1);
+  EXPECT_EQ(first.setup.prev, 1);  // nothing to read yet
+  EXPECT_TRUE(first.history.valid);
+  in.history = first.history;
+  const FramePlan second = PlanFrame(o, in);
+  EXPECT_EQ(second.setup.cur, 0);
+  EXPECT_EQ(second.setup.prev, 1);
+  EXPECT_EQ(second.scene.target, 0);
+  // The jitter pair alternates with the target written.
+  EXPECT_NE(second.setup.dc.jitterCurr[0], second.setup.dc.jitterPrev[0]);
+}
+
+// TAAU: the history pair alternates from the second frame, the Halton index
+// advances each frame and holds while paused.
+TEST(FramePlan, TAAUHistoryAndJitterIndex) {
+  FrameInputs in = MatrixInputs();
+  const FramePlan first = PlanFrame(Parse("--filter taau"), in);
+  EXPECT_FALSE(first.setup.historyValid);
+  EXPECT_EQ(first.history.jitterIndex, 1u);
+  in.history = first.history;
+  const FramePlan second = PlanFrame(Parse("--filter taau"), in);
+  EXPECT_TRUE(second.setup.historyValid);
+  EXPECT_EQ(second.setup.historyCur, 1 - first.setup.historyCur);
+  EXPECT_EQ(second.history.jitterIndex, 2u);
+  in.history = second.history;
+  const FramePlan paused = PlanFrame(Parse("--filter taau --pause"), in);
+  EXPECT_EQ(paused.history.jitterIndex, 2u);
+  EXPECT_EQ(paused.setup.uc.jitterPx[0], second.setup.uc.jitterPx[0]);
+}
+
+// Nothing temporal: the final target 0 every frame, no jitter.
+TEST(FramePlan, SpatialFiltersKeepTargetZeroWithoutJitter) {
+  FrameInputs in = MatrixInputs();
+  const FramePlan first = PlanFrame(Parse("--filter bicubic"), in);
+  in.history = first.history;
+  const FramePlan second = PlanFrame(Parse("--filter bicubic"), in);
+  EXPECT_EQ(second.setup.cur, 0);
+  EXPECT_FALSE(second.history.valid);
+  EXPECT_EQ(second.scene.jitterNdc, glm::vec2(0.0f));
 }
