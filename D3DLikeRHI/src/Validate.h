@@ -3,9 +3,11 @@
 // message naming the offending value, as the call would in D3D11's debug
 // layer, and returns whether the call may go on (HRESULT for factories).
 // The validators see the device through ValidationDevice (its log, format
-// queries, limits and features in plain numbers) and resources through
-// ResourceInfo (their D3D11 description); what they return is in D3D11 terms,
-// and the backend translates it (Views.cpp: formats, aspects, view types).
+// queries, limits and features in plain numbers), resources through
+// ResourceInfo (their D3D11 description), views through ViewInfo and queries
+// through QueryInfo, never a backend object; the contexts do the casts. What
+// they return is in D3D11 terms, and the backend translates it (Views.cpp:
+// formats, aspects, view types).
 // The Vulkan-side code after them assumes valid arguments.
 // ValidateDevice.cpp: object creation. ValidateViews.cpp: views and resolves.
 // ValidateContext.cpp: context calls. ValidateBlit.cpp, ValidateDraw.cpp.
