@@ -282,6 +282,10 @@ class ContextImpl : public DeviceContext, public BlitExtension {
                          const RECT* rects, UINT numRects, uint32_t w, uint32_t h);
   void ClearUnboundView(RTVImpl* v, const VkClearValue& cv, const RECT* rects, UINT numRects);
   int BoundRenderTargetSlot(const RTVImpl* v) const;
+  // Whether `list` was recorded on this context's device (false when null).
+  bool OwnList(const CommandList* list) const {
+    return list && static_cast<const CommandListImpl*>(list)->dev() == dev_;
+  }
 
   // ContextMap.cpp
   HRESULT MapDiscardConstants(BufferImpl* b, MAPPED_SUBRESOURCE* mapped);

@@ -84,8 +84,8 @@ void ContextImpl::ClearDepthStencilView(DepthStencilView* dsv, UINT flags, float
 }
 
 void ContextImpl::ClearView(View* view, const float color[4], const RECT* rects, UINT numRects) {
-  RTVImpl* v = ValidateClearView(*dev_, view, color, rects, numRects);
-  if (!v) return;
+  auto* v = dynamic_cast<RTVImpl*>(view);
+  if (!ValidateClearView(*dev_, view, v != nullptr, color, rects, numRects)) return;
   Hold(v);
   if (numRects == 0) {
     ClearRenderTargetView(v, color);

@@ -22,7 +22,9 @@ void ContextImpl::CSSetSamplers(UINT s, UINT n, SamplerState* const* v) { SetSam
 void ContextImpl::SetUavs(ComPtr<UAVImpl>* slots, const char* fn, UINT start, UINT num,
                           UnorderedAccessView* const* views) {
   for (UINT i = 0; i < num; ++i) {
-    UAVImpl* v = CheckedUav(*dev_, fn, views ? views[i] : nullptr, start + i);
+    auto* v = static_cast<UAVImpl*>(views ? views[i] : nullptr);
+    const ViewInfo info = v ? DescribeView(v->v) : ViewInfo{};
+    if (!ValidateUavBinding(*dev_, fn, v ? &info : nullptr, start + i)) v = nullptr;
     ComPtr<UAVImpl>& slot = slots[start + i];
     if (slot.Get() == v) continue;
     Assign(slot, v);
@@ -134,7 +136,7 @@ void ContextImpl::Dispatch(UINT x, UINT y, UINT z) {
 }
 
 void ContextImpl::DispatchIndirect(Buffer* args, UINT offset) {
-  if (!ValidateDispatchIndirect(*dev_, args, offset)) return;
+  if (!ValidateDispatchIndirect(*dev_, DescribeResource(args), offset)) return;
   BufferImpl* b = static_cast<BufferImpl*>(args);
   UseBuffer(b->vkBuffer(), b->sync(), usage::IndirectRead);
   if (!CommitCompute()) return;
@@ -205,16 +207,18 @@ void ContextImpl::ClearUav(UAVImpl* uav, const VkClearColorValue& value, uint32_
 }
 
 void ContextImpl::ClearUnorderedAccessViewUint(UnorderedAccessView* uav, const UINT values[4]) {
-  UAVImpl* v = ValidateClearUav(*dev_, uav, values, false);
-  if (!v) return;
+  auto* v = static_cast<UAVImpl*>(uav);
+  const ViewInfo info = v ? DescribeView(v->v) : ViewInfo{};
+  if (!ValidateClearUav(*dev_, v ? &info : nullptr, values, false)) return;
   VkClearColorValue color{};
   if (v->v.tex) ClearColorFromBits(v->v.format, values, &color);
   ClearUav(v, color, values[0]);  // raw and structured buffers: the first value, as in D3D11
 }
 
 void ContextImpl::ClearUnorderedAccessViewFloat(UnorderedAccessView* uav, const float values[4]) {
-  UAVImpl* v = ValidateClearUav(*dev_, uav, values, true);
-  if (!v) return;
+  auto* v = static_cast<UAVImpl*>(uav);
+  const ViewInfo info = v ? DescribeView(v->v) : ViewInfo{};
+  if (!ValidateClearUav(*dev_, v ? &info : nullptr, values, true)) return;
   VkClearColorValue color{};
   std::memcpy(color.float32, values, sizeof(color.float32));
   ClearUav(v, color, 0);

@@ -131,7 +131,8 @@ void ContextImpl::CopyResource(Resource* dst, Resource* src) {
 }
 
 void ContextImpl::GenerateMips(ShaderResourceView* srv) {
-  if (!ValidateGenerateMips(*dev_, srv)) return;
+  const ViewInfo info = srv ? DescribeView(static_cast<SRVImpl*>(srv)->v) : ViewInfo{};
+  if (!ValidateGenerateMips(*dev_, srv ? &info : nullptr)) return;
   const ViewCore& v = static_cast<SRVImpl*>(srv)->v;
   TextureCore* t = v.tex;
   EndRendering();

@@ -5,6 +5,7 @@
 // recorded (`rec_`) stays in this file. The immediate context executes lists
 // (ContextImmediate.cpp).
 #include "ContextDeferred.h"
+#include "Context.h"
 #include "Validate.h"
 
 namespace d3dl::impl {
@@ -131,7 +132,7 @@ HRESULT DeferredContext::FinishCommandList(BOOL restoreState, CommandList** out)
   return S_OK;
 }
 
-void DeferredContext::ExecuteCommandList(CommandList* list, BOOL) { ValidateExecuteCommandList(*dev_, true, list); }
+void DeferredContext::ExecuteCommandList(CommandList* list, BOOL) { ValidateExecuteCommandList(*dev_, true, list, OwnList(list)); }
 
 // ---------------------------------------------------------------------------
 // Recording: synchronisation state local to the list

@@ -2,6 +2,7 @@
 // creation, the ring slices it draws from, and the execution of command lists
 // recorded on deferred contexts (the common part is in Context*.cpp).
 #include "ContextImmediate.h"
+#include "Context.h"
 #include "Validate.h"
 
 namespace d3dl::impl {
@@ -29,7 +30,7 @@ HRESULT ImmediateContext::FinishCommandList(BOOL, CommandList** out) {
 }
 
 void ImmediateContext::ExecuteCommandList(CommandList* commandList, BOOL restoreState) {
-  if (!ValidateExecuteCommandList(*dev_, false, commandList)) return;
+  if (!ValidateExecuteCommandList(*dev_, false, commandList, OwnList(commandList))) return;
   auto* list = static_cast<CommandListImpl*>(commandList);
   ListRecording& r = list->rec();
   EndRendering();

@@ -82,7 +82,8 @@ HRESULT ReadTimestamp(DeviceImpl& dev, QueryImpl* q, void* data) {
 
 HRESULT ContextImpl::GetData(Query* query, void* data, UINT size, UINT flags) {
   auto* q = static_cast<QueryImpl*>(query);
-  if (!ValidateGetData(*dev_, q, data, size)) return E_INVALIDARG;
+  const QueryInfo info = q ? QueryInfo{q->GetDataSize(), q->serial != 0} : QueryInfo{};
+  if (!ValidateGetData(*dev_, q ? &info : nullptr, data, size)) return E_INVALIDARG;
   if (q->serial >= dev_->CurrentSerial()) {
     if (!(flags & ASYNC_GETDATA_DONOTFLUSH)) Flush();
     return S_FALSE;

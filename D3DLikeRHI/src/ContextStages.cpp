@@ -1,6 +1,7 @@
 // Hull, domain and geometry stages: the HS/DS/GS setters (the same per-stage
 // state as VS/PS), and what a draw's checks look at of the bound state
 // (ValidateDraw.cpp decides).
+#include "Context.h"
 #include "Validate.h"
 #include "Topology.h"
 

@@ -191,7 +191,10 @@ void ContextImpl::OMSetDepthStencilState(DepthStencilState* state, UINT stencilR
 
 void ContextImpl::OMSetRenderTargets(UINT num, RenderTargetView* const* rtvs, DepthStencilView* dsv) {
   if (!ValidateRenderTargets(*dev_, num, rtvs)) return;
-  if (!ValidateTargetSamples(*dev_, num, rtvs, dsv)) return;
+  UINT rtvSamples[SIMULTANEOUS_RENDER_TARGET_COUNT] = {};
+  for (UINT i = 0; i < num; ++i)
+    if (rtvs[i]) rtvSamples[i] = static_cast<RTVImpl*>(rtvs[i])->v.Samples();
+  if (!ValidateTargetSamples(*dev_, num, rtvSamples, dsv ? static_cast<DSVImpl*>(dsv)->v.Samples() : 0)) return;
   OutputMergerState& om = state_.om;
   RTVImpl* newRt[SIMULTANEOUS_RENDER_TARGET_COUNT] = {};
   for (UINT i = 0; i < num; ++i) newRt[i] = static_cast<RTVImpl*>(rtvs[i]);

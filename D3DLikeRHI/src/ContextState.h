@@ -3,6 +3,7 @@
 // hold references (ComPtr), as D3D11 does; nullptr states mean the defaults.
 #pragma once
 
+#include "OnceError.h"
 #include "PipelineCache.h"
 #include "Views.h"
 
@@ -92,29 +93,5 @@ constexpr uint32_t DirtyBits(ShaderStage stage, uint32_t graphicsBits) {
   return stage == ShaderStage::Compute ? graphicsBits << kComputeShift : graphicsBits;
 }
 
-// Errors a context logs only once (draws that keep failing the same way).
-enum class OnceError : uint32_t {
-  NoVertexShader,
-  NoRenderTarget,
-  NoIndexBuffer,
-  NoTopology,
-  ProgramLayoutFailed,
-  PipelineFailed,
-  StaleDynamicBuffer,
-  IndexBufferNeverMapped,
-  DescriptorSetFailed,
-  TooManyTimestamps,
-  // Hull, domain and geometry stages that do not fit (CheckStageTopology)
-  HullWithoutDomain,
-  DomainWithoutHull,
-  PatchListWithoutHull,
-  HullWithoutPatchList,
-  GeometryInputMismatch,
-  // Dispatches, UAVs
-  NoComputeShader,
-  UnboundUav,
-  NoFragmentStores,
-};
-const char* OnceErrorMessage(OnceError e);
 
 }  // namespace d3dl::impl

@@ -3,15 +3,19 @@
 // message naming the offending value, as the call would in D3D11's debug
 // layer, and returns whether the call may go on (HRESULT for factories).
 // The validators see the device through ValidationDevice (its log, format
-// queries, limits and features in plain numbers) and resources through
-// ResourceInfo (their D3D11 description); what they return is in D3D11 terms,
-// and the backend translates it (Views.cpp: formats, aspects, view types).
+// queries, limits and features in plain numbers), resources through
+// ResourceInfo (their D3D11 description), views through ViewInfo and queries
+// through QueryInfo, never a backend object; the contexts do the casts. What
+// they return is in D3D11 terms, and the backend translates it (Views.cpp:
+// formats, aspects, view types).
 // The Vulkan-side code after them assumes valid arguments.
 // ValidateDevice.cpp: object creation. ValidateViews.cpp: views and resolves.
 // ValidateContext.cpp: context calls. ValidateBlit.cpp, ValidateDraw.cpp.
 #pragma once
 
-#include "Context.h"
+#include "Formats.h"
+#include "OnceError.h"
+#include "Stages.h"
 #include "ValidationDevice.h"
 
 namespace d3dl::impl {
@@ -109,12 +113,16 @@ bool ValidateIndexBuffer(ValidationDevice& dev, const BUFFER_DESC* desc, DXGI_FO
 bool ValidateViewports(ValidationDevice& dev, UINT num, const VIEWPORT* viewports);
 bool ValidateScissorRects(ValidationDevice& dev, UINT num, const RECT* rects);
 bool ValidateRenderTargets(ValidationDevice& dev, UINT num, RenderTargetView* const* rtvs);
-bool ValidateTargetSamples(ValidationDevice& dev, UINT num, RenderTargetView* const* rtvs, DepthStencilView* dsv);
+// The sample counts of the `num` render targets (0: an empty slot) and of
+// the depth-stencil view (0: none) must agree.
+bool ValidateTargetSamples(ValidationDevice& dev, UINT num, const UINT* rtvSamples, UINT dsvSamples);
 
 bool ValidateClearRenderTargetView(ValidationDevice& dev, RenderTargetView* rtv, const float color[4]);
 bool ValidateClearDepthStencilView(ValidationDevice& dev, DepthStencilView* dsv);
-// The render-target view to clear, or nullptr (logged).
-RTVImpl* ValidateClearView(ValidationDevice& dev, View* view, const float color[4], const RECT* rects, UINT numRects);
+// Whether `view` can be cleared (logged when not); `renderTarget`: it is a
+// render-target view.
+bool ValidateClearView(ValidationDevice& dev, const View* view, bool renderTarget, const float color[4],
+                       const RECT* rects, UINT numRects);
 
 HRESULT ValidateMap(ValidationDevice& dev, const ResourceInfo& r, UINT sub, MAP type, const MAPPED_SUBRESOURCE* mapped);
 // The region to write: [left, right) of a buffer, or a box inside a texture
@@ -130,7 +138,8 @@ bool ValidateCopyTextureRegion(ValidationDevice& dev, const ResourceInfo& dst, U
 // Whole-resource checks; each subresource of a texture copy is then checked
 // with ValidateCopyTextureRegion.
 bool ValidateCopyResource(ValidationDevice& dev, const ResourceInfo& dst, const ResourceInfo& src, bool same);
-bool ValidateGenerateMips(ValidationDevice& dev, ShaderResourceView* srv);
+// `srv`: the view (null: none given).
+bool ValidateGenerateMips(ValidationDevice& dev, const ViewInfo* srv);
 
 // ResolveSubresource (ValidateViews.cpp): multisampled source, single-sampled
 // destination of the same size, `format` in both families, resolvable.
@@ -149,24 +158,34 @@ bool BlitIsLinear(const RECT& dstRect, const RECT& srcRect, FILTER filter);
 bool ValidateTopology(ValidationDevice& dev, PRIMITIVE_TOPOLOGY t);
 
 // UAV binding and dispatch arguments (ValidateContext.cpp).
-// A UAV to bind at `slot`, or nullptr (logged) when it cannot be bound.
-UAVImpl* CheckedUav(ValidationDevice& dev, const char* fn, UnorderedAccessView* uav, UINT slot);
+// Whether a UAV (null: unbinding) may be bound at `slot`; false (logged) when
+// it names no resource (the slot is then unbound).
+bool ValidateUavBinding(ValidationDevice& dev, const char* fn, const ViewInfo* uav, UINT slot);
 bool ValidateDispatch(ValidationDevice& dev, UINT x, UINT y, UINT z);
-bool ValidateDispatchIndirect(ValidationDevice& dev, Buffer* args, UINT offset);
-// The UAV to clear, or nullptr (logged); `isFloat`: ClearUnorderedAccessViewFloat.
-UAVImpl* ValidateClearUav(ValidationDevice& dev, UnorderedAccessView* uav, const void* values, bool isFloat);
+// `args`: the argument buffer (UNKNOWN dimension: null).
+bool ValidateDispatchIndirect(ValidationDevice& dev, const ResourceInfo& args, UINT offset);
+// Whether the UAV (null: none given) can be cleared (logged when not);
+// `isFloat`: ClearUnorderedAccessViewFloat.
+bool ValidateClearUav(ValidationDevice& dev, const ViewInfo* uav, const void* values, bool isFloat);
 bool ValidateOMUavs(ValidationDevice& dev, UINT numRTVs, UINT uavStart, UINT numUAVs);
 // Whether ClearUnorderedAccessViewUint can write the bits of this view format
 // exactly (ContextCompute.cpp).
 bool UavClearBitsSupported(DXGI_FORMAT f);
 
 bool ValidateBegin(ValidationDevice& dev, const QUERY_DESC& desc);
-bool ValidateGetData(ValidationDevice& dev, const QueryImpl* q, const void* data, UINT size);
+// What GetData checks of a query: the size of its data and whether it was ended.
+struct QueryInfo {
+  UINT dataSize = 0;
+  bool ended = false;
+};
+// `q`: the query (null: none given).
+bool ValidateGetData(ValidationDevice& dev, const QueryInfo* q, const void* data, UINT size);
 
 // ---- deferred contexts (ValidateContext.cpp)
 HRESULT ValidateCreateDeferredContext(ValidationDevice& dev, UINT flags, DeviceContext** out);
 HRESULT ValidateFinishCommandList(ValidationDevice& dev, bool deferredContext, CommandList** out);
-bool ValidateExecuteCommandList(ValidationDevice& dev, bool deferredContext, CommandList* list);
+// `ownList`: `list` was recorded on this device.
+bool ValidateExecuteCommandList(ValidationDevice& dev, bool deferredContext, const CommandList* list, bool ownList);
 // Map on a deferred context: DYNAMIC buffers, WRITE_DISCARD, or NO_OVERWRITE
 // after a WRITE_DISCARD of the same buffer in the list being recorded.
 HRESULT ValidateDeferredMap(ValidationDevice& dev, const ResourceInfo& r, UINT sub, MAP type,

@@ -1,5 +1,7 @@
 // Validation of BlitExtension::BlitRegion: the two textures, the rectangles
 // inside their first mip, and formats the device can blit (see Validate.h).
+#include <cstring>
+
 #include "Validate.h"
 
 namespace d3dl::impl {

@@ -62,11 +62,11 @@ bool ValidateRenderTargets(ValidationDevice& dev, UINT num, RenderTargetView* co
 }
 
 // D3D11: every bound view has the same sample count (one rasterization rate).
-bool ValidateTargetSamples(ValidationDevice& dev, UINT num, RenderTargetView* const* rtvs, DepthStencilView* dsv) {
-  uint32_t samples = dsv ? static_cast<DSVImpl*>(dsv)->v.Samples() : 0;
+bool ValidateTargetSamples(ValidationDevice& dev, UINT num, const UINT* rtvSamples, UINT dsvSamples) {
+  uint32_t samples = dsvSamples;
   for (UINT i = 0; i < num; ++i) {
-    if (!rtvs[i]) continue;
-    const uint32_t n = static_cast<RTVImpl*>(rtvs[i])->v.Samples();
+    if (!rtvSamples[i]) continue;
+    const uint32_t n = rtvSamples[i];
     if (samples && n != samples) {
       dev.Log(LogLevel::Error, "OMSetRenderTargets: render target %u has SampleDesc.Count %u, another bound view %u", i, n, samples);
       return false;
@@ -89,14 +89,14 @@ bool ValidateClearDepthStencilView(ValidationDevice& dev, DepthStencilView* dsv)
   return false;
 }
 
-RTVImpl* ValidateClearView(ValidationDevice& dev, View* view, const float color[4], const RECT* rects, UINT numRects) {
+bool ValidateClearView(ValidationDevice& dev, const View* view, bool renderTarget, const float color[4],
+                       const RECT* rects, UINT numRects) {
   if (!view || !color || (numRects && !rects)) {
     dev.Log(LogLevel::Error, "ClearView: %s is null", !view ? "pView" : !color ? "Color" : "pRect");
-    return nullptr;
+    return false;
   }
-  auto* v = dynamic_cast<RTVImpl*>(view);
-  if (!v) dev.Log(LogLevel::Error, "ClearView: only render-target views are supported");
-  return v;
+  if (!renderTarget) dev.Log(LogLevel::Error, "ClearView: only render-target views are supported");
+  return renderTarget;
 }
 
 // ---------------------------------------------------------------------------
@@ -342,19 +342,19 @@ bool ValidateCopyResource(ValidationDevice& dev, const ResourceInfo& d, const Re
   return true;
 }
 
-bool ValidateGenerateMips(ValidationDevice& dev, ShaderResourceView* srv) {
+bool ValidateGenerateMips(ValidationDevice& dev, const ViewInfo* srv) {
   if (!srv) {
     dev.Log(LogLevel::Error, "GenerateMips: pShaderResourceView is null");
     return false;
   }
-  const TextureCore* t = static_cast<SRVImpl*>(srv)->v.tex;
-  if (!t || !(t->desc.MiscFlags & RESOURCE_MISC_GENERATE_MIPS)) {
+  const ResourceInfo& t = srv->resource;
+  if (!t.IsTexture() || !(t.miscFlags & RESOURCE_MISC_GENERATE_MIPS)) {
     dev.Log(LogLevel::Error, "GenerateMips: the texture was not created with RESOURCE_MISC_GENERATE_MIPS");
     return false;
   }
   const uint32_t need = FORMAT_FEATURE_BLIT_SRC | FORMAT_FEATURE_BLIT_DST | FORMAT_FEATURE_FILTER_LINEAR;
-  if ((dev.FormatFeatures(t->desc.Format) & need) != need) {
-    dev.Log(LogLevel::Error, "GenerateMips: format %s cannot be blitted with linear filtering", t->fmt->name);
+  if ((dev.FormatFeatures(t.format) & need) != need) {
+    dev.Log(LogLevel::Error, "GenerateMips: format %s cannot be blitted with linear filtering", FormatName(t.format));
     return false;
   }
   return true;
@@ -368,16 +368,16 @@ bool ValidateBegin(ValidationDevice& dev, const QUERY_DESC& desc) {
   return false;
 }
 
-bool ValidateGetData(ValidationDevice& dev, const QueryImpl* q, const void* data, UINT size) {
+bool ValidateGetData(ValidationDevice& dev, const QueryInfo* q, const void* data, UINT size) {
   if (!q) {
     dev.Log(LogLevel::Error, "GetData: pAsync is null");
     return false;
   }
-  if (data && size != q->GetDataSize()) {
-    dev.Log(LogLevel::Error, "GetData: DataSize %u, expected %u", size, q->GetDataSize());
+  if (data && size != q->dataSize) {
+    dev.Log(LogLevel::Error, "GetData: DataSize %u, expected %u", size, q->dataSize);
     return false;
   }
-  if (q->serial == 0) {
+  if (!q->ended) {
     dev.Log(LogLevel::Error, "GetData: the query was never ended");
     return false;
   }
@@ -417,7 +417,7 @@ HRESULT ValidateFinishCommandList(ValidationDevice& dev, bool deferredContext, C
   return E_INVALIDARG;
 }
 
-bool ValidateExecuteCommandList(ValidationDevice& dev, bool deferredContext, CommandList* list) {
+bool ValidateExecuteCommandList(ValidationDevice& dev, bool deferredContext, const CommandList* list, bool ownList) {
   if (deferredContext) {
     dev.Log(LogLevel::Error, "ExecuteCommandList: not supported on deferred contexts by this port (execute on the immediate context)");
     return false;
@@ -426,7 +426,7 @@ bool ValidateExecuteCommandList(ValidationDevice& dev, bool deferredContext, Com
     dev.Log(LogLevel::Error, "ExecuteCommandList: pCommandList is null");
     return false;
   }
-  if (static_cast<CommandListImpl*>(list)->dev() == &dev) return true;
+  if (ownList) return true;
   dev.Log(LogLevel::Error, "ExecuteCommandList: the command list belongs to another device");
   return false;
 }
@@ -463,11 +463,10 @@ bool ValidateDeferredUpdate(ValidationDevice& dev, const ResourceInfo& dst) {
 }
 
 // UAV binding and dispatch arguments
-UAVImpl* CheckedUav(ValidationDevice& dev, const char* fn, UnorderedAccessView* uav, UINT slot) {
-  auto* v = static_cast<UAVImpl*>(uav);
-  if (!v || v->v.tex || v->v.buf) return v;
+bool ValidateUavBinding(ValidationDevice& dev, const char* fn, const ViewInfo* uav, UINT slot) {
+  if (!uav || uav->resource.dimension != RESOURCE_DIMENSION_UNKNOWN) return true;
   dev.Log(LogLevel::Error, "%s: slot %u: not an unordered access view; unbound", fn, slot);
-  return nullptr;
+  return false;
 }
 
 bool ValidateDispatch(ValidationDevice& dev, UINT x, UINT y, UINT z) {
@@ -479,39 +478,37 @@ bool ValidateDispatch(ValidationDevice& dev, UINT x, UINT y, UINT z) {
   return false;
 }
 
-bool ValidateDispatchIndirect(ValidationDevice& dev, Buffer* args, UINT offset) {
-  const BufferImpl* b = static_cast<BufferImpl*>(args);
-  if (!b) {
+bool ValidateDispatchIndirect(ValidationDevice& dev, const ResourceInfo& args, UINT offset) {
+  if (args.dimension == RESOURCE_DIMENSION_UNKNOWN) {
     dev.Log(LogLevel::Error, "DispatchIndirect: pBufferForArgs is null");
-  } else if (!(b->desc().MiscFlags & RESOURCE_MISC_DRAWINDIRECT_ARGS)) {
+  } else if (!(args.miscFlags & RESOURCE_MISC_DRAWINDIRECT_ARGS)) {
     dev.Log(LogLevel::Error, "DispatchIndirect: the buffer was not created with RESOURCE_MISC_DRAWINDIRECT_ARGS");
-  } else if (offset % 4 || uint64_t(offset) + 12 > b->size()) {
+  } else if (offset % 4 || uint64_t(offset) + 12 > args.byteWidth) {
     dev.Log(LogLevel::Error, "DispatchIndirect: AlignedByteOffsetForArgs %u must be a multiple of 4 with 12 bytes after it in the %u-byte buffer",
-            offset, b->size());
+            offset, args.byteWidth);
   } else {
     return true;
   }
   return false;
 }
 
-UAVImpl* ValidateClearUav(ValidationDevice& dev, UnorderedAccessView* uav, const void* values, bool isFloat) {
+bool ValidateClearUav(ValidationDevice& dev, const ViewInfo* uav, const void* values, bool isFloat) {
   const char* fn = isFloat ? "ClearUnorderedAccessViewFloat" : "ClearUnorderedAccessViewUint";
-  auto* v = static_cast<UAVImpl*>(uav);
-  if (!v || !values) {
-    dev.Log(LogLevel::Error, "%s: %s is null", fn, v ? "Values" : "pUnorderedAccessView");
-    return nullptr;
+  if (!uav || !values) {
+    dev.Log(LogLevel::Error, "%s: %s is null", fn, uav ? "Values" : "pUnorderedAccessView");
+    return false;
   }
-  const FormatInfo* f = v->v.tex ? GetFormatInfo(v->v.dxgiFormat) : nullptr;
+  const FormatInfo* f = uav->resource.IsTexture() ? GetFormatInfo(uav->format) : nullptr;
   if (isFloat && (!f || f->integer)) {
     dev.Log(LogLevel::Error, "%s: only views of FLOAT/UNORM textures take float clears (use ClearUnorderedAccessViewUint for %s)", fn,
             f ? f->name : "raw and structured buffers");
-    return nullptr;
+    return false;
   }
-  if (f && !isFloat && !UavClearBitsSupported(v->v.dxgiFormat)) {
+  if (f && !isFloat && !UavClearBitsSupported(uav->format)) {
     dev.Log(LogLevel::Error, "%s: bit-exact clears of %s are not supported", fn, f->name);
-    return nullptr;
+    return false;
   }
-  return v;
+  return true;
 }
 
 bool ValidateOMUavs(ValidationDevice& dev, UINT numRTVs, UINT uavStart, UINT numUAVs) {

@@ -71,5 +71,11 @@ struct ResourceInfo {
   }
 };
 ResourceInfo DescribeResource(Resource* r);  // Resources.cpp
+// A view in D3D11 terms (DescribeView, Views.cpp): the resource it names
+// (UNKNOWN dimension: none) and the format it reads a texture as.
+struct ViewInfo {
+  ResourceInfo resource;
+  DXGI_FORMAT format = DXGI_FORMAT_UNKNOWN;
+};
 
 }  // namespace d3dl::impl

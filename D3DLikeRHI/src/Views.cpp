@@ -7,6 +7,13 @@
 
 namespace d3dl::impl {
 
+ViewInfo DescribeView(const ViewCore& v) {
+  ViewInfo info;
+  if (v.tex || v.buf) info.resource = DescribeResource(v.resource);
+  info.format = v.dxgiFormat;
+  return info;
+}
+
 bool RebuildViews(DeviceImpl* dev, ViewCore& v) {
   for (VkImageView view : v.views) dev->Defer(VK_OBJECT_TYPE_IMAGE_VIEW, reinterpret_cast<uint64_t>(view));
   v.views.clear();

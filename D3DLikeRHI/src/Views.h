@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "Resources.h"
+#include "ValidationDevice.h"
 
 namespace d3dl::impl {
 
@@ -33,6 +34,8 @@ struct ViewFormat;  // Validate.h
 // The Vulkan format and aspect of a texture view (`v.tex` set) from the DXGI
 // format and aspect its validation settled on (Views.cpp).
 void SetViewFormat(ViewCore& v, const ViewFormat& format);
+// What the validation layer sees of a view (ValidationDevice.h).
+ViewInfo DescribeView(const ViewCore& v);
 
 template <class Iface, ViewKind Kind>
 class ViewImpl final : public Child<Iface> {

@@ -333,6 +333,12 @@ TEST_F(RhiValidation, ComputeAndUavArgumentsAreRejectedWithAMessage) {
   const float values[4] = {};
   context()->ClearUnorderedAccessViewFloat(u, values);
   expectLogged("float clears");
+  context()->ClearUnorderedAccessViewFloat(nullptr, values);
+  expectLogged("pUnorderedAccessView is null");
+  context()->DispatchIndirect(nullptr, 0);
+  expectLogged("pBufferForArgs is null");
+  EXPECT_EQ(context()->GetData(nullptr, nullptr, 0, 0), E_INVALIDARG);
+  expectLogged("pAsync is null");
   auto rt = MakeRenderTarget(4, 4);
   context()->OMSetRenderTargetsAndUnorderedAccessViews(1, rt.rtv.GetAddressOf(), nullptr, 0, 1, &u, nullptr);
   expectLogged("overlaps");
