@@ -350,18 +350,12 @@ double RobustController::Correct(double s, double measured, const ControlTarget&
   return next;
 }
 
-double RobustController::Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) {
-  const ControlTarget tgt = SanitizeTarget(target);
-  const double s = ClampScale(currentScale, tgt);
-  const double aim = AimOf(tgt);
-  auto finish = [&](double next) {
-    m_LastAppliedScale = next;
-    return next;
-  };
-
-  // Someone else changed the scale (manual slider, resize, re-init): the
-  // samples and the secant no longer describe it. 1 % tolerance absorbs the
-  // viewport quantisation of what we returned.
+// The frames Update holds on without looking at the time: someone else
+// changed the scale (the samples no longer describe it), frames still in
+// flight at the previous scale, a bad or CPU-bound time, or a time that names
+// an earlier scale. Resets the samples where the scale moved under us.
+bool RobustController::HoldsWithoutSample(double s, const FrameTiming& timing, const ControlTarget& tgt) {
+  // 1 % tolerance absorbs the viewport quantisation of what we returned.
   if (m_LastAppliedScale > 0.0 && std::abs(std::log(s / m_LastAppliedScale)) > 0.01) {
     m_Samples.clear();
     m_Outliers.clear();
@@ -373,25 +367,26 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
   if (paired) m_SkipFrames = 0;
   if (m_SkipFrames > 0) {  // still measuring frames rendered at the previous scale
     --m_SkipFrames;
-    return finish(s);
+    return true;
   }
-  const double t = timing.gpuInnerSeconds;
-  if (!FinitePositive(t)) return finish(s);  // NaN / Inf / zero / negative: hold
-  if (IsCpuBoundFrame(timing, tgt)) {        // the GPU is not what limits the frame
+  if (!FinitePositive(timing.gpuInnerSeconds)) return true;  // NaN / Inf / zero / negative: hold
+  if (IsCpuBoundFrame(timing, tgt)) {                          // the GPU is not what limits the frame
     m_OverBudget = 0;
-    return finish(s);
+    return true;
   }
-  if (paired && std::abs(std::log(timing.gpuScale / s)) > 0.01) return finish(s);  // an earlier scale's frame
+  return paired && std::abs(std::log(timing.gpuScale / s)) > 0.01;  // an earlier scale's frame
+}
 
-  // Outliers relative to the running median (or, right after a correction, to
-  // the aim we just steered to).
+// Takes the time t into the window, or into the outliers (relative to the
+// running median, or right after a correction to the aim we steered to).
+// Returns false while an outlier waits to persist; *outlier says whether t
+// was one (a persistent outlier becomes the new window: the new load).
+bool RobustController::AcceptSample(double t, double s, double aim, bool* outlier) {
   const double reference = m_Samples.empty() ? (m_HaveSecant ? aim : 0.0) : Median(m_Samples);
-  const bool outlier =
-      reference > 0.0 && (t > m_Params.outlierFactor * reference || t * m_Params.outlierFactor < reference);
-  if (outlier) {
+  *outlier = reference > 0.0 && (t > m_Params.outlierFactor * reference || t * m_Params.outlierFactor < reference);
+  if (*outlier) {
     m_Outliers.push_back(t);
-    if (static_cast<int>(m_Outliers.size()) < m_Params.outlierPersistFrames) return finish(s);
-    // Persistent: this is the new load, not a spike.
+    if (static_cast<int>(m_Outliers.size()) < m_Params.outlierPersistFrames) return false;
     m_Samples = m_Outliers;
     if (m_Params.riskQuantile > 0.0)
       for (double x : m_Outliers) m_Recent.push_back({x, s});
@@ -411,6 +406,50 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
   }
   if (static_cast<int>(m_Samples.size()) > m_Params.medianWindow) m_Samples.erase(m_Samples.begin());
   while (static_cast<int>(m_Recent.size()) > m_Params.riskFrames) m_Recent.erase(m_Recent.begin());
+  return true;
+}
+
+// The steady-state step: the window's median against the set point, inside a
+// deadband widened to the median's noise (~1.25 sigma / sqrt(n)) with the set
+// point lowered by the part of the band beyond `deadband`, so a noisy timer
+// does not let the GPU time drift past aim + deadband; an increase needs
+// enough samples and is decided on the upper quantile.
+double RobustController::SteadyStep(double s, const ControlTarget& tgt) {
+  if (static_cast<int>(m_Samples.size()) < m_Params.minSamples) return s;
+  const double median = Median(m_Samples);
+  m_Spread = 0.0;
+  if (m_Params.spreadNoise && m_Samples.size() >= 5) {  // correlated noise: successive differences miss it
+    std::vector<double> dev;
+    for (double x : m_Samples) dev.push_back(std::abs(std::log(x / median)));
+    m_Spread = 1.4826 * Median(dev);
+  }
+  const double bandNow = Band(static_cast<int>(m_Samples.size()));
+  const double setPoint = SetPoint(tgt);
+  if (std::abs(std::log(median / setPoint)) <= bandNow) return s;  // no swimming
+  if (median < setPoint) {
+    if (static_cast<int>(m_Samples.size()) < m_Params.minSamplesUp) return s;
+    if (m_Params.upQuantile > 0.5) {
+      std::vector<double> sorted = m_Samples;
+      std::sort(sorted.begin(), sorted.end());
+      const double upper = sorted[static_cast<std::size_t>(m_Params.upQuantile * (sorted.size() - 1) + 0.5)];
+      if (upper >= setPoint) return s;
+      return Correct(s, std::max(median, upper), tgt, false);
+    }
+  }
+  return Correct(s, median, tgt, false);
+}
+
+double RobustController::Update(double currentScale, const FrameTiming& timing, const ControlTarget& target) {
+  const ControlTarget tgt = SanitizeTarget(target);
+  const double s = ClampScale(currentScale, tgt);
+  auto finish = [&](double next) {
+    m_LastAppliedScale = next;
+    return next;
+  };
+  if (HoldsWithoutSample(s, timing, tgt)) return finish(s);
+  const double t = timing.gpuInnerSeconds;
+  bool outlier = false;
+  if (!AcceptSample(t, s, AimOf(tgt), &outlier)) return finish(s);
 
   // Panic on sustained (or a large, plausible) overload.
   m_OverBudget = t > tgt.budgetSeconds ? m_OverBudget + 1 : 0;
@@ -420,32 +459,7 @@ double RobustController::Update(double currentScale, const FrameTiming& timing, 
     const double least = *std::min_element(m_Samples.end() - n, m_Samples.end());
     if (least > tgt.budgetSeconds || outlier) return finish(Correct(s, outlier ? Median(m_Samples) : least, tgt, true));
   }
-
-  if (static_cast<int>(m_Samples.size()) < m_Params.minSamples) return finish(s);
-  const double median = Median(m_Samples);
-  m_Spread = 0.0;
-  if (m_Params.spreadNoise && m_Samples.size() >= 5) {  // correlated noise: successive differences miss it
-    std::vector<double> dev;
-    for (double x : m_Samples) dev.push_back(std::abs(std::log(x / median)));
-    m_Spread = 1.4826 * Median(dev);
-  }
-  // Deadband, widened to the noise of the median (~1.25 sigma / sqrt(n)), and
-  // a set point lowered by the part of the band that exceeds `deadband`, so a
-  // noisy timer does not let the GPU time drift past aim + deadband.
-  const double bandNow = Band(static_cast<int>(m_Samples.size()));
-  const double setPoint = SetPoint(tgt);
-  if (std::abs(std::log(median / setPoint)) <= bandNow) return finish(s);  // no swimming
-  if (median < setPoint) {  // an increase: enough samples, and decided on the upper quantile
-    if (static_cast<int>(m_Samples.size()) < m_Params.minSamplesUp) return finish(s);
-    if (m_Params.upQuantile > 0.5) {
-      std::vector<double> sorted = m_Samples;
-      std::sort(sorted.begin(), sorted.end());
-      const double upper = sorted[static_cast<std::size_t>(m_Params.upQuantile * (sorted.size() - 1) + 0.5)];
-      if (upper >= setPoint) return finish(s);
-      return finish(Correct(s, std::max(median, upper), tgt, false));
-    }
-  }
-  return finish(Correct(s, median, tgt, false));
+  return finish(SteadyStep(s, tgt));
 }
 
 // ------------------------------------------------------------------ factory

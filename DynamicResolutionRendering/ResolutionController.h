@@ -293,6 +293,9 @@ public:
 
 private:
   double Correct(double scale, double measured, const ControlTarget& target, bool panic);
+  bool HoldsWithoutSample(double scale, const FrameTiming& timing, const ControlTarget& target);
+  bool AcceptSample(double t, double scale, double aim, bool* outlier);
+  double SteadyStep(double scale, const ControlTarget& target);
   double Band(int samples) const;                    // relative deadband for a median of `samples`
   double SetPoint(const ControlTarget& target) const; // GPU time steered to
   Params m_Params;
