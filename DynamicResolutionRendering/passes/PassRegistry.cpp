@@ -47,6 +47,7 @@ PassRegistry::~PassRegistry() = default;
 
 bool PassRegistry::Init(d3dl::Device* device, const ShaderLibrary& shaders, std::string* error) {
   m_Device = device;
+  m_Compute.reset();  // a second Init (renderer or device change) makes it anew on this device
   size_t compiled = 0;
   if (!LoadShaders(shaders, false, error, &compiled) || !m_Kit.Init(device, error) ||
       !m_Deferred.Init(device, error))
@@ -75,6 +76,7 @@ bool PassRegistry::LoadShaders(const ShaderLibrary& shaders, bool fromSource, st
 void PassRegistry::Release() {
   for (auto& pass : m_Passes) pass->Release();
   if (m_Compute) m_Compute->Release();
+  m_Compute.reset();
   m_Deferred.Release();
   m_Kit.Release();
 }
