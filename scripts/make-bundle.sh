@@ -46,6 +46,8 @@ mkdir -p "$out/bin" "$out/lib" "$out/Media"
 cp "$build/DynamicResolutionRendering/DynamicResolutionRendering" "$build/DynamicResolutionRendering/drr_import_worker" \
    "$build/Tests/recording/drr_rhi_bench" "$build/Tests/recording/drr_scene_record_bench" "$out/bin/"
 for suite in "${suites[@]}"; do cp "$build/$suite" "$out/bin/"; done
+# An OpenImageIO build (--from-build) opens its image module beside the executable.
+if [ -f "$build/lib/libdrr_imageio_oiio.so" ]; then cp "$build/lib/libdrr_imageio_oiio.so" "$out/bin/"; fi
 strip "$out"/bin/*
 # The folders keep the build's names: the suites read them at the build's
 # path, which scripts/device-checks.sh links to the bundle (build-path).

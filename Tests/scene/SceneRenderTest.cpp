@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include <OpenImageIO/imageio.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "RenderTest.h"
+#include "imageio/ImageFile.h"
 #include "scene/Scene.h"
 
 using namespace drr;
@@ -48,12 +48,9 @@ class SceneRender : public drrtest::RenderTest {
     SetViewport(w, h);
   }
   static void SavePng(const std::string& file, const drrtest::Image& img) {
-    auto out = OIIO::ImageOutput::create(file);
-    ASSERT_TRUE(out);
-    OIIO::ImageSpec spec(img.width, img.height, 4, OIIO::TypeDesc::UINT8);
-    ASSERT_TRUE(out->open(file, spec));
-    out->write_image(OIIO::TypeDesc::UINT8, img.pixels.data());
-    out->close();
+    std::string error;
+    ASSERT_TRUE(drr::WriteImageFile(file, uint32_t(img.width), uint32_t(img.height), 4, img.pixels.data(), &error))
+        << error;
   }
   static std::string ShaderDirForScene() { return ""; }  // the build's shader folder
 };
@@ -197,12 +194,8 @@ TEST_F(SceneRender, MatrixConventionVelocityAndJitter) {
 namespace {
 // A w x 1 RGBA PNG.
 void WritePng(const fs::path& file, const std::vector<uint8_t>& rgba) {
-  auto out = OIIO::ImageOutput::create(file.string());
-  ASSERT_TRUE(out);
-  OIIO::ImageSpec spec(int(rgba.size() / 4), 1, 4, OIIO::TypeDesc::UINT8);
-  ASSERT_TRUE(out->open(file.string(), spec));
-  out->write_image(OIIO::TypeDesc::UINT8, rgba.data());
-  out->close();
+  std::string error;
+  ASSERT_TRUE(drr::WriteImageFile(file.string(), uint32_t(rgba.size() / 4), 1, 4, rgba.data(), &error)) << error;
 }
 
 // A quad of half-size 1 centred at the origin, spanning u and v (its normal

@@ -5,11 +5,11 @@
 // camera), and the animation moves the picture.
 #include <gtest/gtest.h>
 
-#include <OpenImageIO/imageio.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "ArenaGenSdkMesh.h"
 #include "RenderTest.h"
+#include "imageio/ImageFile.h"
 #include "scene/Scene.h"
 
 using namespace drr;
@@ -52,11 +52,9 @@ size_t DrawnPixels(const drrtest::Image& img) {
 }
 
 void SavePng(const std::string& file, const drrtest::Image& img) {
-  auto out = OIIO::ImageOutput::create(file);
-  ASSERT_TRUE(out);
-  ASSERT_TRUE(out->open(file, OIIO::ImageSpec(int(img.width), int(img.height), 4, OIIO::TypeDesc::UINT8)));
-  out->write_image(OIIO::TypeDesc::UINT8, img.pixels.data());
-  out->close();
+  std::string error;
+  ASSERT_TRUE(drr::WriteImageFile(file, uint32_t(img.width), uint32_t(img.height), 4, img.pixels.data(), &error))
+      << error;
 }
 
 }  // namespace

@@ -17,10 +17,10 @@
 #include <fstream>
 #include <random>
 
-#include <OpenImageIO/imageio.h>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "RenderTest.h"
+#include "imageio/ImageFile.h"
 #include "scene/Scene.h"
 
 using namespace drr;
@@ -90,12 +90,8 @@ SceneRenderParams ParamsFor(const CameraPose& pose, float aspect, bool tessellat
 }
 
 void WriteRgba(const fs::path& file, int size, const std::vector<uint8_t>& px) {
-  auto out = OIIO::ImageOutput::create(file.string());
-  ASSERT_TRUE(out);
-  OIIO::ImageSpec spec(size, size, 4, OIIO::TypeDesc::UINT8);
-  ASSERT_TRUE(out->open(file.string(), spec));
-  out->write_image(OIIO::TypeDesc::UINT8, px.data());
-  out->close();
+  std::string error;
+  ASSERT_TRUE(drr::WriteImageFile(file.string(), uint32_t(size), uint32_t(size), 4, px.data(), &error)) << error;
 }
 
 // A square plane in y = 0 of n x n quads, each with its own four vertices
