@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # The sanitizer job: builds the whole project and its tests with ASan+UBSan
 # (-DDRR_SANITIZE=ON) in build-asan and runs the whole suite, fuzz tests
-# included, warnings being errors (DRR_WERROR). Two parts of the test job
+# included, warnings being errors (DRR_WERROR). Three parts of the test job
 # are not repeated here: the assimp-testmodels are a fixed sample
-# (Tests/scene/CMakeLists.txt; the test job loads them all), and the sample's
+# (Tests/scene/CMakeLists.txt; the test job loads them all), the sample's
 # image suites (render, post, upscale, deferred) give way to one run of the
 # sample in every mode of scripts/mode-matrix.sh (Tests/sample/CMakeLists.txt),
 # which reaches the same passes under the sanitizers without redoing the
-# image comparisons. Driver and layer leaks are suppressed by library name only
+# image comparisons, and so do the scene suite's three whole-Arena image tests
+# (NOT_SANITIZED in Tests/scene/CMakeLists.txt). The test suites' own sources
+# are built at -O0 here (Tests/CMakeLists.txt). Driver and layer leaks are suppressed by library name only
 # (Tests/sanitizers/lsan.supp). Prints the time each phase took.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
