@@ -113,7 +113,6 @@ struct DeferredFrame {
   bool ssao = true;
   bool localLights = true;      // the scene's LIGHT entries (and their shadow maps)
   float shadowScale = 1.0f;     // the shadow maps' dynamic scale (ShadowMapScale)
-  uint32_t shadowMapSize = 1024;
   glm::vec2 ratio{1.0f};        // viewport / G-buffer size: DynamicResolution's RT scale
 };
 

@@ -21,6 +21,10 @@ TemporalMode TemporalOf(const Options& o) {
   }
 }
 
+bool ShadowMapsDrawn(const Options& o, const FrameInputs& in) {
+  return o.renderer == Renderer::Deferred && o.localLights && in.shadowedLights > 0;
+}
+
 RenderTargetPlan TargetsOf(const Options& o, const FrameInputs& in, TemporalMode temporal) {
   RenderTargetPlan p;
   p.dynamic = o.dynamicResolution;
@@ -39,6 +43,13 @@ RenderTargetPlan TargetsOf(const Options& o, const FrameInputs& in, TemporalMode
   // Deferred shading (Docs/Deferred.md): the G-buffer exists only with it.
   p.deferred = o.renderer == Renderer::Deferred;
   p.ssao = p.deferred && o.ssao;
+  // Its shadow maps: a slice per shadowed spot when they are drawn, else the
+  // lighting pass's 1x1 placeholder.
+  const bool shadows = ShadowMapsDrawn(o, in);
+  p.shadowSlices = !p.deferred ? 0 : shadows ? in.shadowedLights : 1;
+  p.shadowMapSize = !p.deferred ? 0 : shadows ? o.shadowMapSize : 1;
+  p.zoomBox = o.zoom;
+  p.backBufferFormat = in.backBufferFormat;
   return p;
 }
 
@@ -50,7 +61,7 @@ void ScenePasses(const FramePlan& p, const Options& o, const FrameInputs& in, Pa
     out->push_back({PassId::Scene, "Scene", PassStage::Scene});
     return;
   }
-  if (o.localLights && in.shadowedLights > 0) out->push_back({PassId::ShadowMaps, "ShadowMaps", PassStage::Scene});
+  if (ShadowMapsDrawn(o, in)) out->push_back({PassId::ShadowMaps, "ShadowMaps", PassStage::Scene});
   out->push_back({PassId::GBuffer, "GBuffer", PassStage::Scene});
   if (p.targets.ssao) out->push_back({PassId::SSAO, "SSAO", PassStage::Scene});
   out->push_back({PassId::Lighting, "Lighting", PassStage::Scene});
@@ -161,7 +172,6 @@ DeferredFrame DeferredOf(const FramePlan& p, const Options& o, const FrameInputs
   f.ssao = p.targets.ssao;
   f.localLights = o.localLights;
   f.shadowScale = ShadowMapScale(o.shadowLaw, float(o.shadowScale), p.dynamic ? in.scaleX : 1.0f);
-  f.shadowMapSize = o.shadowMapSize;
   const FrameSetup& s = p.setup;
   f.ratio = p.dynamic ? glm::vec2(s.dc.ratioCurr[0], s.dc.ratioCurr[1])
                       : glm::vec2(s.sceneViewport.Width / float(in.dynamicW), s.sceneViewport.Height / float(in.dynamicH));
