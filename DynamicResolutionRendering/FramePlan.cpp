@@ -30,12 +30,11 @@ RenderTargetPlan TargetsOf(const Options& o, const FrameInputs& in, TemporalMode
   p.dynamic = o.dynamicResolution;
   p.superSampling = o.superSampling;
   p.motionBlur = o.motionBlur;
-  p.taa = temporal == TemporalMode::TAA;
+  p.temporal = temporal;
   p.srgbColour = o.fixes.Has(Fix::SrgbTargets);
   p.backBufferW = in.backBufferW;
   p.backBufferH = in.backBufferH;
-  // Upscaling (Docs/Upscaling.md): TAAU's history and the secondary upscale's output size.
-  p.taau = temporal == TemporalMode::TAAU;
+  // Upscaling (Docs/Upscaling.md): the sharpening pass and the secondary upscale's output size.
   p.sharpenPass = o.dynamicResolution && KindOf(o.filter) == FilterKind::SpatialSharpen;
   const double secondary = o.dynamicResolution ? o.secondaryScreenPercentage / 100.0 : 1.0;
   p.outputW = std::max(1u, uint32_t(std::lround(in.backBufferW * secondary)));
@@ -100,8 +99,7 @@ PassList PassesOf(const FramePlan& p, const Options& o, const FrameInputs& in) {
 // the temporal state the frame leaves.
 TemporalState SetupOf(const FramePlan& p, const Options& o, const FrameInputs& in, FrameSetup* s) {
   s->dynamic = p.dynamic;
-  s->taa = p.TAA();
-  s->taau = p.TAAU();
+  s->temporal = p.temporal;
   s->motionBlur = o.motionBlur;
   s->psClear = o.psClear;
   s->filter = o.filter;
@@ -120,7 +118,7 @@ TemporalState SetupOf(const FramePlan& p, const Options& o, const FrameInputs& i
   h = AdvanceTemporal(h, *s, p.dynamic ? in.rtScale : glm::vec2(1.f), o.symmetricTAA);
   FillConstants(*s, h, glm::vec2(in.dynamicW, in.dynamicH), glm::vec2(in.backBufferW, in.backBufferH));
   // The original's paused TAA resolve reads target 0 as the current frame.
-  s->pausedSwap = o.pause && s->taa && s->cur == 1;
+  s->pausedSwap = o.pause && s->TAA() && s->cur == 1;
   FillResolveConstants(*s);
   return h;
 }

@@ -24,8 +24,6 @@
 
 namespace drr {
 
-enum class TemporalMode { None, TAA, TAAU };
-
 // The passes of passes/, one object each (PassRegistry.h).
 enum class PassId {
   MarkOutside,     // test aid: marks what lies outside the viewport (not counted)

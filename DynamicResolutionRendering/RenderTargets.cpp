@@ -27,16 +27,16 @@ constexpr RenderTargetRow kTargets[] = {
     {"g_ColorDynamic", kColor, SizeRule::Dynamic, [](Plan p) { return p.dynamic && p.motionBlur; }},
     {"g_DepthDynamic", kDepth, SizeRule::Dynamic, [](Plan p) { return p.dynamic; }},
     {"g_VelocityDynamic[0]", kVelocity, SizeRule::Dynamic,
-     [](Plan p) { return p.dynamic && (p.motionBlur || p.taa || p.taau); }},
-    {"g_VelocityDynamic[1]", kVelocity, SizeRule::Dynamic, [](Plan p) { return p.dynamic && p.taa && !p.motionBlur; }},
+     [](Plan p) { return p.dynamic && (p.motionBlur || p.temporal != TemporalMode::None); }},
+    {"g_VelocityDynamic[1]", kVelocity, SizeRule::Dynamic, [](Plan p) { return p.dynamic && p.TAA() && !p.motionBlur; }},
     {"g_FinalRTDynamic[0]", kColor, SizeRule::Dynamic, [](Plan p) { return p.dynamic; }},
-    {"g_FinalRTDynamic[1]", kColor, SizeRule::Dynamic, [](Plan p) { return p.dynamic && p.taa; }},
+    {"g_FinalRTDynamic[1]", kColor, SizeRule::Dynamic, [](Plan p) { return p.dynamic && p.TAA(); }},
     {"g_ColorFull", kColor, SizeRule::Full, [](Plan p) { return !p.dynamic && p.motionBlur; }},
     {"g_VelocityFull", kVelocity, SizeRule::Full, [](Plan p) { return !p.dynamic && p.motionBlur; }},
     {"g_DepthFull", kDepth, SizeRule::Full, [](Plan p) { return !p.dynamic; }},
-    {"upscale history[0]", kHistory, SizeRule::Output, [](Plan p) { return p.dynamic && p.taau; }},
-    {"upscale history[1]", kHistory, SizeRule::Output, [](Plan p) { return p.dynamic && p.taau; }},
-    {"upscale output", kColor, SizeRule::Output, [](Plan p) { return p.dynamic && p.Secondary() && !p.taau; }},
+    {"upscale history[0]", kHistory, SizeRule::Output, [](Plan p) { return p.dynamic && p.TAAU(); }},
+    {"upscale history[1]", kHistory, SizeRule::Output, [](Plan p) { return p.dynamic && p.TAAU(); }},
+    {"upscale output", kColor, SizeRule::Output, [](Plan p) { return p.dynamic && p.Secondary() && !p.TAAU(); }},
     {"upscale sharpen input", kColor, SizeRule::Output, [](Plan p) { return p.dynamic && p.sharpenPass; }},
     // Deferred shading: the dynamic RT's size on both paths.
     {"g_GBufferDiffuse", kSrgb, SizeRule::Dynamic, [](Plan p) { return p.deferred; }},
@@ -123,7 +123,7 @@ const char* RenderTargetSet::Name(RT rt) { return kTargets[int(rt)].name; }
 d3dl::DXGI_FORMAT RenderTargetSet::Format(RT rt, const RenderTargetPlan& plan) {
   const d3dl::DXGI_FORMAT f = kTargets[int(rt)].format;
   // Depth read by TAAU or by the deferred passes: typeless.
-  const bool readDepth = (rt == RT::DepthDynamic && (plan.taau || plan.deferred)) || (rt == RT::DepthFull && plan.deferred);
+  const bool readDepth = (rt == RT::DepthDynamic && (plan.TAAU() || plan.deferred)) || (rt == RT::DepthFull && plan.deferred);
   if (readDepth) return kReadableDepth;
   if (f == kBackBuffer) return plan.backBufferFormat;
   return plan.srgbColour && f == kColor ? d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB : f;

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "TemporalMode.h"
 #include "d3dl/D3DLike.h"
 
 namespace drr {
@@ -82,12 +83,14 @@ enum class SizeRule { Dynamic, Full, Output, Fixed };
 
 // What decides which targets exist and their sizes; a change re-allocates.
 struct RenderTargetPlan {
-  bool dynamic = false, superSampling = false, motionBlur = false, taa = false;
+  bool dynamic = false, superSampling = false, motionBlur = false;
+  TemporalMode temporal = TemporalMode::None;  // FramePlan::temporal
   bool srgbColour = false;  // fix srgb-targets: sRGB colour targets instead of the original's UNORM
   uint32_t backBufferW = 0, backBufferH = 0;
-  // Upscaling (Docs/Upscaling.md): TAAU on, and the output size of the primary
-  // upscale (the back buffer's times the secondary screen percentage).
-  bool taau = false, sharpenPass = false;
+  // Upscaling (Docs/Upscaling.md): the edge-adaptive sharpening pass, and the
+  // output size of the primary upscale (the back buffer's times the secondary
+  // screen percentage).
+  bool sharpenPass = false;
   uint32_t outputW = 0, outputH = 0;
   bool deferred = false, ssao = false;  // --renderer deferred; its SSAO
   // Deferred: the shadow-map array's slices and size (1 and 1 for the
@@ -95,6 +98,8 @@ struct RenderTargetPlan {
   uint32_t shadowSlices = 0, shadowMapSize = 0;
   bool zoomBox = false;  // the zoom box is shown: its copy of the back buffer
   d3dl::DXGI_FORMAT backBufferFormat = d3dl::DXGI_FORMAT_UNKNOWN;
+  bool TAA() const { return temporal == TemporalMode::TAA; }
+  bool TAAU() const { return temporal == TemporalMode::TAAU; }
   bool Secondary() const { return outputW != 0 && (outputW != backBufferW || outputH != backBufferH); }
   void Size(SizeRule rule, uint32_t dynW, uint32_t dynH, uint32_t* w, uint32_t* h) const;
   bool operator==(const RenderTargetPlan&) const = default;
