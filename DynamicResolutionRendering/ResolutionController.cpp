@@ -166,6 +166,14 @@ double ArticleController::Update(double /*currentScale*/, const FrameTiming& tim
 
 // -------------------------------------------------------------- UE-style law
 
+UEStyleController::Params UEStyleController::TunedParams() {
+  Params p;
+  p.historySize = 8;
+  p.frameWeightExponent = 0.8;
+  p.increaseBlend = 0.75;
+  return p;
+}
+
 UEStyleController::UEStyleController() : UEStyleController(Params{}) {}
 
 UEStyleController::UEStyleController(const Params& params) : m_Params(params) {

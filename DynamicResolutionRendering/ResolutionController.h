@@ -191,6 +191,11 @@ public:
     int minChangePeriod = 8;           // calls between two changes (a panic does not wait)
     int latencyFrames = 0;             // calls between a frame and its GPU time, when gpuScale is 0
   };
+  // The pick of the tuning-set scan (drr_controller_sim --scan-ue, Docs/Controller.md):
+  // history 8 weighted 0.8^age, increase blend 0.75, period and threshold as
+  // above. Judged on the fresh held-out traces as "ue-style-tuned"; the sample's
+  // --law ue-style keeps the defaults above.
+  static Params TunedParams();
   UEStyleController();
   explicit UEStyleController(const Params& params);
   std::string_view Name() const override { return ControlLawOption(ControlLaw::UEStyle); }

@@ -119,6 +119,8 @@ class ContextImpl : public DeviceContext, public BlitExtension {
                      UINT startInstance) override;
   void DrawIndexedInstanced(UINT indexCountPerInstance, UINT instanceCount, UINT startIndex,
                             int32_t baseVertex, UINT startInstance) override;
+  void DrawInstancedIndirect(Buffer* args, UINT alignedByteOffset) override;
+  void DrawIndexedInstancedIndirect(Buffer* args, UINT alignedByteOffset) override;
   HRESULT Map(Resource* resource, UINT subresource, MAP mapType, UINT mapFlags,
               MAPPED_SUBRESOURCE* mapped) override;
   void Unmap(Resource* resource, UINT subresource) override;
@@ -253,6 +255,11 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   // ContextDraw.cpp
   inline bool Commit(bool indexed);
   bool CommitSlow(bool indexed);
+  // The argument buffer of an indirect draw or dispatch (`argBytes` read at
+  // `offset`), checked (null: the call is dropped), held by a list and queued
+  // for its DRAW_INDIRECT barrier, which the commit then records outside any
+  // rendering scope.
+  BufferImpl* UseIndirectArgs(const char* fn, Buffer* args, UINT offset, UINT argBytes);
   bool CheckDrawState(bool indexed);
   void UseDrawResources(bool indexed);
   bool BindPipeline(VkCommandBuffer cmd);

@@ -136,12 +136,8 @@ void ContextImpl::Dispatch(UINT x, UINT y, UINT z) {
 }
 
 void ContextImpl::DispatchIndirect(Buffer* args, UINT offset) {
-  if (!ValidateDispatchIndirect(*dev_, DescribeResource(args), offset)) return;
-  BufferImpl* b = static_cast<BufferImpl*>(args);
-  UseBuffer(b->vkBuffer(), b->sync(), usage::IndirectRead);
-  if (!CommitCompute()) return;
-  Hold(b);
-  NoteUse(b->use, false);
+  BufferImpl* b = UseIndirectArgs("DispatchIndirect", args, offset, kDispatchArgsBytes);
+  if (!b || !CommitCompute()) return;
   vkCmdDispatchIndirect(cmd_, b->vkBuffer(), offset);
 }
 

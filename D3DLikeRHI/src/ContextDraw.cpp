@@ -1,4 +1,5 @@
-// Draw-time commit of the recorded state and lazy dynamic-rendering scopes.
+// Draw-time commit of the recorded state, lazy dynamic-rendering scopes, and
+// the draws (direct and indirect).
 // The hot path (only constants changed) touches the dirty bits, the ring and
 // vkCmdBindDescriptorSets with new dynamic offsets, nothing else.
 #include "Context.h"
@@ -409,6 +410,35 @@ void ContextImpl::DrawIndexed(UINT count, UINT start, int32_t base) {
 void ContextImpl::DrawIndexedInstanced(UINT count, UINT instances, UINT start, int32_t base, UINT startInstance) {
   if (!Commit(true)) return;
   vkCmdDrawIndexed(cmd_, count, instances, start, base, startInstance);
+  CountDraw();
+}
+
+// Indirect draws and dispatches: the arguments' barrier is queued before the
+// commit, so a pending one ends the rendering scope there (FlushBarriers) and
+// the draw runs in a new scope.
+BufferImpl* ContextImpl::UseIndirectArgs(const char* fn, Buffer* args, UINT offset, UINT argBytes) {
+  if (!ValidateIndirectArgs(*dev_, fn, DescribeResource(args), offset, argBytes)) return nullptr;
+  BufferImpl* b = static_cast<BufferImpl*>(args);
+  UseBuffer(b->vkBuffer(), b->sync(), usage::IndirectRead);
+  Hold(b);
+  NoteUse(b->use, false);
+  return b;
+}
+
+// D3D11's argument records are Vulkan's indirect commands, field for field.
+static_assert(sizeof(VkDrawIndirectCommand) == kDrawArgsBytes);
+static_assert(sizeof(VkDrawIndexedIndirectCommand) == kDrawIndexedArgsBytes);
+
+void ContextImpl::DrawInstancedIndirect(Buffer* args, UINT offset) {
+  BufferImpl* b = UseIndirectArgs("DrawInstancedIndirect", args, offset, kDrawArgsBytes);
+  if (!b || !Commit(false)) return;
+  vkCmdDrawIndirect(cmd_, b->vkBuffer(), offset, 1, kDrawArgsBytes);
+  CountDraw();
+}
+void ContextImpl::DrawIndexedInstancedIndirect(Buffer* args, UINT offset) {
+  BufferImpl* b = UseIndirectArgs("DrawIndexedInstancedIndirect", args, offset, kDrawIndexedArgsBytes);
+  if (!b || !Commit(true)) return;
+  vkCmdDrawIndexedIndirect(cmd_, b->vkBuffer(), offset, 1, kDrawIndexedArgsBytes);
   CountDraw();
 }
 

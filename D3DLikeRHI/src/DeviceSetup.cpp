@@ -188,6 +188,9 @@ bool DeviceImpl::EnableFeatures(VkPhysicalDeviceFeatures2* e2, VkPhysicalDeviceV
   e.independentBlend = f.independentBlend;
   e.depthBiasClamp = f.depthBiasClamp;
   e.fragmentStoresAndAtomics = f.fragmentStoresAndAtomics;
+  // A non-zero StartInstanceLocation in Draw*InstancedIndirect's arguments
+  // (valid in D3D11) is undefined in Vulkan without it.
+  e.drawIndirectFirstInstance = f.drawIndirectFirstInstance;
   features_.fragmentStores = f.fragmentStoresAndAtomics;
   features_.mirrorOnce = f12.samplerMirrorClampToEdge;
   features_.minmax = f12.samplerFilterMinmax;

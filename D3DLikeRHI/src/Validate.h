@@ -157,13 +157,18 @@ bool BlitIsLinear(const RECT& dstRect, const RECT& srcRect, FILTER filter);
 // "IASetPrimitiveTopology: topology N is not supported" outside 0..5, 33..64.
 bool ValidateTopology(ValidationDevice& dev, PRIMITIVE_TOPOLOGY t);
 
-// UAV binding and dispatch arguments (ValidateContext.cpp).
+// UAV binding, dispatch and indirect arguments (ValidateContext.cpp).
 // Whether a UAV (null: unbinding) may be bound at `slot`; false (logged) when
 // it names no resource (the slot is then unbound).
 bool ValidateUavBinding(ValidationDevice& dev, const char* fn, const ViewInfo* uav, UINT slot);
 bool ValidateDispatch(ValidationDevice& dev, UINT x, UINT y, UINT z);
-// `args`: the argument buffer (UNKNOWN dimension: null).
-bool ValidateDispatchIndirect(ValidationDevice& dev, const ResourceInfo& args, UINT offset);
+// DispatchIndirect and the indirect draws (`fn`): `args`, the argument buffer
+// (UNKNOWN dimension: null), created with RESOURCE_MISC_DRAWINDIRECT_ARGS, and
+// `argBytes` of arguments at `offset`, a multiple of 4, inside it.
+bool ValidateIndirectArgs(ValidationDevice& dev, const char* fn, const ResourceInfo& args, UINT offset, UINT argBytes);
+// The arguments' sizes in D3D11: 3 UINTs (thread groups), 4 UINTs
+// (DrawInstancedIndirect), 5 UINTs (DrawIndexedInstancedIndirect).
+inline constexpr UINT kDispatchArgsBytes = 12, kDrawArgsBytes = 16, kDrawIndexedArgsBytes = 20;
 // Whether the UAV (null: none given) can be cleared (logged when not);
 // `isFloat`: ClearUnorderedAccessViewFloat.
 bool ValidateClearUav(ValidationDevice& dev, const ViewInfo* uav, const void* values, bool isFloat);

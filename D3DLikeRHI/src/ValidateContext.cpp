@@ -462,7 +462,7 @@ bool ValidateDeferredUpdate(ValidationDevice& dev, const ResourceInfo& dst) {
   return false;
 }
 
-// UAV binding and dispatch arguments
+// UAV binding, dispatch and indirect arguments
 bool ValidateUavBinding(ValidationDevice& dev, const char* fn, const ViewInfo* uav, UINT slot) {
   if (!uav || uav->resource.dimension != RESOURCE_DIMENSION_UNKNOWN) return true;
   dev.Log(LogLevel::Error, "%s: slot %u: not an unordered access view; unbound", fn, slot);
@@ -478,14 +478,16 @@ bool ValidateDispatch(ValidationDevice& dev, UINT x, UINT y, UINT z) {
   return false;
 }
 
-bool ValidateDispatchIndirect(ValidationDevice& dev, const ResourceInfo& args, UINT offset) {
+bool ValidateIndirectArgs(ValidationDevice& dev, const char* fn, const ResourceInfo& args, UINT offset, UINT argBytes) {
   if (args.dimension == RESOURCE_DIMENSION_UNKNOWN) {
-    dev.Log(LogLevel::Error, "DispatchIndirect: pBufferForArgs is null");
+    dev.Log(LogLevel::Error, "%s: pBufferForArgs is null", fn);
   } else if (!(args.miscFlags & RESOURCE_MISC_DRAWINDIRECT_ARGS)) {
-    dev.Log(LogLevel::Error, "DispatchIndirect: the buffer was not created with RESOURCE_MISC_DRAWINDIRECT_ARGS");
-  } else if (offset % 4 || uint64_t(offset) + 12 > args.byteWidth) {
-    dev.Log(LogLevel::Error, "DispatchIndirect: AlignedByteOffsetForArgs %u must be a multiple of 4 with 12 bytes after it in the %u-byte buffer",
-            offset, args.byteWidth);
+    dev.Log(LogLevel::Error, "%s: the buffer was not created with RESOURCE_MISC_DRAWINDIRECT_ARGS", fn);
+  } else if (offset % 4) {
+    dev.Log(LogLevel::Error, "%s: AlignedByteOffsetForArgs %u is not a multiple of 4", fn, offset);
+  } else if (uint64_t(offset) + argBytes > args.byteWidth) {
+    dev.Log(LogLevel::Error, "%s: AlignedByteOffsetForArgs %u: its %u bytes of arguments pass the end of the %u-byte buffer",
+            fn, offset, argBytes, args.byteWidth);
   } else {
     return true;
   }

@@ -60,8 +60,10 @@ HRESULT ValidateBufferViewFlags(ValidationDevice& dev, const BUFFER_DESC& d) {
     dev.Log(LogLevel::Error, "%s: buffers with views need USAGE_DEFAULT or USAGE_IMMUTABLE (Usage %u)", fn, d.Usage);
   } else if ((d.BindFlags & BIND_UNORDERED_ACCESS) && d.Usage != USAGE_DEFAULT) {
     dev.Log(LogLevel::Error, "%s: BIND_UNORDERED_ACCESS needs USAGE_DEFAULT (Usage %u)", fn, d.Usage);
-  } else if ((d.MiscFlags & RESOURCE_MISC_DRAWINDIRECT_ARGS) && (d.Usage == USAGE_DYNAMIC || d.Usage == USAGE_STAGING)) {
-    dev.Log(LogLevel::Error, "%s: RESOURCE_MISC_DRAWINDIRECT_ARGS needs USAGE_DEFAULT or USAGE_IMMUTABLE", fn);
+  } else if ((d.MiscFlags & RESOURCE_MISC_DRAWINDIRECT_ARGS) &&
+             (d.Usage == USAGE_DYNAMIC || d.Usage == USAGE_STAGING || (d.BindFlags & BIND_CONSTANT_BUFFER))) {
+    // Argument buffers live in device memory (constant buffers are CPU shadows and ring slices).
+    dev.Log(LogLevel::Error, "%s: RESOURCE_MISC_DRAWINDIRECT_ARGS needs USAGE_DEFAULT or USAGE_IMMUTABLE and no BIND_CONSTANT_BUFFER", fn);
   } else {
     return S_OK;
   }

@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
 # Records GPU-time traces for drr_controller_sim from real runs of the sample
 # (headless; on this project's machines lavapipe).
-# usage: ControllerSimRecord.sh BUILD_DIR OUT_DIR [held-out|tuning]
+# usage: ControllerSimRecord.sh BUILD_DIR OUT_DIR [held-out|tuning|fresh]
 #   held-out (default): the held-out set (Tests/controller/traces), never used for tuning;
 #   tuning: traces that the robust law's tuning scan may use
-#           (Tests/controller/tuning-traces, drr_controller_sim --scan-robust --tuning-traces).
+#           (Tests/controller/tuning-traces, drr_controller_sim --scan-robust --tuning-traces);
+#   fresh: a second held-out set recorded after both laws were tuned and frozen
+#          (Tests/controller/fresh-traces): the Arena only, every law run given
+#          half the time of the fixed-scale run at scale 1 recorded just before
+#          it, so the scale works off its floor at the load of the moment.
 # Every new file records the machine's load (uptime) before and after its run:
 # on a shared machine the load, not the scene, sets most of the GPU time.
 # Per scene: a scale sweep with the animation paused (the cost curve t(s) the
@@ -21,9 +25,9 @@ conv="$(dirname "$(realpath "$0")")/ControllerSimTrace.py"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 mode=${3:-held-out}
 case $mode in
-  held-out) held="held-out trace: never used for tuning any law (Docs/Controller.md)" ;;
+  held-out|fresh) held="held-out trace: never used for tuning any law (Docs/Controller.md)" ;;
   tuning) held="tuning trace: recorded for tuning the robust law, not held out (Docs/Controller.md)" ;;
-  *) echo "ControllerSimRecord.sh: mode must be held-out or tuning, not '$mode'" >&2; exit 2 ;;
+  *) echo "ControllerSimRecord.sh: mode must be held-out, tuning or fresh, not '$mode'" >&2; exit 2 ;;
 esac
 
 run() {  # name role args...
@@ -70,6 +74,17 @@ if [ "$mode" = tuning ]; then  # other cameras and scales than the held-out runs
   trace arena-static2-fixed07 "${arena[@]}" --camera 2 --scale 0.7
   trace arena-static3-fixed05 "${arena[@]}" --camera 3 --scale 0.5
   trace arena-cinematic-fixed09 "${arena[@]}" --camera 1 --scale 0.9
+  echo "traces in $out"; exit 0
+fi
+if [ "$mode" = fresh ]; then
+  sweep arena "${arena[@]}" --camera 1
+  trace arena-cinematic-fixed10 "${arena[@]}" --camera 1 --scale 1.0
+  r=$(refresh_for "$out/arena-cinematic-fixed10.csv" 1.0 0.5)
+  trace arena-cinematic-robust "${arena[@]}" --camera 1 --control vsync --refresh "$r" --law robust
+  trace arena-cinematic-ue "${arena[@]}" --camera 1 --control vsync --refresh "$r" --law ue-style
+  trace arena-static2-article "${arena[@]}" --camera 2 --control vsync --refresh "$r" --law article
+  trace arena-static3-fixed07 "${arena[@]}" --camera 3 --scale 0.7
+  trace arena-static2-fixed085 "${arena[@]}" --camera 2 --scale 0.85
   echo "traces in $out"; exit 0
 fi
 sweep arena "${arena[@]}" --camera 1

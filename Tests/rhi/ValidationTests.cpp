@@ -23,6 +23,15 @@ class RhiValidation : public RhiTest {
     EXPECT_TRUE(named) << "message should mention '" << what << "', got:\n" << all;
     ClearMessages();
   }
+  // A call without a result (a context call): exactly one error or warning,
+  // an error naming `what`.
+  void ExpectRejected(const char* what) {
+    std::string all;
+    for (auto& m : Messages()) all += m.text + "\n";
+    EXPECT_EQ(CountMessages(LogLevel::Error) + CountMessages(LogLevel::Warning), 1u) << what << ": one message expected, got:\n" << all;
+    EXPECT_EQ(CountMessages(LogLevel::Error, what), 1u) << "the error should mention '" << what << "', got:\n" << all;
+    ClearMessages();
+  }
 };
 
 TEST_F(RhiValidation, InvalidDescriptionsAreRejectedWithAMessage) {
@@ -168,6 +177,70 @@ TEST_F(RhiValidation, DrawsWithMissingStateAreSkippedAndLoggedOnce) {
   context()->Draw(3, 0);
   EXPECT_EQ(CountMessages(LogLevel::Error, "has no element"), 1u);
   context()->Flush();
+}
+
+// Indirect draws: an argument buffer without RESOURCE_MISC_DRAWINDIRECT_ARGS,
+// an offset that is not a multiple of 4 or arguments past the buffer's end
+// drop the call with one error; with every state bound, so that nothing else
+// would stop the draw, and the same buffer then draws.
+TEST_F(RhiValidation, IndirectDrawArgumentsAreRejectedWithAMessage) {
+  BUFFER_DESC bd;
+  bd.ByteWidth = 48;
+  bd.BindFlags = BIND_CONSTANT_BUFFER;
+  bd.MiscFlags = RESOURCE_MISC_DRAWINDIRECT_ARGS;
+  ComPtr<Buffer> args;
+  ExpectRejected(device()->CreateBuffer(&bd, nullptr, args.ReleaseAndGetAddressOf()), "BIND_CONSTANT_BUFFER");
+  bd.BindFlags = 0;
+  bd.ByteWidth = 36;
+  // A full-screen triangle (3 vertices, 1 instance): DrawInstancedIndirect's
+  // record at byte 0, DrawIndexedInstancedIndirect's at byte 16.
+  const UINT words[9] = {3, 1, 0, 0, 3, 1, 0, 0, 0};
+  const SUBRESOURCE_DATA init{words, 0, 0};
+  ASSERT_EQ(device()->CreateBuffer(&bd, &init, args.ReleaseAndGetAddressOf()), S_OK);
+  const uint16_t indices[3] = {0, 1, 2};
+  auto ib = MakeBuffer(BIND_INDEX_BUFFER, indices, sizeof(indices));
+  auto noFlag = MakeBuffer(BIND_INDEX_BUFFER, words, sizeof(words));
+
+  auto rt = MakeRenderTarget(4, 4);
+  Bind(rt, 4, 4);
+  const float black[4] = {0, 0, 0, 1}, red[4] = {1, 0, 0, 1};
+  context()->ClearRenderTargetView(rt.rtv.Get(), black);
+  auto vs = LoadVertexShader("rhi_fullscreen_vs.spv");
+  auto ps = LoadPixelShader("rhi_solid_ps.spv");
+  auto cb = MakeCB(16, USAGE_DEFAULT, red);
+  context()->VSSetShader(vs.Get());
+  context()->PSSetShader(ps.Get());
+  context()->PSSetConstantBuffers(0, 1, cb.GetAddressOf());
+  context()->IASetPrimitiveTopology(PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+  context()->IASetIndexBuffer(ib.Get(), DXGI_FORMAT_R16_UINT, 0);
+
+  context()->DrawInstancedIndirect(nullptr, 0);
+  ExpectRejected("DrawInstancedIndirect: pBufferForArgs is null");
+  context()->DrawInstancedIndirect(noFlag.Get(), 0);
+  ExpectRejected("DrawInstancedIndirect: the buffer was not created with RESOURCE_MISC_DRAWINDIRECT_ARGS");
+  context()->DrawIndexedInstancedIndirect(noFlag.Get(), 0);
+  ExpectRejected("DrawIndexedInstancedIndirect: the buffer was not created with RESOURCE_MISC_DRAWINDIRECT_ARGS");
+  context()->DrawInstancedIndirect(args.Get(), 2);
+  ExpectRejected("AlignedByteOffsetForArgs 2 is not a multiple of 4");
+  context()->DrawIndexedInstancedIndirect(args.Get(), 6);
+  ExpectRejected("AlignedByteOffsetForArgs 6 is not a multiple of 4");
+  context()->DrawInstancedIndirect(args.Get(), 24);  // 24 + 16 > 36
+  ExpectRejected("AlignedByteOffsetForArgs 24: its 16 bytes of arguments pass the end of the 36-byte buffer");
+  context()->DrawIndexedInstancedIndirect(args.Get(), 20);  // 20 + 20 > 36, where 20 + 16 fits
+  ExpectRejected("AlignedByteOffsetForArgs 20: its 20 bytes of arguments pass the end of the 36-byte buffer");
+  context()->DrawIndexedInstancedIndirect(args.Get(), 0xfffffffcu);  // the end past 2^32
+  ExpectRejected("AlignedByteOffsetForArgs 4294967292");
+  DEVICE_STATS st;
+  device()->GetStats(&st);
+  EXPECT_EQ(st.DrawCalls, 0u);
+  EXPECT_EQ(ReadBack(rt.texture.Get()).RGBA8(1, 1)[0], 0) << "a rejected call drew";
+
+  context()->DrawInstancedIndirect(args.Get(), 0);
+  context()->DrawIndexedInstancedIndirect(args.Get(), 16);  // 16 + 20 = 36: the last bytes
+  EXPECT_EQ(CountMessages(LogLevel::Error) + CountMessages(LogLevel::Warning), 0u);
+  device()->GetStats(&st);
+  EXPECT_EQ(st.DrawCalls, 2u);
+  EXPECT_EQ(ReadBack(rt.texture.Get()).RGBA8(1, 1)[0], 255);
 }
 
 // ---------------------------------------------------------------------------

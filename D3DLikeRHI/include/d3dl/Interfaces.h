@@ -164,6 +164,14 @@ class DeviceContext : public Unknown {
                              UINT startInstance) = 0;
   virtual void DrawIndexedInstanced(UINT indexCountPerInstance, UINT instanceCount,
                                     UINT startIndex, int32_t baseVertex, UINT startInstance) = 0;
+  // The arguments come from a RESOURCE_MISC_DRAWINDIRECT_ARGS buffer at
+  // `alignedByteOffset` (a multiple of 4), read when the GPU runs the draw:
+  // four UINTs (VertexCountPerInstance, InstanceCount, StartVertexLocation,
+  // StartInstanceLocation), or five for the indexed draw (IndexCountPerInstance,
+  // InstanceCount, StartIndexLocation, INT BaseVertexLocation,
+  // StartInstanceLocation). Bad arguments log one error and drop the call.
+  virtual void DrawInstancedIndirect(Buffer* args, UINT alignedByteOffset) = 0;
+  virtual void DrawIndexedInstancedIndirect(Buffer* args, UINT alignedByteOffset) = 0;
 
   // Resource access
   virtual HRESULT Map(Resource* resource, UINT subresource, MAP mapType, UINT mapFlags,
@@ -199,7 +207,8 @@ class DeviceContext : public Unknown {
   virtual void CSSetUnorderedAccessViews(UINT startSlot, UINT num, UnorderedAccessView* const* views,
                                          const UINT* initialCounts) = 0;
   virtual void Dispatch(UINT groupsX, UINT groupsY, UINT groupsZ) = 0;
-  // Three UINTs at `offset` of a RESOURCE_MISC_DRAWINDIRECT_ARGS buffer.
+  // Three UINTs at `offset` of a RESOURCE_MISC_DRAWINDIRECT_ARGS buffer (as
+  // the indirect draws).
   virtual void DispatchIndirect(Buffer* args, UINT offset) = 0;
   virtual void ClearUnorderedAccessViewUint(UnorderedAccessView* uav, const UINT values[4]) = 0;
   virtual void ClearUnorderedAccessViewFloat(UnorderedAccessView* uav, const float values[4]) = 0;

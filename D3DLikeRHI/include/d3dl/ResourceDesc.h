@@ -33,7 +33,7 @@ enum RESOURCE_MISC_FLAG : uint32_t {
   RESOURCE_MISC_GENERATE_MIPS = 0x1,
   RESOURCE_MISC_TEXTURECUBE = 0x4,  // Texture2D with ArraySize 6*n, Width == Height
   // Buffers read or written by shaders as arrays, or as indirect arguments
-  RESOURCE_MISC_DRAWINDIRECT_ARGS = 0x10,       // DispatchIndirect arguments
+  RESOURCE_MISC_DRAWINDIRECT_ARGS = 0x10,       // Draw*Indirect / DispatchIndirect arguments
   RESOURCE_MISC_BUFFER_ALLOW_RAW_VIEWS = 0x20,  // ByteAddressBuffer views (R32_TYPELESS)
   RESOURCE_MISC_BUFFER_STRUCTURED = 0x40,       // StructuredBuffer views (StructureByteStride)
 };
