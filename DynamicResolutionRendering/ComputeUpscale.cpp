@@ -200,7 +200,7 @@ bool ComputeUpscale::Record(d3dl::DeviceContext* ctx, const FrameSetup& s, Rende
   // The primary upscale's output: the secondary upscale's source or the back buffer.
   d3dl::Texture2D* out = s.secondary ? rts[RT::UpscaleOutput].texture.Get() : bb.texture;
   Scratch& outScratch = s.secondary ? m_Output : m_Final;
-  if (s.taau) {
+  if (s.TAAU()) {
     Temporal(ctx, s, rts, bb);
   } else if (HasSharpenPass(s.filter)) {
     Spatial(ctx, s, rts, {rts[RT::UpscaleSharpenInput].texture.Get(), &m_Output});
@@ -253,7 +253,7 @@ void ComputeUpscale::Secondary(d3dl::DeviceContext* ctx, const FrameSetup& s, Re
                                const BackBuffer& bb) {
   ctx->BeginEvent("SecondaryUpscaleCS");
   d3dl::ShaderResourceView* srv =
-      s.taau ? rts.UpscaleHistory(s.historyCur).srv.Get() : rts[RT::UpscaleOutput].srv.Get();
+      s.TAAU() ? rts.UpscaleHistory(s.historyCur).srv.Get() : rts[RT::UpscaleOutput].srv.Get();
   UpscaleConstants uc = s.uc;
   uc.outputSize[0] = s.backBufferViewport.Width;
   uc.outputSize[1] = s.backBufferViewport.Height;

@@ -34,6 +34,7 @@ class DeviceResources {
   BackBuffer Back() const { return {m_BackBuffer.Get(), m_BackBufferRTV.Get(), m_Width, m_Height}; }
   uint32_t Width() const { return m_Width; }
   uint32_t Height() const { return m_Height; }
+  d3dl::DXGI_FORMAT Format() const { return m_Format; }  // the back buffer's
   const d3dl::ADAPTER_DESC& Adapter() const { return m_Adapter; }
   uint64_t ValidationMessages() const;
 

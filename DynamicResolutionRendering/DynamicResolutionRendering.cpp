@@ -122,6 +122,7 @@ FramePlan Sample::PlanNow() const {
   FrameInputs in;
   in.backBufferW = m_Device.Width();
   in.backBufferH = m_Device.Height();
+  in.backBufferFormat = m_Device.Format();
   in.guiDrawn = m_Gui.enabled;
   in.softwareAdapter = m_Device.Adapter().IsSoftware;
   if (m_Scene)
@@ -154,9 +155,21 @@ bool Sample::InitDynamicResolution() {
 
 void Sample::ReleaseDynamicResolution() { m_Targets.Release(); }
 
-uint64_t Sample::RenderTargetBytes() const {
-  return m_Targets.Bytes() + m_Passes.ZoomBox().Bytes() + m_Passes.Deferred().ShadowMapBytes();
+// The shadow maps and the zoom box's copy alone are made or freed in place:
+// a pass rewrites them whole each frame, so the other targets, the temporal
+// history and the controller carry on.
+void Sample::UpdateTargets() {
+  const RenderTargetPlan plan = PlanNow().targets;
+  if (plan == m_Targets.Plan()) return;
+  if (!plan.SameButRewrittenEachFrame(m_Targets.Plan())) {
+    InitDynamicResolution();
+    return;
+  }
+  m_Targets.Allocate(m_Device.Device(), plan, m_DynamicResolution.GetDynamicBufferWidth(),
+                     m_DynamicResolution.GetDynamicBufferHeight());
 }
+
+uint64_t Sample::RenderTargetBytes() const { return m_Targets.Bytes(); }
 
 // ---------------------------------------------------------------------------
 // Per frame
@@ -226,8 +239,7 @@ void Sample::RunResolutionControl() {
 
 void Sample::OnFrameRender(double elapsed) {
   d3dl::DeviceContext* ctx = m_Device.Context();
-  // Re-create the targets when an option that decides them changed (GUI).
-  if (!(PlanNow().targets == m_Targets.Plan())) InitDynamicResolution();
+  UpdateTargets();
   m_Profiler.Poll(ctx);
   RunResolutionControl();
   if (m_Profiler.Timers().scene.NewAverage()) UpdateStats();  // as the original: after the control, when the scene timer completes a block

@@ -133,6 +133,8 @@ class Sample {
   void OnFrameRender(double elapsed);
   bool InitDynamicResolution();
   void ReleaseDynamicResolution();
+  // Re-creates the targets when an option that decides them changed (GUI).
+  void UpdateTargets();
   void UpdateStats();
   void ControlResolution(double innerFrameSeconds, double frameSeconds, double gpuScale = 0.0);
 

@@ -40,14 +40,14 @@ TemporalState AdvanceTemporal(TemporalState h, FrameSetup& s, glm::vec2 ratio, b
   h.ratioCurr = ratio;
   h.jitterCurr = glm::vec2(0.f);
   const glm::vec2 viewport(s.sceneViewport.Width, s.sceneViewport.Height);
-  if (s.taa) {
+  if (s.TAA()) {
     // The original's pairs move the scene right and up (+x, +y in clip
     // space); in this struct's y-down pixels the y component changes sign.
     static const glm::vec2 kAsymmetric[2] = {{0.0f, 0.0f}, {0.5f, -0.5f}};
     static const glm::vec2 kSymmetric[2] = {{-0.25f, 0.25f}, {0.25f, -0.25f}};
     h.jitterCurr = (symmetric ? kSymmetric : kAsymmetric)[h.current] / viewport;
   }
-  if (s.taau) {
+  if (s.TAAU()) {
     // Halton jitter; held while paused, since the scene then redraws with its last matrices.
     if (!h.valid) h.jitterIndex = 0;
     const uint32_t index = s.holdJitter ? h.jitterIndex + kUpsampleJitterLength - 1 : h.jitterIndex++;
@@ -62,7 +62,7 @@ TemporalState AdvanceTemporal(TemporalState h, FrameSetup& s, glm::vec2 ratio, b
     h.ratioPrev = h.ratioCurr;
   }
   s.cur = h.current;
-  s.prev = (s.taa && h.valid) ? 1 - h.current : h.current;
+  s.prev = (s.TAA() && h.valid) ? 1 - h.current : h.current;
   return h;
 }
 
@@ -76,7 +76,7 @@ void FillConstants(FrameSetup& s, const TemporalState& h, glm::vec2 dyn, glm::ve
   dc.fixes = s.fc.fixes = s.fixes.bits;
   const glm::vec2 out(s.outputViewport.Width, s.outputViewport.Height);
   const glm::vec2 jitterPx = h.jitterCurr * glm::vec2(s.sceneViewport.Width, s.sceneViewport.Height);
-  s.uc = {{out.x, out.y}, {1.0f / out.x, 1.0f / out.y}, {s.taau ? jitterPx.x : 0.0f, s.taau ? jitterPx.y : 0.0f},
+  s.uc = {{out.x, out.y}, {1.0f / out.x, 1.0f / out.y}, {s.TAAU() ? jitterPx.x : 0.0f, s.TAAU() ? jitterPx.y : 0.0f},
           s.historyValid ? 1.0f : 0.0f, kUnsharpAmount, {out.x, out.y}, {1.0f / out.x, 1.0f / out.y},
           {kHistoryWeightStill, kHistoryWeightMoving, kClipGammaStill, kClipGammaMoving},
           {kSampleSigmaStill, kSampleSigmaMoving}, kMotionPixels, 0.0f};

@@ -10,6 +10,7 @@
 
 #include "Fixes.h"
 #include "ResolveFilters.h"
+#include "TemporalMode.h"
 #include "d3dl/D3DLike.h"
 
 namespace drr {
@@ -58,7 +59,8 @@ glm::vec2 UpsampleJitter(uint32_t index);
 
 // The viewports, indices and constants of one frame.
 struct FrameSetup {
-  bool dynamic = true, taa = false, motionBlur = true, psClear = true;
+  bool dynamic = true, motionBlur = true, psClear = true;
+  TemporalMode temporal = TemporalMode::None;  // FramePlan::temporal
   Filter filter = Filter::TAA;
   FixSet fixes;
   int cur = 0, prev = 0;  // final/velocity targets written and read as history
@@ -74,12 +76,15 @@ struct FrameSetup {
   FullConstants fc{};
   // Upscaling (Docs/Upscaling.md). outputViewport: what the primary upscale
   // (spatial or TAAU) writes, the back buffer's unless the secondary upscale runs.
-  bool taau = false, secondary = false, holdJitter = false;
+  bool secondary = false, holdJitter = false;
   bool computeUpscale = false;  // the upscalers as compute passes (ComputeUpscale.h)
   int historyCur = 0, historyPrev = 0;  // TAAU's output-resolution history pair
   bool historyValid = false;
   d3dl::VIEWPORT outputViewport{};
   UpscaleConstants uc{};
+
+  bool TAA() const { return temporal == TemporalMode::TAA; }
+  bool TAAU() const { return temporal == TemporalMode::TAAU; }
 };
 
 // The temporal filters' state between frames (TemporalHistory.h owns it):
@@ -113,7 +118,6 @@ struct DeferredFrame {
   bool ssao = true;
   bool localLights = true;      // the scene's LIGHT entries (and their shadow maps)
   float shadowScale = 1.0f;     // the shadow maps' dynamic scale (ShadowMapScale)
-  uint32_t shadowMapSize = 1024;
   glm::vec2 ratio{1.0f};        // viewport / G-buffer size: DynamicResolution's RT scale
 };
 

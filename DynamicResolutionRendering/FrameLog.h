@@ -50,7 +50,6 @@ struct ReportInfo {
   std::string adapter, driver, scenePath;
   uint32_t backBuffer[2] = {0, 0}, dynamicRT[2] = {0, 0};
   const RenderTargetSet* targets = nullptr;
-  uint64_t zoomBoxBytes = 0;
   const std::map<std::string, uint64_t>* passesRun = nullptr;
   uint64_t validationMessages = 0;
   int64_t framesRendered = 0, framesMinimised = 0;

@@ -21,17 +21,20 @@ TemporalMode TemporalOf(const Options& o) {
   }
 }
 
+bool ShadowMapsDrawn(const Options& o, const FrameInputs& in) {
+  return o.renderer == Renderer::Deferred && o.localLights && in.shadowedLights > 0;
+}
+
 RenderTargetPlan TargetsOf(const Options& o, const FrameInputs& in, TemporalMode temporal) {
   RenderTargetPlan p;
   p.dynamic = o.dynamicResolution;
   p.superSampling = o.superSampling;
   p.motionBlur = o.motionBlur;
-  p.taa = temporal == TemporalMode::TAA;
+  p.temporal = temporal;
   p.srgbColour = o.fixes.Has(Fix::SrgbTargets);
   p.backBufferW = in.backBufferW;
   p.backBufferH = in.backBufferH;
-  // Upscaling (Docs/Upscaling.md): TAAU's history and the secondary upscale's output size.
-  p.taau = temporal == TemporalMode::TAAU;
+  // Upscaling (Docs/Upscaling.md): the sharpening pass and the secondary upscale's output size.
   p.sharpenPass = o.dynamicResolution && KindOf(o.filter) == FilterKind::SpatialSharpen;
   const double secondary = o.dynamicResolution ? o.secondaryScreenPercentage / 100.0 : 1.0;
   p.outputW = std::max(1u, uint32_t(std::lround(in.backBufferW * secondary)));
@@ -39,6 +42,13 @@ RenderTargetPlan TargetsOf(const Options& o, const FrameInputs& in, TemporalMode
   // Deferred shading (Docs/Deferred.md): the G-buffer exists only with it.
   p.deferred = o.renderer == Renderer::Deferred;
   p.ssao = p.deferred && o.ssao;
+  // Its shadow maps: a slice per shadowed spot when they are drawn, else the
+  // lighting pass's 1x1 placeholder.
+  const bool shadows = ShadowMapsDrawn(o, in);
+  p.shadowSlices = !p.deferred ? 0 : shadows ? in.shadowedLights : 1;
+  p.shadowMapSize = !p.deferred ? 0 : shadows ? o.shadowMapSize : 1;
+  p.zoomBox = o.zoom;
+  p.backBufferFormat = in.backBufferFormat;
   return p;
 }
 
@@ -50,7 +60,7 @@ void ScenePasses(const FramePlan& p, const Options& o, const FrameInputs& in, Pa
     out->push_back({PassId::Scene, "Scene", PassStage::Scene});
     return;
   }
-  if (o.localLights && in.shadowedLights > 0) out->push_back({PassId::ShadowMaps, "ShadowMaps", PassStage::Scene});
+  if (ShadowMapsDrawn(o, in)) out->push_back({PassId::ShadowMaps, "ShadowMaps", PassStage::Scene});
   out->push_back({PassId::GBuffer, "GBuffer", PassStage::Scene});
   if (p.targets.ssao) out->push_back({PassId::SSAO, "SSAO", PassStage::Scene});
   out->push_back({PassId::Lighting, "Lighting", PassStage::Scene});
@@ -89,8 +99,7 @@ PassList PassesOf(const FramePlan& p, const Options& o, const FrameInputs& in) {
 // the temporal state the frame leaves.
 TemporalState SetupOf(const FramePlan& p, const Options& o, const FrameInputs& in, FrameSetup* s) {
   s->dynamic = p.dynamic;
-  s->taa = p.TAA();
-  s->taau = p.TAAU();
+  s->temporal = p.temporal;
   s->motionBlur = o.motionBlur;
   s->psClear = o.psClear;
   s->filter = o.filter;
@@ -109,7 +118,7 @@ TemporalState SetupOf(const FramePlan& p, const Options& o, const FrameInputs& i
   h = AdvanceTemporal(h, *s, p.dynamic ? in.rtScale : glm::vec2(1.f), o.symmetricTAA);
   FillConstants(*s, h, glm::vec2(in.dynamicW, in.dynamicH), glm::vec2(in.backBufferW, in.backBufferH));
   // The original's paused TAA resolve reads target 0 as the current frame.
-  s->pausedSwap = o.pause && s->taa && s->cur == 1;
+  s->pausedSwap = o.pause && s->TAA() && s->cur == 1;
   FillResolveConstants(*s);
   return h;
 }
@@ -161,7 +170,6 @@ DeferredFrame DeferredOf(const FramePlan& p, const Options& o, const FrameInputs
   f.ssao = p.targets.ssao;
   f.localLights = o.localLights;
   f.shadowScale = ShadowMapScale(o.shadowLaw, float(o.shadowScale), p.dynamic ? in.scaleX : 1.0f);
-  f.shadowMapSize = o.shadowMapSize;
   const FrameSetup& s = p.setup;
   f.ratio = p.dynamic ? glm::vec2(s.dc.ratioCurr[0], s.dc.ratioCurr[1])
                       : glm::vec2(s.sceneViewport.Width / float(in.dynamicW), s.sceneViewport.Height / float(in.dynamicH));

@@ -24,8 +24,6 @@
 
 namespace drr {
 
-enum class TemporalMode { None, TAA, TAAU };
-
 // The passes of passes/, one object each (PassRegistry.h).
 enum class PassId {
   MarkOutside,     // test aid: marks what lies outside the viewport (not counted)
@@ -55,6 +53,7 @@ struct PlannedPass {
 // What the plan reads besides the settings.
 struct FrameInputs {
   uint32_t backBufferW = 1, backBufferH = 1;
+  d3dl::DXGI_FORMAT backBufferFormat = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;  // the zoom box copies it
   uint32_t shadowedLights = 0;  // the scene's spot lights that cast shadows
   bool guiDrawn = false;        // the panel or the text draws this frame
   bool softwareAdapter = false; // a CPU rasteriser (--upscale-shader auto then picks pixel shaders)

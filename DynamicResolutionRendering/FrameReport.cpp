@@ -37,10 +37,10 @@ JsonValue Targets(const ReportInfo& info) {
   for (int i = 0; i < int(RT::Count); ++i) {
     const RenderTarget& rt = (*info.targets)[RT(i)];
     if (!rt.Valid()) continue;
-    out[RenderTargetSet::Name(RT(i))] = {
-        {"size", SizePair(rt.width, rt.height)}, {"format", d3dl::FormatName(rt.format)}, {"bytes", rt.Bytes()}};
+    JsonValue& row = out[RenderTargetSet::Name(RT(i))];
+    row = {{"size", SizePair(rt.width, rt.height)}, {"format", d3dl::FormatName(rt.format)}, {"bytes", rt.Bytes()}};
+    if (rt.slices > 0) row["slices"] = rt.slices;  // an array: bytes = size x slices
   }
-  if (info.zoomBoxBytes > 0) out["zoom_box_copy"] = {{"bytes", info.zoomBoxBytes}};
   return out;
 }
 
@@ -102,7 +102,7 @@ JsonValue Report(const ReportInfo& info, const std::vector<FrameRecord>& frames)
                  {"scene", info.scenePath},
                  {"back_buffer", SizePair(info.backBuffer[0], info.backBuffer[1])},
                  {"dynamic_rt", SizePair(info.dynamicRT[0], info.dynamicRT[1])},
-                 {"render_target_bytes", info.targets->Bytes() + info.zoomBoxBytes},
+                 {"render_target_bytes", info.targets->Bytes()},
                  {"render_target_bytes_original",
                   RenderTargetSet::OriginalBytes(info.backBuffer[0], info.backBuffer[1], info.dynamicRT[0],
                                                  info.dynamicRT[1])}};

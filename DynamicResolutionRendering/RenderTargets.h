@@ -5,26 +5,40 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
+#include "TemporalMode.h"
 #include "d3dl/D3DLike.h"
 
 namespace drr {
 
-// A texture with the views its bind flags allow: colour formats get an RTV
-// and an SRV, D32_FLOAT a DSV, R32_TYPELESS (depth read by TAAU) a DSV and an
-// R32_FLOAT SRV.
+// How a target is viewed: by its format (colour formats get an RTV and an
+// SRV, D32_FLOAT a DSV, R32_TYPELESS, depth read by a pass, a D32_FLOAT DSV
+// and an R32_FLOAT SRV); as a depth array (R32_TYPELESS: a D32_FLOAT DSV per
+// slice, one R32_FLOAT SRV over the slices); or as a copy destination read
+// by a shader (an SRV only).
+enum class TargetViews { ByFormat, DepthArray, CopyRead };
+
+// A texture with the views its TargetViews give.
 struct RenderTarget {
   d3dl::ComPtr<d3dl::Texture2D> texture;
   d3dl::ComPtr<d3dl::RenderTargetView> rtv;
   d3dl::ComPtr<d3dl::ShaderResourceView> srv;
   d3dl::ComPtr<d3dl::DepthStencilView> dsv;
+  std::vector<d3dl::ComPtr<d3dl::DepthStencilView>> sliceDsv;  // DepthArray: one per slice
   uint32_t width = 0, height = 0;
+  uint32_t slices = 0;  // DepthArray: the array's size; 0 otherwise
   d3dl::DXGI_FORMAT format = d3dl::DXGI_FORMAT_UNKNOWN;
+  TargetViews views = TargetViews::ByFormat;
 
-  d3dl::HRESULT Create(d3dl::Device* device, uint32_t w, uint32_t h, d3dl::DXGI_FORMAT fmt, const char* name);
+  d3dl::HRESULT Create(d3dl::Device* device, uint32_t w, uint32_t h, d3dl::DXGI_FORMAT fmt, const char* name,
+                       TargetViews kind = TargetViews::ByFormat, uint32_t arraySlices = 0);
   void Release();
   bool Valid() const { return texture.Get() != nullptr; }
   uint64_t Bytes() const;
+
+ private:
+  d3dl::HRESULT CreateViews(d3dl::Device* device);
 };
 
 // The original's render targets, in the order the report lists them.
@@ -52,41 +66,64 @@ enum class RT : int {
   GBufferSpecular,
   GBufferNormal,
   GBufferAO,  // written by SSAO; absent with --no-ssao
+  // Deferred: the spot lights' shadow maps, one R32_TYPELESS array of a slice
+  // per shadowed spot (a cleared 1x1 slice without one: the lighting pass's
+  // comparison sampler needs a depth view).
+  SpotShadowMaps,
+  // The zoom box's copy of the back buffer (its size and format), while it is shown.
+  ZoomBoxCopy,
   Count
 };
 
 // How a target is sized: as the dynamic RT (DynamicResolution's oversized
-// RT), the back buffer, or the primary upscale's output (the back buffer's
-// times the secondary screen percentage).
-enum class SizeRule { Dynamic, Full, Output };
+// RT), the back buffer, the primary upscale's output (the back buffer's
+// times the secondary screen percentage), or fixed by an option whatever the
+// back buffer (the shadow maps: the plan's shadowMapSize, square).
+enum class SizeRule { Dynamic, Full, Output, Fixed };
 
 // What decides which targets exist and their sizes; a change re-allocates.
 struct RenderTargetPlan {
-  bool dynamic = false, superSampling = false, motionBlur = false, taa = false;
+  bool dynamic = false, superSampling = false, motionBlur = false;
+  TemporalMode temporal = TemporalMode::None;  // FramePlan::temporal
   bool srgbColour = false;  // fix srgb-targets: sRGB colour targets instead of the original's UNORM
   uint32_t backBufferW = 0, backBufferH = 0;
-  // Upscaling (Docs/Upscaling.md): TAAU on, and the output size of the primary
-  // upscale (the back buffer's times the secondary screen percentage).
-  bool taau = false, sharpenPass = false;
+  // Upscaling (Docs/Upscaling.md): the edge-adaptive sharpening pass, and the
+  // output size of the primary upscale (the back buffer's times the secondary
+  // screen percentage).
+  bool sharpenPass = false;
   uint32_t outputW = 0, outputH = 0;
   bool deferred = false, ssao = false;  // --renderer deferred; its SSAO
+  // Deferred: the shadow-map array's slices and size (1 and 1 for the
+  // placeholder without shadowed spots; 0 without deferred shading).
+  uint32_t shadowSlices = 0, shadowMapSize = 0;
+  bool zoomBox = false;  // the zoom box is shown: its copy of the back buffer
+  d3dl::DXGI_FORMAT backBufferFormat = d3dl::DXGI_FORMAT_UNKNOWN;
+  bool TAA() const { return temporal == TemporalMode::TAA; }
+  bool TAAU() const { return temporal == TemporalMode::TAAU; }
   bool Secondary() const { return outputW != 0 && (outputW != backBufferW || outputH != backBufferH); }
   void Size(SizeRule rule, uint32_t dynW, uint32_t dynH, uint32_t* w, uint32_t* h) const;
   bool operator==(const RenderTargetPlan&) const = default;
+  // Whether the plans differ at most in the targets a pass rewrites whole
+  // every frame (the shadow maps, the zoom box's copy): those are made or
+  // freed alone, and no other target, history or controller restarts.
+  bool SameButRewrittenEachFrame(const RenderTargetPlan& other) const;
 };
 
 // A row of the target table (RenderTargets.cpp).
 struct RenderTargetRow {
   const char* name;  // the original's g_* global
-  d3dl::DXGI_FORMAT format;
+  d3dl::DXGI_FORMAT format;  // UNKNOWN: the back buffer's (RenderTargetPlan::backBufferFormat)
   SizeRule size;
   bool (*needed)(const RenderTargetPlan& plan);
+  TargetViews views = TargetViews::ByFormat;  // DepthArray: RenderTargetPlan::shadowSlices slices
 };
 
 class RenderTargetSet {
  public:
   // Creates the targets the plan needs: dynamic ones at dynW x dynH (the
   // oversized RT of DynamicResolution), full ones at the back-buffer size.
+  // A target already there with the same size, format and views is kept;
+  // one the plan does not need is released.
   bool Allocate(d3dl::Device* device, const RenderTargetPlan& plan, uint32_t dynW, uint32_t dynH);
   void Release();
   // Zeroes every allocated target (depth to 1). D3D11 on Windows hands out
@@ -105,11 +142,14 @@ class RenderTargetSet {
   // of its targets whatever the mode (g_Color, g_Velocity, DXUT's depth and the
   // zoom box's copy at the back buffer's size; depth, colour, two velocities,
   // two finals at the dynamic size). The port allocates only what the mode
-  // reads (Needed), and the zoom box's copy only while it is shown.
+  // reads (Needed), and the zoom box's copy only while it is shown. The
+  // original has no shadow maps.
   static uint64_t OriginalBytes(uint32_t backW, uint32_t backH, uint32_t dynW, uint32_t dynH);
 
   static const char* Name(RT rt);  // "g_FinalRTDynamic[0]"
-  static d3dl::DXGI_FORMAT Format(RT rt, bool srgbColour = false);
+  // The format the plan gives rt: the row's, sRGB colour with srgb-targets,
+  // typeless depth where a pass reads it, the back buffer's for the zoom copy.
+  static d3dl::DXGI_FORMAT Format(RT rt, const RenderTargetPlan& plan);
   static const RenderTargetRow& Row(RT rt);
   // Whether the plan needs rt: its row's test.
   static bool Needed(RT rt, const RenderTargetPlan& plan);

@@ -35,7 +35,6 @@ void Sample::WarnIfScaleCut(const Options& options) {
 }
 
 bool Sample::ResizeSwapChain(uint32_t w, uint32_t h) {
-  m_Passes.ZoomBox().ReleaseCopy();
   if (!m_Device.Resize(w, h)) return false;
   ReleaseDynamicResolution();
   // The original's resize: the scene's previous matrices restart, and a paused sample resumes.
@@ -93,7 +92,7 @@ void Sample::ApplySettings(const Options& o) {
     m_History.Invalidate();
   }
   m_Options.camera = m_Cameras.Current();
-  if (!(PlanNow().targets == m_Targets.Plan())) InitDynamicResolution();
+  UpdateTargets();
   if (scaleChanged || m_Options.control == ControlMode::Manual)
     m_DynamicResolution.SetScale(m_Options.scaleX, m_Options.scaleY);
 }
@@ -142,6 +141,7 @@ std::string Sample::DeferredStats() const {
     bytes += m_Targets[rt].Bytes();
     targets += m_Targets[rt].Valid();
   }
+  const RenderTarget& shadowMaps = m_Targets[RT::SpotShadowMaps];
   int points = 0, spots = 0;
   for (const SceneLight& l : m_Scene->Lights()) (l.type == LightType::Point ? points : spots) += 1;
   char b[320];
@@ -149,7 +149,7 @@ std::string Sample::DeferredStats() const {
                 "renderer %s: G-buffer targets %d (%.1f MiB), SSAO %s, shadow maps %u of %u^2 (%.1f MiB, scale %.3f, "
                 "%u depth draws), scene lights %d point + %d spot",
                 RendererOption(m_Options.renderer), targets, bytes / 1048576.0, plan.ssao ? "on" : "off",
-                Deferred().ShadowSlices(), Deferred().ShadowMapSize(), Deferred().ShadowMapBytes() / 1048576.0,
+                Deferred().ShadowSlices(), shadowMaps.width, shadowMaps.Bytes() / 1048576.0,
                 Deferred().ShadowScaleUsed(), Deferred().ShadowMapDraws(), points, spots);
   return b;
 }
@@ -206,7 +206,6 @@ bool Sample::WriteReport(const std::string& path, std::string* error) const {
   info.dynamicRT[0] = m_DynamicResolution.GetDynamicBufferWidth();
   info.dynamicRT[1] = m_DynamicResolution.GetDynamicBufferHeight();
   info.targets = &m_Targets;
-  info.zoomBoxBytes = m_Passes.ZoomBox().Bytes();
   info.passesRun = &m_Profiler.PassesRun();
   info.validationMessages = ValidationMessages();
   info.framesRendered = m_FrameCount - m_MinimisedFrames;

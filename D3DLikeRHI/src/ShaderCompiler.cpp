@@ -104,6 +104,34 @@ void SetUpShader(const ShaderCompileDesc& desc, EShLanguage language, glslang::T
   shader->setShiftBinding(glslang::EResUav, stageBase + kUnorderedAccessBase);
 }
 
+// The source text: desc.Source, else the file at desc.SourcePath.
+bool ReadSource(const ShaderCompileDesc& desc, std::string* source) {
+  *source = desc.Source;
+  return !source->empty() || (!desc.SourcePath.empty() && ReadText(desc.SourcePath, source));
+}
+
+// Defines go into a preamble, as glslangValidator's -DNAME[=VALUE] does
+// (an empty value defines the name as empty, not as 1).
+std::string DefinesPreamble(const ShaderCompileDesc& desc) {
+  std::string preamble;
+  for (const auto& [name, value] : desc.Defines) {
+    preamble += "#define " + name + (value.empty() ? std::string() : " " + value) + "\n";
+  }
+  return preamble;
+}
+
+// The linked program's SPIR-V, legalised as glslangValidator does (empty on
+// failure); glslang's messages into *log.
+void GenerateSpirv(glslang::TProgram& program, EShLanguage language, std::vector<uint32_t>* spirv, std::string* log) {
+  glslang::SpvOptions options;
+  options.validate = false;
+  options.disableOptimizer = false;  // HLSL needs legalization, as glslangValidator runs it
+  spv::SpvBuildLogger logger;
+  spirv->clear();
+  glslang::GlslangToSpv(*program.getIntermediate(language), *spirv, &logger, &options);
+  *log = logger.getAllMessages();
+}
+
 }  // namespace
 
 HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
@@ -120,20 +148,12 @@ HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
     return E_INVALIDARG;
   }
 
-  std::string source = desc.Source;
-  if (source.empty()) {
-    if (desc.SourcePath.empty() || !ReadText(desc.SourcePath, &source)) {
-      err = "CompileHLSL: cannot read '" + desc.SourcePath + "'";
-      return E_INVALIDARG;
-    }
+  std::string source;
+  if (!ReadSource(desc, &source)) {
+    err = "CompileHLSL: cannot read '" + desc.SourcePath + "'";
+    return E_INVALIDARG;
   }
-
-  // Defines go into a preamble, as glslangValidator's -DNAME[=VALUE] does
-  // (an empty value defines the name as empty, not as 1).
-  std::string preamble;
-  for (const auto& [name, value] : desc.Defines) {
-    preamble += "#define " + name + (value.empty() ? std::string() : " " + value) + "\n";
-  }
+  const std::string preamble = DefinesPreamble(desc);
 
   EnsureGlslangInitialised();
   const EShLanguage language = LanguageOf(desc.Stage);
@@ -162,13 +182,8 @@ HRESULT CompileHLSL(const ShaderCompileDesc& desc, std::vector<uint32_t>* spirv,
     return E_FAIL;
   }
 
-  glslang::SpvOptions options;
-  options.validate = false;
-  options.disableOptimizer = false;  // HLSL needs legalization, as glslangValidator runs it
-  spv::SpvBuildLogger logger;
-  spirv->clear();
-  glslang::GlslangToSpv(*program.getIntermediate(language), *spirv, &logger, &options);
-  std::string log = logger.getAllMessages();
+  std::string log;
+  GenerateSpirv(program, language, spirv, &log);
   if (spirv->empty()) {
     err = name + ": SPIR-V generation failed: " + log;
     return E_FAIL;

@@ -4,7 +4,8 @@
 // lit), screen-space ambient occlusion at the dynamic resolution, and the
 // lighting pass into the scene's colour target, so every pass after the
 // scene is the forward path's. DeferredShared holds what they pass on: the
-// constants and the shadow-map array.
+// constants and the comparison sampler; the shadow-map array is a row of the
+// render-target table (RT::SpotShadowMaps).
 #pragma once
 
 #include <cstdint>
@@ -45,11 +46,9 @@ class DeferredShared {
   bool Init(d3dl::Device* device, std::string* error);
   void Release();
 
-  // The shadow-map array's bytes (a 1x1 placeholder without shadowed spots) and the slices in use.
-  uint64_t ShadowMapBytes() const;
+  // The shadow-map slices in use (none with the placeholder) and the last frame's depth-only draws.
   uint32_t ShadowSlices() const { return m_ShadowedSpots; }
-  uint32_t ShadowMapDraws() const { return m_ShadowDraws; }  // last frame's depth-only draws
-  uint32_t ShadowMapSize() const { return m_ShadowSize; }
+  uint32_t ShadowMapDraws() const { return m_ShadowDraws; }
   float ShadowScaleUsed() const { return m_ShadowScaleUsed; }  // last frame's used fraction of the size
 
  private:
@@ -59,22 +58,17 @@ class DeferredShared {
   friend class LightingPass;
   // A new frame: constants zeroed, no shadow drawn yet.
   void BeginFrame();
-  bool EnsureShadowMaps(uint32_t slices, uint32_t size);
   // The lighting pass's comparison sampler needs a depth view even when no
-  // spot reads it: a cleared 1x1 slice.
-  void Placeholder(d3dl::DeviceContext* ctx);
+  // spot reads it: the table's 1x1 slice, cleared.
+  void Placeholder(const PassFrame& f);
   // Everything but the shadow fields, then the upload.
   void FillConstants(const PassFrame& f);
   d3dl::ShaderResourceView* Depth(const PassFrame& f) const;
 
-  d3dl::Device* m_Device = nullptr;
   DeferredConstants m_Constants{};
   ConstantBuffer<DeferredConstants> m_CB;
   d3dl::ComPtr<d3dl::SamplerState> m_ShadowSampler;
-  d3dl::ComPtr<d3dl::Texture2D> m_ShadowMaps;
-  d3dl::ComPtr<d3dl::ShaderResourceView> m_ShadowSRV;
-  d3dl::ComPtr<d3dl::DepthStencilView> m_ShadowDSV[kMaxShadowSlices];
-  uint32_t m_ShadowSlices = 0, m_ShadowSize = 0, m_ShadowDraws = 0;
+  uint32_t m_ShadowDraws = 0;
   float m_ShadowScaleUsed = 0.0f;
   uint32_t m_ShadowedSpots = 0;  // slices in use (the array keeps a 1x1 placeholder without them)
 };

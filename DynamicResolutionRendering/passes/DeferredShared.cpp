@@ -30,7 +30,6 @@ glm::mat4 SpotShadowViewProj(const SceneLight& l) {
 }
 
 bool DeferredShared::Init(d3dl::Device* device, std::string* error) {
-  m_Device = device;
   d3dl::SAMPLER_DESC cmp;
   cmp.Filter = d3dl::FILTER_COMPARISON_MIN_MAG_LINEAR_MIP_POINT;
   cmp.ComparisonFunc = d3dl::COMPARISON_LESS_EQUAL;
@@ -45,13 +44,7 @@ bool DeferredShared::Init(d3dl::Device* device, std::string* error) {
 void DeferredShared::Release() {
   m_CB.Release();
   m_ShadowSampler = nullptr;
-  for (auto& dsv : m_ShadowDSV) dsv = nullptr;
-  m_ShadowSRV = nullptr;
-  m_ShadowMaps = nullptr;
-  m_ShadowSlices = m_ShadowSize = 0;
 }
-
-uint64_t DeferredShared::ShadowMapBytes() const { return uint64_t(m_ShadowSize) * m_ShadowSize * 4 * m_ShadowSlices; }
 
 void DeferredShared::BeginFrame() {
   m_Constants = {};
@@ -60,44 +53,11 @@ void DeferredShared::BeginFrame() {
   m_ShadowedSpots = 0;
 }
 
-// One R32_TYPELESS array: a D32_FLOAT DSV per slice, one R32_FLOAT SRV over all.
-bool DeferredShared::EnsureShadowMaps(uint32_t slices, uint32_t size) {
-  if (m_ShadowMaps && m_ShadowSlices == slices && m_ShadowSize == size) return true;
-  for (auto& dsv : m_ShadowDSV) dsv = nullptr;
-  m_ShadowSRV = nullptr;
-  m_ShadowMaps = nullptr;
-  m_ShadowSlices = m_ShadowSize = 0;
-  d3dl::TEXTURE2D_DESC td;
-  td.Width = td.Height = size;
-  td.MipLevels = 1;
-  td.ArraySize = slices;
-  td.Format = d3dl::DXGI_FORMAT_R32_TYPELESS;
-  td.BindFlags = d3dl::BIND_DEPTH_STENCIL | d3dl::BIND_SHADER_RESOURCE;
-  if (d3dl::FAILED(m_Device->CreateTexture2D(&td, nullptr, m_ShadowMaps.GetAddressOf()))) return false;
-  m_ShadowMaps->SetDebugName("g_SpotShadowMaps");
-  d3dl::SHADER_RESOURCE_VIEW_DESC sv;
-  sv.Format = d3dl::DXGI_FORMAT_R32_FLOAT;
-  sv.ViewDimension = d3dl::SRV_DIMENSION_TEXTURE2DARRAY;
-  sv.Array = {0, slices};
-  if (d3dl::FAILED(m_Device->CreateShaderResourceView(m_ShadowMaps.Get(), &sv, m_ShadowSRV.GetAddressOf())))
-    return false;
-  for (uint32_t i = 0; i < slices; ++i) {
-    d3dl::DEPTH_STENCIL_VIEW_DESC dv;
-    dv.Format = d3dl::DXGI_FORMAT_D32_FLOAT;
-    dv.ViewDimension = d3dl::DSV_DIMENSION_TEXTURE2DARRAY;
-    dv.Array = {i, 1};
-    if (d3dl::FAILED(m_Device->CreateDepthStencilView(m_ShadowMaps.Get(), &dv, m_ShadowDSV[i].GetAddressOf())))
-      return false;
-  }
-  m_ShadowSlices = slices;
-  m_ShadowSize = size;
-  return true;
-}
-
 // The RHI's dummy for an unbound slot is a colour format, which the
 // depth-compare rule of Vulkan refuses.
-void DeferredShared::Placeholder(d3dl::DeviceContext* ctx) {
-  if (EnsureShadowMaps(1, 1)) ctx->ClearDepthStencilView(m_ShadowDSV[0].Get(), d3dl::CLEAR_DEPTH, 1.0f, 0);
+void DeferredShared::Placeholder(const PassFrame& f) {
+  const RenderTarget& maps = f.RTs()[RT::SpotShadowMaps];
+  if (!maps.sliceDsv.empty()) f.ctx->ClearDepthStencilView(maps.sliceDsv[0].Get(), d3dl::CLEAR_DEPTH, 1.0f, 0);
 }
 
 d3dl::ShaderResourceView* DeferredShared::Depth(const PassFrame& f) const {
@@ -127,13 +87,14 @@ void DeferredShared::FillConstants(const PassFrame& f) {
   const Scene& scene = *f.sceneData;
   const float diagonal = glm::length(scene.BoundsMax() - scene.BoundsMin());
   c.ssao = glm::vec4(kSSAORadiusOfScene * diagonal, kSSAOStrength, kSSAOBias, d.ssao ? 1.0f : 0.0f);
+  const uint32_t slices = f.RTs()[RT::SpotShadowMaps].slices;
   uint32_t count = 0, slice = 0;
   for (const SceneLight& l : scene.Lights()) {
     if (count == kMaxDeferredLights || !d.localLights) break;
     const bool spot = l.type == LightType::Spot;
     const float outer = std::cos(glm::radians(l.angleDeg));
     const float inner = std::cos(glm::radians(l.angleDeg * kSpotInnerOfOuter));
-    const float shadowSlice = spot && l.shadow && slice < m_ShadowSlices ? float(slice) : -1.0f;
+    const float shadowSlice = spot && l.shadow && slice < slices ? float(slice) : -1.0f;
     slice += spot && l.shadow;
     c.lights[count++] = {glm::vec4(l.position, l.radius), glm::vec4(l.color, spot ? 1.0f : 0.0f),
                          glm::vec4(l.direction, outer), glm::vec4(shadowSlice, inner, 0.0f, 0.0f)};

@@ -7,7 +7,7 @@ namespace drr {
 bool GBufferPass::Record(PassFrame& f) {
   if (!f.plan->Runs(PassId::ShadowMaps)) {
     m_Shared.BeginFrame();
-    m_Shared.Placeholder(f.ctx);
+    m_Shared.Placeholder(f);
   }
   RenderTargetSet& rts = f.RTs();
   d3dl::RenderTargetView* gbuffer[4] = {rts[RT::GBufferDiffuse].rtv.Get(), rts[RT::GBufferSpecular].rtv.Get(),

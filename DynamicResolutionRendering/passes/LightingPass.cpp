@@ -12,7 +12,7 @@ bool LightingPass::Record(PassFrame& f) {
   d3dl::ShaderResourceView* ao = f.plan->deferredFrame.ssao ? rts[RT::GBufferAO].srv.Get() : nullptr;
   Draw(f.ctx, m_Kit.dynamicVS.Get(), m_PS.Get(), m_Shared.m_CB.Get(),
        {rts[RT::GBufferDiffuse].srv.Get(), rts[RT::GBufferSpecular].srv.Get(), rts[RT::GBufferNormal].srv.Get(), ao,
-        m_Shared.Depth(f), m_Shared.m_ShadowSRV.Get()});
+        m_Shared.Depth(f), rts[RT::SpotShadowMaps].srv.Get()});
   return true;
 }
 

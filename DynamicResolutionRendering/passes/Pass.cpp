@@ -15,8 +15,8 @@ SceneTargets ChooseSceneTargets(RenderTargetSet& rts, const FrameSetup& s, const
     RenderTarget& colour = s.motionBlur ? rts[RT::ColorDynamic] : rts.Final(s.cur);
     t.rtv[0] = colour.rtv.Get();
     t.colour = colour.texture.Get();
-    if (s.motionBlur || s.taa || s.taau) {
-      RenderTarget& velocity = rts.Velocity((s.taa && !s.motionBlur) ? s.cur : 0);
+    if (s.motionBlur || s.temporal != TemporalMode::None) {
+      RenderTarget& velocity = rts.Velocity((s.TAA() && !s.motionBlur) ? s.cur : 0);
       t.rtv[1] = velocity.rtv.Get();
       t.velocity = velocity.texture.Get();
     }

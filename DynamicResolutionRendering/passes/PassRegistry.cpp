@@ -39,7 +39,7 @@ PassRegistry::PassRegistry() {
   set(PassId::TemporalUpsample, new TemporalUpsamplePass(m_Kit));
   set(PassId::Sharpen, new SharpenPass(m_Kit));
   set(PassId::SecondaryUpscale, new SecondaryUpscalePass(m_Kit));
-  set(PassId::ZoomBox, m_Zoom = new ZoomBoxPass(m_Kit));
+  set(PassId::ZoomBox, new ZoomBoxPass(m_Kit));
   set(PassId::GUI, new GuiPass);
 }
 

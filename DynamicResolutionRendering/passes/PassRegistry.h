@@ -30,8 +30,6 @@ class PassRegistry {
   // afterStage(stage) (the frame log's captures).
   void Record(PassFrame& frame, const std::function<void(PassStage)>& afterStage);
 
-  ZoomBoxPass& ZoomBox() { return *m_Zoom; }
-  const ZoomBoxPass& ZoomBox() const { return *m_Zoom; }
   const DeferredShared& Deferred() const { return m_Deferred; }
 
  private:
@@ -41,7 +39,6 @@ class PassRegistry {
   std::array<std::unique_ptr<Pass>, size_t(PassId::Count)> m_Passes;
   bool RecordedAsCompute(PassFrame& frame, PassStage stage);
 
-  ZoomBoxPass* m_Zoom = nullptr;
   // The Scale stage as compute passes when FrameSetup::computeUpscale; it
   // declines (and the pixel passes run) where the device cannot.
   std::unique_ptr<ComputeUpscale> m_Compute;

@@ -53,9 +53,9 @@ bool ResolvePass::Record(PassFrame& f) {
   }
   UploadUpscale(f.ctx, s.uc);
   BindSamplers(f.ctx, filter.linearSampler);
-  const bool velocityTAA = s.taa && !s.motionBlur;
+  const bool velocityTAA = s.TAA() && !s.motionBlur;
   DrawDynamic(f.ctx, FilterShader(m_Shaders, s), rc,
-              {rts.Final(s.resolveCur).srv.Get(), s.taa ? rts.Final(s.resolvePrev).srv.Get() : nullptr,
+              {rts.Final(s.resolveCur).srv.Get(), s.TAA() ? rts.Final(s.resolvePrev).srv.Get() : nullptr,
                velocityTAA ? rts.Velocity(s.resolveCur).srv.Get() : nullptr,
                velocityTAA ? rts.Velocity(s.resolvePrev).srv.Get() : nullptr, m_Noise.GetSRV(),
                m_CubicLookup.GetSRV()});

@@ -10,7 +10,7 @@ bool SecondaryUpscalePass::Record(PassFrame& f) {
   UploadUpscale(f.ctx, s.uc);
   BindSamplers(f.ctx);
   d3dl::ShaderResourceView* source =
-      s.taau ? rts.UpscaleHistory(s.historyCur).srv.Get() : rts[RT::UpscaleOutput].srv.Get();
+      s.TAAU() ? rts.UpscaleHistory(s.historyCur).srv.Get() : rts[RT::UpscaleOutput].srv.Get();
   DrawDynamic(f.ctx, m_PS.Get(), s.dc, {source});
   return true;
 }

@@ -16,17 +16,20 @@ bool ShadowMapPass::Record(PassFrame& f) {
   const DeferredFrame& d = f.plan->deferredFrame;
   const Scene& scene = *f.sceneData;
   for (const SceneLight& l : scene.Lights()) s.m_ShadowedSpots += l.shadow;
-  if (!s.EnsureShadowMaps(s.m_ShadowedSpots, d.shadowMapSize)) return false;
-  const float used = std::max(1.0f, std::floor(d.shadowScale * float(s.m_ShadowSize)));
+  // The table's array, a slice per shadowed spot (RenderTargetPlan::shadowSlices).
+  const RenderTarget& maps = f.RTs()[RT::SpotShadowMaps];
+  if (!maps.Valid() || maps.slices < s.m_ShadowedSpots) return false;
+  const float size = float(maps.width);
+  const float used = std::max(1.0f, std::floor(d.shadowScale * size));
   const d3dl::VIEWPORT viewport{0, 0, used, used, 0, 1};
   DeferredConstants& c = s.m_Constants;
-  c.shadow = glm::vec4(used / float(s.m_ShadowSize), 1.0f / float(s.m_ShadowSize), kShadowCompareBias, 0.0f);
+  c.shadow = glm::vec4(used / size, 1.0f / size, kShadowCompareBias, 0.0f);
   s.m_ShadowScaleUsed = c.shadow.x;
   uint32_t slice = 0;
   for (const SceneLight& l : scene.Lights()) {
     if (!l.shadow) continue;
     c.shadowViewProj[slice] = SpotShadowViewProj(l);
-    d3dl::DepthStencilView* dsv = s.m_ShadowDSV[slice].Get();
+    d3dl::DepthStencilView* dsv = maps.sliceDsv[slice].Get();
     f.ctx->OMSetRenderTargets(0, nullptr, dsv);
     f.ctx->ClearDepthStencilView(dsv, d3dl::CLEAR_DEPTH, 1.0f, 0);
     f.ctx->RSSetViewports(1, &viewport);

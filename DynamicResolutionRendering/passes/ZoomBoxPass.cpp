@@ -5,7 +5,6 @@
 namespace drr {
 
 bool ZoomBoxPass::Init(d3dl::Device* device, std::string* error) {
-  m_Device = device;
   if (!m_CB.Create(device)) {
     *error = "zoom box: cannot create its states";
     return false;
@@ -18,51 +17,21 @@ bool ZoomBoxPass::LoadShaders(ShaderLoad& load) {
                    {{"ZoomBox_ZoomPS", &m_ZoomPS}, {"ZoomBox_FramePS", &m_FramePS}});
 }
 
-void ZoomBoxPass::ReleaseCopy() {
-  m_CopySRV = nullptr;
-  m_Copy = nullptr;
-  m_CopyW = m_CopyH = 0;
-  m_Bytes = 0;
-}
-
 void ZoomBoxPass::Release() {
-  ReleaseCopy();
   m_ZoomVS = m_FrameVS = nullptr;
   m_ZoomPS = m_FramePS = nullptr;
   m_CB.Release();
-  m_Device = nullptr;
-}
-
-// A texture of the back buffer's size and format (the original's zoom texture).
-bool ZoomBoxPass::EnsureCopy(d3dl::Texture2D* backBuffer) {
-  d3dl::TEXTURE2D_DESC bd;
-  backBuffer->GetDesc(&bd);
-  if (m_Copy && m_CopyW == bd.Width && m_CopyH == bd.Height && m_CopyFormat == bd.Format) return true;
-  ReleaseCopy();
-  d3dl::TEXTURE2D_DESC d;
-  d.Width = bd.Width;
-  d.Height = bd.Height;
-  d.Format = bd.Format;
-  d.BindFlags = d3dl::BIND_SHADER_RESOURCE;
-  if (d3dl::FAILED(m_Device->CreateTexture2D(&d, nullptr, m_Copy.ReleaseAndGetAddressOf())) ||
-      d3dl::FAILED(m_Device->CreateShaderResourceView(m_Copy.Get(), nullptr, m_CopySRV.ReleaseAndGetAddressOf()))) {
-    ReleaseCopy();
-    return false;
-  }
-  m_Copy->SetDebugName("ZoomBoxCopy");
-  m_CopyW = bd.Width;
-  m_CopyH = bd.Height;
-  m_CopyFormat = bd.Format;
-  m_Bytes = uint64_t(bd.Width) * bd.Height * d3dl::FormatBytesPerElement(bd.Format);
-  return true;
 }
 
 bool ZoomBoxPass::Record(PassFrame& f) {
   d3dl::DeviceContext* ctx = f.ctx;
   const BackBuffer& bb = f.backBuffer;
+  const RenderTarget& copy = f.RTs()[RT::ZoomBoxCopy];
   ctx->OMSetRenderTargets(0, nullptr, nullptr);
-  if (!m_ZoomVS || bb.width == 0 || bb.height == 0 || !EnsureCopy(bb.texture)) return true;
-  ctx->CopyResource(m_Copy.Get(), bb.texture);
+  if (!m_ZoomVS || bb.width == 0 || bb.height == 0 || !copy.Valid() || copy.width != bb.width ||
+      copy.height != bb.height)
+    return true;
+  ctx->CopyResource(copy.texture.Get(), bb.texture);
   const ZoomBoxGeometry g = MakeZoomBoxGeometry(f.zoomCentre[0], f.zoomCentre[1]);
   Constants c{};
   std::memcpy(c.quad, g.quad.data(), sizeof c.quad);
@@ -86,7 +55,7 @@ bool ZoomBoxPass::Record(PassFrame& f) {
   ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_TRIANGLESTRIP);
   ctx->VSSetShader(m_ZoomVS.Get());
   ctx->PSSetShader(m_ZoomPS.Get());
-  ctx->PSSetShaderResources(0, 1, m_CopySRV.GetAddressOf());
+  ctx->PSSetShaderResources(0, 1, copy.srv.GetAddressOf());
   ctx->PSSetSamplers(0, 1, m_Kit.point.GetAddressOf());
   ctx->Draw(4, 0);
   ctx->IASetPrimitiveTopology(d3dl::PRIMITIVE_TOPOLOGY_LINESTRIP);

@@ -304,55 +304,98 @@ ControlTarget LawTarget(const ResolutionController& controller, const ControlTar
   return t;
 }
 
+namespace {
+// What the law is shown of each frame: the GPU time of the frame latencyFrames
+// back, with that frame's scale; fed as the original, the 10-result average of
+// those times and DXUT's frame period (or the last frame's period with the
+// lastFramePeriod variant) instead; a corrupt frame's injected values over either.
+class LawView {
+public:
+  LawView(Feed feed, int latencyFrames, bool lastFramePeriod)
+      : m_Feed(feed), m_LatencyFrames(latencyFrames), m_LastFramePeriod(lastFramePeriod) {
+    m_Fps.Tick(m_Clock);
+  }
+
+  // Frame f, rendered at scale, has ended: what the law is given now.
+  FrameTiming Next(const PlantFrame& f, double scale) {
+    m_InFlight.push_back({f.actual, scale});
+    const InFlight seen = m_InFlight.front();
+    if (static_cast<int>(m_InFlight.size()) > m_LatencyFrames) m_InFlight.pop_front();
+    FrameTiming timing{seen.gpu, f.frameSeconds, seen.scale};
+    if (m_Feed == Feed::Original) {
+      m_Average.Add(seen.gpu);
+      m_Clock += f.frameSeconds;
+      m_Fps.Tick(m_Clock);  // DXUT counts the frame at the start of the next one
+      timing = {m_Average.Value(), m_LastFramePeriod ? f.frameSeconds : m_Fps.FrameSeconds()};
+    }
+    if (f.corrupt) {
+      timing.gpuInnerSeconds = f.corruptGpu;
+      if (f.corruptFrame >= 0.0 || std::isnan(f.corruptFrame)) timing.frameSeconds = f.corruptFrame;
+    }
+    return timing;
+  }
+
+private:
+  struct InFlight {
+    double gpu, scale;
+  };
+  Feed m_Feed;
+  int m_LatencyFrames;
+  bool m_LastFramePeriod;
+  std::deque<InFlight> m_InFlight;  // GPU times (and their frames' scales) on their way to the controller
+  BlockAverage m_Average{10};       // the original's AveragedGPUTimer(10)
+  DxutFpsCounter m_Fps;
+  double m_Clock = 0.0;  // simulated time at the start of the next frame
+};
+
+// The counts after warm-up (SimResult's over budget, changes and still
+// changes) and the scales GivenUpPercent compares.
+struct LoopMetrics {
+  int from = 0;         // LoopSpec::metricsFrom
+  double budget = 0.0;  // T
+  std::vector<double> scales, budgetScales;
+
+  // Frame n, applied at scale, changed the viewport or not; returns whether
+  // it counts as over budget.
+  bool Count(int n, const PlantFrame& f, double scale, bool changed, SimResult* r) {
+    const bool over = n >= from && f.actual > budget && f.countsOverBudget;
+    if (n < from) return over;
+    if (over) ++r->overBudget;
+    if (changed) ++r->changes;
+    if (f.still && changed) ++r->stillChanges;
+    scales.push_back(scale);
+    budgetScales.push_back(f.budgetScale);
+    return over;
+  }
+};
+}  // namespace
+
 SimResult RunLoop(ResolutionController& controller, Plant& plant, const LoopSpec& c, bool keepTrace) {
   const ControlTarget target = SanitizeTarget(c.target);
   const ControlTarget lawTarget = LawTarget(controller, target, c.commonAim);
-  const int frames = c.frames;
-  const double budget = target.budgetSeconds;
   const double aim = controller.AimSeconds(lawTarget);
 
   DynamicResolution dr;
   dr.InitializeResolutionParameters(c.backBufferWidth, c.backBufferHeight, 8192, 8192,
                                     static_cast<float>(std::max(1.0, target.maxScale)));
   dr.SetScale(1.0f, 1.0f);
-
-  struct InFlight {
-    double gpu, scale;
-  };
-  std::deque<InFlight> inFlight;  // GPU times (and their frames' scales) on their way to the controller
   const Feed feed = c.feed.value_or(dynamic_cast<ArticleController*>(&controller) ? Feed::Original : Feed::PerResult);
-  BlockAverage average(10);  // the original's AveragedGPUTimer(10)
-  DxutFpsCounter fps;
-  double clock = 0.0;        // simulated time at the start of the next frame
-  fps.Tick(clock);
+  LawView shown(feed, c.latencyFrames, c.variant.lastFramePeriod);
 
   SimResult r;
   r.controller = std::string(controller.Name());
   r.scenario = c.scenario;
   r.aimSeconds = aim;
-  r.budgetSeconds = budget;
+  r.budgetSeconds = target.budgetSeconds;
   r.settleApplies = c.settleApplies;
 
-  std::vector<double> err(frames, 0.0), scales, budgetScales;
-  for (int n = 0; n < frames; ++n) {
+  LoopMetrics metrics{c.metricsFrom, target.budgetSeconds, {}, {}};
+  std::vector<double> err(c.frames, 0.0);
+  for (int n = 0; n < c.frames; ++n) {
     const double sx = dr.GetScaleX();
     const double sy = dr.GetScaleY();
     const PlantFrame f = plant.Frame(n, sx * sy);
-
-    inFlight.push_back({f.actual, sx});
-    const InFlight seen = inFlight.front();
-    if (static_cast<int>(inFlight.size()) > c.latencyFrames) inFlight.pop_front();
-    FrameTiming timing{seen.gpu, f.frameSeconds, seen.scale};
-    if (feed == Feed::Original) {
-      average.Add(seen.gpu);
-      clock += f.frameSeconds;
-      fps.Tick(clock);  // DXUT counts the frame at the start of the next one
-      timing = {average.Value(), c.variant.lastFramePeriod ? f.frameSeconds : fps.FrameSeconds()};
-    }
-    if (f.corrupt) {
-      timing.gpuInnerSeconds = f.corruptGpu;
-      if (f.corruptFrame >= 0.0 || std::isnan(f.corruptFrame)) timing.frameSeconds = f.corruptFrame;
-    }
+    const FrameTiming timing = shown.Next(f, sx);
 
     const unsigned int w0 = dr.GetViewportWidth(), h0 = dr.GetViewportHeight();
     const double next = controller.Update(sx, timing, lawTarget);
@@ -360,21 +403,14 @@ SimResult RunLoop(ResolutionController& controller, Plant& plant, const LoopSpec
     const bool changed = dr.GetViewportWidth() != w0 || dr.GetViewportHeight() != h0;
 
     err[n] = f.model / aim - 1.0;
-    const bool over = n >= c.metricsFrom && f.actual > budget && f.countsOverBudget;
-    if (n >= c.metricsFrom) {
-      if (over) ++r.overBudget;
-      if (changed) ++r.changes;
-      if (f.still && changed) ++r.stillChanges;
-      scales.push_back(sx);
-      budgetScales.push_back(f.budgetScale);
-    }
+    const bool over = metrics.Count(n, f, sx, changed, &r);
     if (keepTrace)
       r.trace.push_back({n, f.load, sx, f.model, timing.gpuInnerSeconds, timing.frameSeconds, changed, f.actual,
                          f.budgetScale, over});
   }
   ScoreResponse(c, err, &r);
   r.finalScale = dr.GetScaleX();
-  r.givenUpPct = GivenUpPercent(scales, budgetScales);
+  r.givenUpPct = GivenUpPercent(metrics.scales, metrics.budgetScales);
   return r;
 }
 

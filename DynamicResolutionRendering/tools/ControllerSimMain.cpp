@@ -147,88 +147,142 @@ struct SimArgs {
   bool headroomSweep = false;  // totals per law at each headroom of the scan instead of the tables
 };
 
+// The options' values: argv[*i + 1], moving *i past it; the usage exit when
+// there is none.
+struct ArgCursor {
+  int argc;
+  char** argv;
+  int* i;
+  std::string_view Value(std::string_view name) const {
+    if (*i + 1 >= argc) Fail("missing value after " + std::string(name));
+    return argv[++*i];
+  }
+};
+
+// The on/off options; false when arg is none of them.
+bool ParseFlag(std::string_view arg, SimArgs* args) {
+  struct Flag {
+    std::string_view name;
+    bool SimArgs::*member;
+  };
+  static constexpr Flag kFlags[] = {{"--scan-robust", &SimArgs::scanRobust},     {"--scan-ue", &SimArgs::scanUE},
+                                    {"--synthetic-set", &SimArgs::syntheticSet}, {"--robust-before", &SimArgs::robustBefore},
+                                    {"--headroom-sweep", &SimArgs::headroomSweep}, {"--sweep-k", &SimArgs::sweep}};
+  for (const Flag& f : kFlags)
+    if (arg == f.name) {
+      args->*f.member = true;
+      return true;
+    }
+  return false;
+}
+
+// The numbers of the runs, the plant and the laws; false when arg is none of
+// them, the usage exit on a bad value.
+bool ParseNumber(std::string_view arg, const ArgCursor& in, SimArgs* args) {
+  drr::sim::SimConfig& config = args->config;
+  long long n;
+  double x;
+  if (arg == "--frames") {
+    if (!ParseInt(in.Value(arg), drr::sim::kMinFrames, 1000000, &n)) Fail("--frames needs an integer in range");
+    config.frames = static_cast<int>(n);
+  } else if (arg == "--seed") {
+    if (!ParseInt(in.Value(arg), 0, 4294967295LL, &n)) Fail("--seed needs an integer 0..4294967295");
+    config.seed = static_cast<std::uint32_t>(n);
+  } else if (arg == "--noise") {
+    if (!ParseDouble(in.Value(arg), &x) || x < 0.0 || x > 0.5) Fail("--noise needs a number 0..0.5");
+    config.plant.noise = x;
+  } else if (arg == "--noise-corr") {
+    if (!ParseDouble(in.Value(arg), &x) || x < 0.0 || x > 0.99) Fail("--noise-corr needs a number 0..0.99");
+    config.plant.noiseCorrelation = x;
+  } else if (arg == "--headroom") {
+    if (!ParseDouble(in.Value(arg), &x) || x < 0.0 || x > 0.5) Fail("--headroom needs a number 0..0.5");
+    config.target.headroom = x;
+  } else if (arg == "--latency") {
+    if (!ParseInt(in.Value(arg), 0, 16, &n)) Fail("--latency needs an integer 0..16");
+    config.plant.latencyFrames = static_cast<int>(n);
+  } else if (arg == "--gain") {
+    if (!ParseDouble(in.Value(arg), &args->gain) || args->gain < drr::ArticleController::kMinGain ||
+        args->gain > drr::ArticleController::kMaxGain)
+      Fail("--gain needs a number 0.001..10");
+    args->gainSet = true;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// Appends the article variants of a comma list ("all" = the three).
+void AddArticleVariants(std::string_view list, std::vector<drr::sim::ArticleVariant>* variants) {
+  for (std::string_view name : SplitCommas(list)) {
+    drr::sim::ArticleVariant v;
+    if (name == "all") {
+      *variants = {drr::sim::ArticleVariant::Original, drr::sim::ArticleVariant::FramePeriod,
+                   drr::sim::ArticleVariant::AppliedScale};
+    } else if (drr::sim::ParseArticleVariant(name, &v)) {
+      variants->push_back(v);
+    } else {
+      Fail("unknown article variant '" + std::string(name) + "'");
+    }
+  }
+}
+
+// A non-empty path value of arg.
+std::string PathValue(std::string_view arg, const ArgCursor& in, const char* what) {
+  std::string path(in.Value(arg));
+  if (path.empty()) Fail(std::string(arg) + " needs " + what);
+  return path;
+}
+
+// The names, lists and paths; false when arg is none of them, the usage exit
+// on a bad value.
+bool ParseText(std::string_view arg, const ArgCursor& in, SimArgs* args) {
+  if (arg == "--controller") {
+    AddLaws(in.Value(arg), &args->laws);
+  } else if (arg == "--scenario") {
+    AddScenarios(in.Value(arg), &args->scenarios);
+  } else if (arg == "--article-variant") {
+    AddArticleVariants(in.Value(arg), &args->variants);
+  } else if (arg == "--feed") {
+    const std::string_view f = in.Value(arg);
+    if (f == "original") args->config.feed = drr::Feed::Original;
+    else if (f == "per-result") args->config.feed = drr::Feed::PerResult;
+    else Fail("--feed needs original or per-result");
+  } else if (arg == "--traces") {
+    args->tracesDir = PathValue(arg, in, "a directory");
+  } else if (arg == "--tuning-traces") {
+    args->tuningTracesDir = PathValue(arg, in, "a directory");
+  } else if (arg == "--csv") {
+    args->csvPath = PathValue(arg, in, "a path");
+  } else if (arg == "--per-frame") {
+    args->perFramePath = PathValue(arg, in, "a path");
+  } else {
+    return false;
+  }
+  return true;
+}
+
 // Reads the option at argv[*i] and its value (moving *i past it); exits with
 // the usage on a bad one.
 void ParseOption(int argc, char** argv, int* i, SimArgs* args) {
   const std::string_view arg = argv[*i];
-  auto value = [&](std::string_view name) -> std::string_view {
-    if (*i + 1 >= argc) Fail("missing value after " + std::string(name));
-    return argv[++*i];
-  };
-  drr::sim::SimConfig& config = args->config;
-  long long n;
-  double x;
-  if (arg == "--controller") {
-    AddLaws(value(arg), &args->laws);
-  } else if (arg == "--scenario") {
-    AddScenarios(value(arg), &args->scenarios);
-  } else if (arg == "--frames") {
-    if (!ParseInt(value(arg), drr::sim::kMinFrames, 1000000, &n)) Fail("--frames needs an integer in range");
-    config.frames = static_cast<int>(n);
-  } else if (arg == "--seed") {
-    if (!ParseInt(value(arg), 0, 4294967295LL, &n)) Fail("--seed needs an integer 0..4294967295");
-    config.seed = static_cast<std::uint32_t>(n);
-  } else if (arg == "--noise") {
-    if (!ParseDouble(value(arg), &x) || x < 0.0 || x > 0.5) Fail("--noise needs a number 0..0.5");
-    config.plant.noise = x;
-  } else if (arg == "--noise-corr") {
-    if (!ParseDouble(value(arg), &x) || x < 0.0 || x > 0.99) Fail("--noise-corr needs a number 0..0.99");
-    config.plant.noiseCorrelation = x;
-  } else if (arg == "--headroom") {
-    if (!ParseDouble(value(arg), &x) || x < 0.0 || x > 0.5) Fail("--headroom needs a number 0..0.5");
-    config.target.headroom = x;
-  } else if (arg == "--scan-robust") {
-    args->scanRobust = true;
-  } else if (arg == "--scan-ue") {
-    args->scanUE = true;
-  } else if (arg == "--synthetic-set") {
-    args->syntheticSet = true;
-  } else if (arg == "--traces") {
-    args->tracesDir = std::string(value(arg));
-    if (args->tracesDir.empty()) Fail("--traces needs a directory");
-  } else if (arg == "--latency") {
-    if (!ParseInt(value(arg), 0, 16, &n)) Fail("--latency needs an integer 0..16");
-    config.plant.latencyFrames = static_cast<int>(n);
-  } else if (arg == "--gain") {
-    if (!ParseDouble(value(arg), &args->gain) || args->gain < drr::ArticleController::kMinGain ||
-        args->gain > drr::ArticleController::kMaxGain)
-      Fail("--gain needs a number 0.001..10");
-    args->gainSet = true;
-  } else if (arg == "--article-variant") {
-    for (std::string_view name : SplitCommas(value(arg))) {
-      drr::sim::ArticleVariant v;
-      if (name == "all") {
-        args->variants = {drr::sim::ArticleVariant::Original, drr::sim::ArticleVariant::FramePeriod,
-                          drr::sim::ArticleVariant::AppliedScale};
-      } else if (drr::sim::ParseArticleVariant(name, &v)) {
-        args->variants.push_back(v);
-      } else {
-        Fail("unknown article variant '" + std::string(name) + "'");
-      }
-    }
-  } else if (arg == "--feed") {
-    const std::string_view f = value(arg);
-    if (f == "original") config.feed = drr::Feed::Original;
-    else if (f == "per-result") config.feed = drr::Feed::PerResult;
-    else Fail("--feed needs original or per-result");
-  } else if (arg == "--csv") {
-    args->csvPath = std::string(value(arg));
-    if (args->csvPath.empty()) Fail("--csv needs a path");
-  } else if (arg == "--robust-before") {
-    args->robustBefore = true;
-  } else if (arg == "--headroom-sweep") {
-    args->headroomSweep = true;
-  } else if (arg == "--tuning-traces") {
-    args->tuningTracesDir = std::string(value(arg));
-    if (args->tuningTracesDir.empty()) Fail("--tuning-traces needs a directory");
-  } else if (arg == "--per-frame") {
-    args->perFramePath = std::string(value(arg));
-    if (args->perFramePath.empty()) Fail("--per-frame needs a path");
-  } else if (arg == "--sweep-k") {
-    args->sweep = true;
-  } else {
+  const ArgCursor in{argc, argv, i};
+  if (!ParseFlag(arg, args) && !ParseNumber(arg, in, args) && !ParseText(arg, in, args))
     Fail("unknown argument '" + std::string(arg) + "'");
+}
+
+// The options, with every law and scenario when none is named; false after --help.
+bool ParseArgs(int argc, char** argv, SimArgs* args) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      Usage(std::cout);
+      return false;
+    }
+    ParseOption(argc, argv, &i, args);
   }
+  if (args->laws.empty()) args->laws = drr::sim::AllLaws();
+  if (args->scenarios.empty()) args->scenarios = drr::sim::AllScenarios();
+  return true;
 }
 
 // A fresh controller of the law told the latency; the article law with
@@ -356,20 +410,51 @@ void WriteOutputs(const SimArgs& args, std::ofstream& csv, const std::vector<drr
   drr::sim::WritePerFrameCsv(perFrame, results);
 }
 
+// --scan-robust, --scan-ue: the scan on the tuning set (held-out traces refused).
+int RunScan(const SimArgs& args) {
+  const drr::sim::SimConfig& config = args.config;
+  if (!args.tracesDir.empty()) Fail("--scan-robust and --scan-ue tune on the tuning set only; --traces is held out");
+  std::vector<drr::sim::TraceCase> tuning;
+  std::string error;
+  if (!args.tuningTracesDir.empty() && !drr::sim::LoadTraceDir(args.tuningTracesDir, &tuning, &error)) {
+    std::cerr << "drr_controller_sim: " << error << "\n";
+    return 1;
+  }
+  for (const drr::sim::TraceCase& c : tuning)
+    if (c.trace.HeldOut()) Fail("'" + c.trace.name + "' is a held-out trace: it must not be used for tuning");
+  if (args.scanUE) drr::sim::PrintUEStyleScan(std::cout, drr::sim::ScanUEStyle(config, tuning), config.target.headroom);
+  else drr::sim::PrintRobustScan(std::cout, drr::sim::ScanRobust(config, tuning), config.target.headroom);
+  return 0;
+}
+
+// The scenario table: every law, or the article variants, on every scenario,
+// under the plant's line.
+std::vector<drr::sim::SimResult> RunScenarioTable(const SimArgs& args) {
+  const drr::sim::SimConfig& config = args.config;
+  std::vector<drr::sim::SimResult> results;
+  if (args.variants.empty()) {
+    results = RunLawsOnScenarios(args);
+  } else {
+    for (drr::sim::ArticleVariant v : args.variants) {
+      const auto rows = drr::sim::RunArticleVariant(v, args.scenarios, config);
+      results.insert(results.end(), rows.begin(), rows.end());
+    }
+  }
+  std::cout << "Plant: gpu = (2 ms + 30 ms * sx * sy * load) * (1 + " << config.plant.noise << " e), e AR(1) of "
+            << config.plant.noiseCorrelation << ", budget 16.67 ms, every law aims at "
+            << 1000.0 / 60.0 * (1.0 - config.target.headroom) << " ms"
+            << (args.variants.empty() ? "" : " (article variants: at 16.67 ms, the original's)") << ", latency "
+            << config.plant.latencyFrames << ", seed " << config.seed << ", " << config.frames
+            << " frames, disturbance at 300\n\n";
+  drr::sim::PrintTable(std::cout, results);
+  return results;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   SimArgs args;
-  for (int i = 1; i < argc; ++i) {
-    const std::string_view arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      Usage(std::cout);
-      return 0;
-    }
-    ParseOption(argc, argv, &i, &args);
-  }
-  if (args.laws.empty()) args.laws = drr::sim::AllLaws();
-  if (args.scenarios.empty()) args.scenarios = drr::sim::AllScenarios();
+  if (!ParseArgs(argc, argv, &args)) return 0;  // --help
   const drr::sim::SimConfig& config = args.config;
 
   std::ofstream csv;
@@ -387,55 +472,23 @@ int main(int argc, char** argv) {
     if (csv.is_open()) drr::sim::WriteSweepCsv(csv, rows);
     return 0;
   }
-
-  std::vector<drr::sim::SimResult> results;
-  if (args.scanRobust || args.scanUE) {
-    if (!args.tracesDir.empty()) Fail("--scan-robust and --scan-ue tune on the tuning set only; --traces is held out");
-    std::vector<drr::sim::TraceCase> tuning;
-    std::string error;
-    if (!args.tuningTracesDir.empty() && !drr::sim::LoadTraceDir(args.tuningTracesDir, &tuning, &error)) {
-      std::cerr << "drr_controller_sim: " << error << "\n";
-      return 1;
-    }
-    for (const drr::sim::TraceCase& c : tuning)
-      if (c.trace.HeldOut()) Fail("'" + c.trace.name + "' is a held-out trace: it must not be used for tuning");
-    if (args.scanUE) drr::sim::PrintUEStyleScan(std::cout, drr::sim::ScanUEStyle(config, tuning), config.target.headroom);
-    else drr::sim::PrintRobustScan(std::cout, drr::sim::ScanRobust(config, tuning), config.target.headroom);
-    return 0;
-  }
+  if (args.scanRobust || args.scanUE) return RunScan(args);
   if (args.headroomSweep) {
     SweepHeadroom(args);
     return 0;
   }
+  std::vector<drr::sim::SimResult> results;
   if (!args.tracesDir.empty()) {
     results = RunLawsOnTraces(args, true);
     drr::sim::PrintTable(std::cout, results);
-    WriteOutputs(args, csv, results);
-    return 0;
-  }
-  if (args.syntheticSet) {
+  } else if (args.syntheticSet) {
     std::cout << "Synthetic set (latency " << "0..3, white 1 % and AR(0.9) 3 %), seed " << config.seed << "\n\n";
     results = RunLawsOnSyntheticSet(args, true);
     std::cout << "### whole synthetic set\n\n";
     PrintTotals(results, "set", "all");
-    WriteOutputs(args, csv, results);
-    return 0;
-  }
-  if (args.variants.empty()) {
-    results = RunLawsOnScenarios(args);
   } else {
-    for (drr::sim::ArticleVariant v : args.variants) {
-      const auto rows = drr::sim::RunArticleVariant(v, args.scenarios, config);
-      results.insert(results.end(), rows.begin(), rows.end());
-    }
+    results = RunScenarioTable(args);
   }
-  std::cout << "Plant: gpu = (2 ms + 30 ms * sx * sy * load) * (1 + " << config.plant.noise << " e), e AR(1) of "
-            << config.plant.noiseCorrelation << ", budget 16.67 ms, every law aims at "
-            << 1000.0 / 60.0 * (1.0 - config.target.headroom) << " ms"
-            << (args.variants.empty() ? "" : " (article variants: at 16.67 ms, the original's)") << ", latency "
-            << config.plant.latencyFrames << ", seed " << config.seed << ", " << config.frames
-            << " frames, disturbance at 300\n\n";
-  drr::sim::PrintTable(std::cout, results);
   WriteOutputs(args, csv, results);
   return 0;
 }

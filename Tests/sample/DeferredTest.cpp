@@ -176,10 +176,24 @@ TEST_F(DeferredTest, ShadowMapScaleFollowsItsLaw) {
   EXPECT_FLOAT_EQ(sample.Deferred().ShadowScaleUsed(), 0.75f);
   EXPECT_EQ(sample.Deferred().ShadowSlices(), 1u);
   EXPECT_GT(sample.Deferred().ShadowMapDraws(), 0u);
+  // The table's row: one slice of --shadow-map-size squared.
+  const RenderTarget& maps = sample.Targets()[RT::SpotShadowMaps];
+  EXPECT_EQ(maps.slices, 1u);
+  EXPECT_EQ(maps.width, 256u);
+  EXPECT_EQ(maps.Bytes(), 256u * 256u * 4u);
   o.shadowLaw = ShadowLaw::Main;
   sample.ApplySettings(o);
   ASSERT_TRUE(sample.RenderFrame());
   EXPECT_FLOAT_EQ(sample.Deferred().ShadowScaleUsed(), std::floor(0.75f * 0.5f * 256.0f) / 256.0f);
+  // Without the local lights the 1x1 placeholder replaces the maps alone.
+  const d3dl::Texture2D* kept = sample.Targets()[RT::FinalDynamic0].texture.Get();
+  ASSERT_NE(kept, nullptr);
+  o.localLights = false;
+  sample.ApplySettings(o);
+  ASSERT_TRUE(sample.RenderFrame());
+  EXPECT_EQ(maps.width, 1u);
+  EXPECT_EQ(maps.slices, 1u);
+  EXPECT_EQ(sample.Targets()[RT::FinalDynamic0].texture.Get(), kept) << "an unrelated target was re-created";
 }
 
 // Every target mode of the table with the deferred scene: full resolution

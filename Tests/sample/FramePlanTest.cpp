@@ -2,7 +2,9 @@
 // targets the frame needs and the passes it records. The expected lists are
 // what the sample allocated and counted (its report's render_targets and
 // passes_run) for the same command lines before the frame plan existed, so a
-// difference is a change of behaviour.
+// difference is a change of behaviour; the deferred modes' shadow-map array (a
+// 1x1 placeholder: the Arena has no shadowed spot) and the zoom box's copy
+// are rows of the table too.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -106,22 +108,22 @@ const Mode kModes[] = {
      {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]"},
      {"ClearPS", "MotionBlurDynamic", "ResolveTAAFast", "Scene"}},
     {"zoom-bilinear", "--filter bilinear --zoom",
-     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]"},
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "zoom_box_copy"},
      {"ClearPS", "MotionBlurDynamic", "ResolveBilinear", "Scene", "ZoomBox"}},
     {"zoom-taau", "--filter taau --zoom",
-     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "upscale history[0]", "upscale history[1]"},
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "upscale history[0]", "upscale history[1]", "zoom_box_copy"},
      {"ClearPS", "MotionBlurDynamic", "Scene", "TemporalUpsample", "ZoomBox"}},
     {"deferred-taa", "--renderer deferred --filter taa",
-     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]", "g_GBufferDiffuse", "g_GBufferSpecular", "g_GBufferNormal", "g_GBufferAO"},
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]", "g_GBufferDiffuse", "g_GBufferSpecular", "g_GBufferNormal", "g_GBufferAO", "g_SpotShadowMaps"},
      {"ClearPS", "GBuffer", "Lighting", "MotionBlurDynamic", "ResolveTAAFast", "SSAO"}},
     {"deferred-bilinear-nossao", "--renderer deferred --no-ssao --filter bilinear",
-     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_GBufferDiffuse", "g_GBufferSpecular", "g_GBufferNormal"},
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_GBufferDiffuse", "g_GBufferSpecular", "g_GBufferNormal", "g_SpotShadowMaps"},
      {"ClearPS", "GBuffer", "Lighting", "MotionBlurDynamic", "ResolveBilinear"}},
     {"deferred-taau", "--renderer deferred --filter taau",
-     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "upscale history[0]", "upscale history[1]", "g_GBufferDiffuse", "g_GBufferSpecular", "g_GBufferNormal", "g_GBufferAO"},
+     {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "upscale history[0]", "upscale history[1]", "g_GBufferDiffuse", "g_GBufferSpecular", "g_GBufferNormal", "g_GBufferAO", "g_SpotShadowMaps"},
      {"ClearPS", "GBuffer", "Lighting", "MotionBlurDynamic", "SSAO", "TemporalUpsample"}},
     {"deferred-full", "--renderer deferred --no-dynamic-resolution",
-     {"g_ColorFull", "g_VelocityFull", "g_DepthFull", "g_GBufferDiffuse", "g_GBufferSpecular", "g_GBufferNormal", "g_GBufferAO"},
+     {"g_ColorFull", "g_VelocityFull", "g_DepthFull", "g_GBufferDiffuse", "g_GBufferSpecular", "g_GBufferNormal", "g_GBufferAO", "g_SpotShadowMaps"},
      {"ClearPS", "GBuffer", "Lighting", "MotionBlurFull", "SSAO"}},
     {"tessellation", "--tessellation --filter taa",
      {"g_ColorDynamic", "g_DepthDynamic", "g_VelocityDynamic[0]", "g_FinalRTDynamic[0]", "g_FinalRTDynamic[1]"},
@@ -208,6 +210,46 @@ INSTANTIATE_TEST_SUITE_P(Matrix, FramePlanModes, ::testing::ValuesIn(kModes),
                            std::replace(n.begin(), n.end(), '-', '_');
                            return n;
                          });
+
+// The shadow maps exist exactly in the deferred modes, the zoom box's copy in
+// the zoom modes.
+TEST_P(FramePlanModes, ShadowMapsWhenDeferredAndZoomCopyWhenZoomed) {
+  const Mode& m = GetParam();
+  const FramePlan plan = PlanFrame(Parse(m.args), MatrixInputs());
+  const std::string args = m.args;
+  EXPECT_EQ(RenderTargetSet::Needed(RT::SpotShadowMaps, plan.targets), args.find("--renderer deferred") != std::string::npos)
+      << m.name;
+  EXPECT_EQ(RenderTargetSet::Needed(RT::ZoomBoxCopy, plan.targets), args.find("--zoom") != std::string::npos) << m.name;
+}
+
+// A slice per shadowed spot at --shadow-map-size when the shadow maps are
+// drawn; the 1x1 one-slice placeholder when they are not; nothing forward.
+// The zoom box's copy: the back buffer's size and format.
+TEST(FramePlan, ShadowMapAndZoomCopyRowsSizes) {
+  FrameInputs in = MatrixInputs();
+  in.shadowedLights = 3;
+  in.backBufferFormat = d3dl::DXGI_FORMAT_B8G8R8A8_UNORM;
+  uint32_t w = 0, h = 0;
+  const RenderTargetPlan drawn = PlanFrame(Parse("--renderer deferred --shadow-map-size 512 --zoom"), in).targets;
+  EXPECT_EQ(drawn.shadowSlices, 3u);
+  drawn.Size(RenderTargetSet::Row(RT::SpotShadowMaps).size, 7, 7, &w, &h);
+  EXPECT_EQ(w, 512u);
+  EXPECT_EQ(h, 512u);
+  EXPECT_EQ(RenderTargetSet::Format(RT::SpotShadowMaps, drawn), d3dl::DXGI_FORMAT_R32_TYPELESS);
+  drawn.Size(RenderTargetSet::Row(RT::ZoomBoxCopy).size, 7, 7, &w, &h);
+  EXPECT_EQ(w, 320u);
+  EXPECT_EQ(h, 180u);
+  EXPECT_EQ(RenderTargetSet::Format(RT::ZoomBoxCopy, drawn), d3dl::DXGI_FORMAT_B8G8R8A8_UNORM);
+  const RenderTargetPlan unlit = PlanFrame(Parse("--renderer deferred --shadow-map-size 512 --no-local-lights"), in).targets;
+  EXPECT_EQ(unlit.shadowSlices, 1u);
+  EXPECT_EQ(unlit.shadowMapSize, 1u);
+  EXPECT_FALSE(RenderTargetSet::Needed(RT::ZoomBoxCopy, unlit));
+  const RenderTargetPlan forward = PlanFrame(Parse("--shadow-map-size 512"), in).targets;
+  EXPECT_FALSE(RenderTargetSet::Needed(RT::SpotShadowMaps, forward));
+  // The zoom box and the shadow maps alone change nothing else (Sample::UpdateTargets).
+  EXPECT_TRUE(drawn.SameButRewrittenEachFrame(unlit));
+  EXPECT_FALSE(drawn.SameButRewrittenEachFrame(forward));
+}
 
 TEST(FramePlan, PassOrderOfTheDeferredTemporalUpsampleWithZoomAndGui) {
   Options o = Parse("--renderer deferred --filter taau --secondary-screen-percentage 60 --zoom");

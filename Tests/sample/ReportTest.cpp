@@ -51,21 +51,26 @@ Json RunWithReport(Options o, const std::string& name) {
 
 namespace {
 // Sizes and render-target bytes: the total is the sum of the listed targets,
-// each width x height x bytes per pixel of its format. Returns the sum.
+// each width x height (x slices for an array) x bytes per pixel of its
+// format. The zoom box's copy is a row: the back buffer's size and format.
+// Returns the sum.
 double ExpectTargetBytes(Json& j, const Sample& s) {
   double sum = 0;
   EXPECT_TRUE(j["render_targets"].is_object());
   for (auto& [name, rt] : j["render_targets"].items()) {
     EXPECT_TRUE(rt["bytes"].is_number()) << name;
     sum += rt["bytes"].get<double>();
-    if (rt.contains("size")) {
-      Json& size = rt["size"];
-      const std::string fmt = rt["format"];
-      const int bpp = (fmt == "R8G8B8A8_UNORM" || fmt == "D32_FLOAT" || fmt == "R16G16_FLOAT") ? 4 : 0;
-      EXPECT_EQ(rt["bytes"].get<double>(), size[0].get<double>() * size[1].get<double>() * bpp) << name << " " << fmt;
-    }
+    Json& size = rt["size"];
+    const std::string fmt = rt["format"];
+    const int bpp = (fmt == "R8G8B8A8_UNORM" || fmt == "R8G8B8A8_UNORM_SRGB" || fmt == "D32_FLOAT" ||
+                     fmt == "R32_TYPELESS" || fmt == "R16G16_FLOAT") ? 4 : 0;
+    const double slices = rt.contains("slices") ? rt["slices"].get<double>() : 1.0;
+    EXPECT_EQ(rt["bytes"].get<double>(), size[0].get<double>() * size[1].get<double>() * slices * bpp)
+        << name << " " << fmt;
   }
   EXPECT_TRUE(j["render_targets"].contains("zoom_box_copy")) << "zoom box copy missing from the list";
+  EXPECT_EQ(j["render_targets"]["zoom_box_copy"]["size"], j["back_buffer"]);
+  EXPECT_EQ(j["render_targets"]["zoom_box_copy"]["format"], "R8G8B8A8_UNORM_SRGB");
   EXPECT_EQ(j["render_target_bytes"].get<double>(), sum);
   EXPECT_EQ(j["render_target_bytes"].get<double>(), double(s.RenderTargetBytes()));
   // The original allocates every target whatever the mode: colour, velocity,
