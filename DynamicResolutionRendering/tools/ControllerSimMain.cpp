@@ -46,6 +46,8 @@ void Usage(std::ostream& out) {
          "                      --latency (default: the sample's, 1)\n"
          "  --robust-before     also run the robust law as it was before the tuning-set scan, named\n"
          "                      robust-before (RobustController::PreviousParams)\n"
+         "  --ue-tuned          also run the UE-style law with the tuning-set scan's pick, named\n"
+         "                      ue-style-tuned (UEStyleController::TunedParams)\n"
          "  --headroom-sweep    instead of the tables: each law's totals at headrooms 0.05, 0.1, 0.2, 0.3\n"
          "                      (over budget against resolution given up), with --traces, --synthetic-set\n"
          "                      or the scenarios\n"
@@ -144,6 +146,7 @@ struct SimArgs {
   bool scanRobust = false;
   bool scanUE = false;
   bool robustBefore = false;   // also the robust law before the tuning-set scan ("robust-before")
+  bool ueTuned = false;        // also the UE-style law with the scan's pick ("ue-style-tuned")
   bool headroomSweep = false;  // totals per law at each headroom of the scan instead of the tables
 };
 
@@ -167,6 +170,7 @@ bool ParseFlag(std::string_view arg, SimArgs* args) {
   };
   static constexpr Flag kFlags[] = {{"--scan-robust", &SimArgs::scanRobust},     {"--scan-ue", &SimArgs::scanUE},
                                     {"--synthetic-set", &SimArgs::syntheticSet}, {"--robust-before", &SimArgs::robustBefore},
+                                    {"--ue-tuned", &SimArgs::ueTuned},
                                     {"--headroom-sweep", &SimArgs::headroomSweep}, {"--sweep-k", &SimArgs::sweep}};
   for (const Flag& f : kFlags)
     if (arg == f.name) {
@@ -285,26 +289,43 @@ bool ParseArgs(int argc, char** argv, SimArgs* args) {
   return true;
 }
 
+// Which parameters a law runs with: its defaults (the sample's), the robust
+// law's before the tuning-set scan, or the UE-style law's scan pick.
+enum class LawParams { Default, RobustBefore, UETuned };
+
 // A fresh controller of the law told the latency; the article law with
-// --gain when given; before: the robust law with its parameters before the
-// tuning-set scan. The name its results carry.
-std::unique_ptr<drr::ResolutionController> MakeLaw(const SimArgs& args, ControlLaw law, bool before, int latency) {
+// --gain when given.
+std::unique_ptr<drr::ResolutionController> MakeLaw(const SimArgs& args, ControlLaw law, LawParams params,
+                                                   int latency) {
   if (law == ControlLaw::Article && args.gainSet) return std::make_unique<drr::ArticleController>(args.gain);
-  if (!before) return drr::MakeController(law, latency);
-  drr::RobustController::Params p = drr::RobustController::PreviousParams();
-  p.latencyFrames = latency;
-  return std::make_unique<drr::RobustController>(p);
+  if (params == LawParams::RobustBefore) {
+    drr::RobustController::Params p = drr::RobustController::PreviousParams();
+    p.latencyFrames = latency;
+    return std::make_unique<drr::RobustController>(p);
+  }
+  if (params == LawParams::UETuned) {
+    drr::UEStyleController::Params p = drr::UEStyleController::TunedParams();
+    p.latencyFrames = latency;
+    return std::make_unique<drr::UEStyleController>(p);
+  }
+  return drr::MakeController(law, latency);
 }
+// One law to run and the name its results carry.
 struct LawRun {
   ControlLaw law;
-  bool before;
-  std::string Name() const { return before ? "robust-before" : drr::ControlLawOption(law); }
+  LawParams params;
+  std::string Name() const {
+    if (params == LawParams::RobustBefore) return "robust-before";
+    if (params == LawParams::UETuned) return "ue-style-tuned";
+    return drr::ControlLawOption(law);
+  }
 };
 std::vector<LawRun> LawRuns(const SimArgs& args) {
   std::vector<LawRun> runs;
   for (ControlLaw law : args.laws) {
-    if (law == ControlLaw::Robust && args.robustBefore) runs.push_back({law, true});
-    runs.push_back({law, false});
+    if (law == ControlLaw::Robust && args.robustBefore) runs.push_back({law, LawParams::RobustBefore});
+    runs.push_back({law, LawParams::Default});
+    if (law == ControlLaw::UEStyle && args.ueTuned) runs.push_back({law, LawParams::UETuned});
   }
   return runs;
 }
@@ -315,7 +336,7 @@ std::vector<drr::sim::SimResult> RunLawsOnScenarios(const SimArgs& args) {
   std::vector<drr::sim::SimResult> results;
   for (const LawRun& run : LawRuns(args)) {
     for (Scenario s : args.scenarios) {
-      auto controller = MakeLaw(args, run.law, run.before, config.plant.latencyFrames);
+      auto controller = MakeLaw(args, run.law, run.params, config.plant.latencyFrames);
       results.push_back(drr::sim::RunScenario(*controller, drr::sim::ConfigFor(s, config), !args.perFramePath.empty()));
       results.back().controller = run.Name();
     }
@@ -337,7 +358,7 @@ std::vector<drr::sim::SimResult> RunLawsOnTraces(const SimArgs& args, bool print
   std::vector<drr::sim::SimResult> results;
   for (const drr::sim::TraceCase& c : cases) {
     for (const LawRun& run : LawRuns(args)) {
-      auto controller = MakeLaw(args, run.law, run.before, spec.latencyFrames);
+      auto controller = MakeLaw(args, run.law, run.params, spec.latencyFrames);
       results.push_back(drr::sim::ReplayTraceWith(*controller, c.trace, c.cost, spec, !args.perFramePath.empty()));
       results.back().controller = run.Name();
     }
