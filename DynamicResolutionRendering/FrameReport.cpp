@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "GuiLogic.h"
 #include "OptionsJson.h"
@@ -16,18 +17,41 @@
 namespace drr {
 
 namespace {
-// GPU averages over the frames that received a new result (the records
-// repeat the last result in between); the CPU average over rendered frames.
-double Average(const std::vector<FrameRecord>& frames, double FrameRecord::*m, bool gpu) {
-  double s = 0;
-  int n = 0;
-  for (const FrameRecord& r : frames)
-    if (r.rendered && (!gpu || r.gpuFrameNew) && std::isfinite(r.*m) && r.*m > 0) {
-      s += r.*m;
-      ++n;
+// averages_ms: GPU averages over the frames that received a new result (the
+// records repeat the last result in between); the CPU average over rendered
+// frames. Accumulated one record at a time, so the records can stream.
+struct AverageRow {
+  const char* key;
+  double FrameRecord::*member;
+  bool gpu;
+};
+constexpr AverageRow kAverages[] = {
+    {"cpu_frame", &FrameRecord::cpuFrameMs, false}, {"gpu_frame", &FrameRecord::gpuFrame, true},
+    {"clear", &FrameRecord::gpuClear, true},        {"scene", &FrameRecord::gpuScene, true},
+    {"postp", &FrameRecord::gpuPostP, true},        {"scale", &FrameRecord::gpuScale, true}};
+
+class FrameAverages {
+ public:
+  void Add(const FrameRecord& r) {
+    for (size_t i = 0; i < std::size(kAverages); ++i) {
+      const AverageRow& row = kAverages[i];
+      const double v = r.*row.member;
+      if (r.rendered && (!row.gpu || r.gpuFrameNew) && std::isfinite(v) && v > 0) {
+        m_Sum[i] += v;
+        ++m_Count[i];
+      }
     }
-  return n ? s / n : 0.0;
-}
+  }
+  JsonValue Json() const {
+    JsonValue j = JsonValue::object();
+    for (size_t i = 0; i < std::size(kAverages); ++i) j[kAverages[i].key] = m_Count[i] ? m_Sum[i] / m_Count[i] : 0.0;
+    return j;
+  }
+
+ private:
+  double m_Sum[std::size(kAverages)] = {};
+  int64_t m_Count[std::size(kAverages)] = {};
+};
 
 JsonValue FloatPair(float a, float b) { return JsonValue::array({FloatJson(a), FloatJson(b)}); }
 JsonValue SizePair(uint32_t a, uint32_t b) { return JsonValue::array({a, b}); }
@@ -59,14 +83,6 @@ JsonValue Frame(const FrameRecord& r) {
             {"scale", r.gpuScale}}}};
 }
 
-JsonValue Averages(const std::vector<FrameRecord>& f) {
-  return {{"cpu_frame", Average(f, &FrameRecord::cpuFrameMs, false)},
-          {"gpu_frame", Average(f, &FrameRecord::gpuFrame, true)},
-          {"clear", Average(f, &FrameRecord::gpuClear, true)},
-          {"scene", Average(f, &FrameRecord::gpuScene, true)},
-          {"postp", Average(f, &FrameRecord::gpuPostP, true)},
-          {"scale", Average(f, &FrameRecord::gpuScale, true)}};
-}
 
 JsonValue SceneStatsJson(const Scene& scene) {
   const SceneStats st = scene.Stats();
@@ -90,7 +106,8 @@ JsonValue GuiLayoutJson(const GuiLayout& g) {
   return {{"panel", rect(g.panel)}, {"last_header", rect(g.lastHeader)}, {"last_header_title", g.lastHeaderTitle}};
 }
 
-JsonValue Report(const ReportInfo& info, const std::vector<FrameRecord>& frames) {
+// Everything but the frames (written after it by WriteReport, one record at a time).
+JsonValue Report(const ReportInfo& info, const FrameAverages& averages) {
   const Options& o = *info.options;
   JsonValue j = {{"options", OptionsJson(o)},
                  {"control",
@@ -111,17 +128,16 @@ JsonValue Report(const ReportInfo& info, const std::vector<FrameRecord>& frames)
   j["validation_messages"] = info.validationMessages;
   j["frames_rendered"] = info.framesRendered;
   j["frames_minimised"] = info.framesMinimised;
-  j["averages_ms"] = Averages(frames);
+  j["averages_ms"] = averages.Json();
   j["final_scale"] = FloatPair(info.finalScale[0], info.finalScale[1]);
   if (info.scene) j["scene_stats"] = SceneStatsJson(*info.scene);
   if (info.gui && !info.gui->lastHeaderTitle.empty()) j["gui"] = GuiLayoutJson(*info.gui);
   j["warnings"] = info.warnings ? JsonValue(*info.warnings) : JsonValue::array();
-  j["frames"] = JsonValue::array();
-  for (const FrameRecord& r : frames) j["frames"].push_back(Frame(r));
   return j;
 }
 
-// One top-level member per line; an array's elements each on a line of their own.
+// One top-level member per line; an array's elements each on a line of their
+// own. The closing brace is left to the caller (WriteReport adds the frames).
 void WriteLines(std::ostream& out, const JsonValue& report) {
   const char* separator = "{\n  ";
   for (const auto& [key, value] : report.items()) {
@@ -138,7 +154,6 @@ void WriteLines(std::ostream& out, const JsonValue& report) {
     }
     out << "\n  ]";
   }
-  out << "\n}\n";
 }
 }  // namespace
 
@@ -151,7 +166,18 @@ bool FrameLog::WriteReport(const std::string& path, const ReportInfo& info, std:
     *error = "cannot write " + path + ": " + std::strerror(errno);
     return false;
   }
-  WriteLines(f, Report(info, AllFrames()));
+  FrameAverages averages;
+  ForEachFrame([&](const FrameRecord& r) { averages.Add(r); });
+  WriteLines(f, Report(info, averages));
+  // The frames last, a record per line as WriteLines writes arrays, streamed
+  // from the records so a long run's report needs no memory per frame.
+  f << ",\n  \"frames\": ";
+  const char* itemSeparator = "[\n    ";
+  ForEachFrame([&](const FrameRecord& r) {
+    f << itemSeparator << DumpJson(Frame(r));
+    itemSeparator = ",\n    ";
+  });
+  f << (*itemSeparator == '[' ? "[]" : "\n  ]") << "\n}\n";
   f.flush();
   if (m_StreamFailed) {
     *error = "cannot write " + path + ": the frame records' temporary file failed (disk full?)";
