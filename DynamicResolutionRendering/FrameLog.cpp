@@ -79,13 +79,6 @@ void FrameLog::Add(const FrameRecord& r) {
   else if (m_Mode == FrameRecords::Stream && std::fwrite(&r, sizeof r, 1, m_Stream.get()) != 1) m_StreamFailed = true;
 }
 
-std::vector<FrameRecord> FrameLog::AllFrames() const {
-  if (m_Mode != FrameRecords::Stream) return m_Frames;
-  std::vector<FrameRecord> all;
-  ForEachFrame([&](const FrameRecord& r) { all.push_back(r); });
-  return all;
-}
-
 void FrameLog::ForEachFrame(const std::function<void(const FrameRecord&)>& visit) const {
   if (m_Mode != FrameRecords::Stream) {
     for (const FrameRecord& r : m_Frames) visit(r);

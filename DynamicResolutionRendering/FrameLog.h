@@ -79,7 +79,6 @@ class FrameLog {
   const std::vector<FrameRecord>& Frames() const { return m_Frames; }
   // Every record kept, in frame order, from memory or the stream.
   void ForEachFrame(const std::function<void(const FrameRecord&)>& visit) const;
-  std::vector<FrameRecord> AllFrames() const;  // the same, copied (for the report, after the run)
 
   // Captures: requested for the next frame, queued as copies during it,
   // read once the frame was presented.

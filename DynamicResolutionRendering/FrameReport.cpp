@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 
 #include "GuiLogic.h"
@@ -136,6 +137,17 @@ JsonValue Report(const ReportInfo& info, const FrameAverages& averages) {
   return j;
 }
 
+// An array of objects, one element per line: "[]" when empty. forEach calls
+// its argument with each element's dumped text.
+void WriteObjectArray(std::ostream& out, const std::function<void(const std::function<void(const std::string&)>&)>& forEach) {
+  const char* separator = "[\n    ";
+  forEach([&](const std::string& item) {
+    out << separator << item;
+    separator = ",\n    ";
+  });
+  out << (*separator == '[' ? "[]" : "\n  ]");
+}
+
 // One top-level member per line; an array's elements each on a line of their
 // own. The closing brace is left to the caller (WriteReport adds the frames).
 void WriteLines(std::ostream& out, const JsonValue& report) {
@@ -147,12 +159,9 @@ void WriteLines(std::ostream& out, const JsonValue& report) {
       out << DumpJson(value);
       continue;
     }
-    const char* itemSeparator = "[\n    ";
-    for (const JsonValue& item : value) {
-      out << itemSeparator << DumpJson(item);
-      itemSeparator = ",\n    ";
-    }
-    out << "\n  ]";
+    WriteObjectArray(out, [&](const auto& emit) {
+      for (const JsonValue& item : value) emit(DumpJson(item));
+    });
   }
 }
 }  // namespace
@@ -172,12 +181,8 @@ bool FrameLog::WriteReport(const std::string& path, const ReportInfo& info, std:
   // The frames last, a record per line as WriteLines writes arrays, streamed
   // from the records so a long run's report needs no memory per frame.
   f << ",\n  \"frames\": ";
-  const char* itemSeparator = "[\n    ";
-  ForEachFrame([&](const FrameRecord& r) {
-    f << itemSeparator << DumpJson(Frame(r));
-    itemSeparator = ",\n    ";
-  });
-  f << (*itemSeparator == '[' ? "[]" : "\n  ]") << "\n}\n";
+  WriteObjectArray(f, [&](const auto& emit) { ForEachFrame([&](const FrameRecord& r) { emit(DumpJson(Frame(r))); }); });
+  f << "\n}\n";
   f.flush();
   if (m_StreamFailed) {
     *error = "cannot write " + path + ": the frame records' temporary file failed (disk full?)";
