@@ -3,6 +3,8 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
+#include <system_error>
 
 namespace drr {
 
@@ -19,6 +21,14 @@ bool WriteFileBytes(const std::string& path, const std::vector<uint8_t>& bytes, 
   ok = std::fclose(f) == 0 && ok;
   if (!ok && error) *error = path + ": write failed (" + std::strerror(errno ? errno : writeErr) + ")";
   return ok;
+}
+
+std::string FileBesideExecutable(const std::string& name) {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  const std::filesystem::path sibling = self.parent_path() / name;
+  return std::filesystem::is_regular_file(sibling, ec) ? sibling.string() : std::string();
 }
 
 }  // namespace drr

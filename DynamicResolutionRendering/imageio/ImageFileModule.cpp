@@ -5,10 +5,9 @@
 // the executable first, then at its build path.
 #include <dlfcn.h>
 
-#include <filesystem>
 #include <mutex>
-#include <system_error>
 
+#include "imageio/FileBytes.h"
 #include "imageio/ImageFile.h"
 #include "imageio/ImageFileModule.h"
 
@@ -21,17 +20,9 @@ struct LoadedModule {
   std::string error;  // why it could not be loaded
 };
 
-std::string ModuleBesideExecutable() {
-  std::error_code ec;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) return {};
-  const std::filesystem::path sibling = self.parent_path() / DRR_IMAGEIO_MODULE_NAME;
-  return std::filesystem::is_regular_file(sibling, ec) ? sibling.string() : std::string();
-}
-
 LoadedModule Load() {
   LoadedModule loaded;
-  std::string path = ModuleBesideExecutable();
+  std::string path = FileBesideExecutable(DRR_IMAGEIO_MODULE_NAME);
   if (path.empty()) path = DRR_IMAGEIO_MODULE_BUILD_PATH;
   // Never closed: OpenImageIO keeps threads and caches for the process's life.
   void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);

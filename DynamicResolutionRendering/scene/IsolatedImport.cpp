@@ -18,6 +18,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "imageio/FileBytes.h"
 #include "scene/ImportWire.h"
 
 extern char** environ;
@@ -282,12 +283,7 @@ ImportLimits ImportLimitsForFile(const ImportLimits& caps, const std::string& pa
 
 std::string ImportWorkerPath() {
   if (const char* v = std::getenv("DRR_IMPORT_WORKER"); v && *v) return v;
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    const fs::path sibling = self.parent_path() / "drr_import_worker";
-    if (fs::is_regular_file(sibling, ec)) return sibling.string();
-  }
+  if (std::string sibling = FileBesideExecutable("drr_import_worker"); !sibling.empty()) return sibling;
   return DRR_IMPORT_WORKER_BUILD_PATH;
 }
 
