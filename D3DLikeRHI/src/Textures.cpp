@@ -56,6 +56,10 @@ void TextureImpl<Iface, Dim>::FillDesc(D* d) const {
 
 template class TextureImpl<Texture2D, RESOURCE_DIMENSION_TEXTURE2D>;
 template class TextureImpl<Texture1D, RESOURCE_DIMENSION_TEXTURE1D>;
+// The member template is not part of the class's explicit instantiation:
+// GetDesc, defined in the header, may be emitted in any unit.
+template void Texture2DImpl::FillDesc<TEXTURE2D_DESC>(TEXTURE2D_DESC*) const;
+template void Texture1DImpl::FillDesc<TEXTURE1D_DESC>(TEXTURE1D_DESC*) const;
 
 namespace {
 VkImageUsageFlags ImageUsage(const TEXTURE2D_DESC& d) {

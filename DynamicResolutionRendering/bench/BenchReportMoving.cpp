@@ -13,12 +13,6 @@
 #include "bench/BenchReportSections.h"
 
 namespace drr {
-namespace {
-
-std::string N(double v, int decimals) { return FormatCell(v, decimals); }
-bool Near(double a, double b) { return SameScale(a, b); }
-
-}  // namespace
 
 std::string FormatCell(double v, int decimals) {
   if (std::isnan(v)) return "-";
@@ -31,7 +25,7 @@ QualityPoint StillPoint(const BenchResults& res, const std::string& filter, doub
   std::vector<double> psnr, flip, frame, instability;
   QualityPoint q{filter, scale};
   for (const BenchRow& r : res.rows) {
-    if (r.moving || r.filter != filter || !Near(r.scale, scale) || !std::isfinite(r.error.psnr)) continue;
+    if (r.moving || r.filter != filter || !SameScale(r.scale, scale) || !std::isfinite(r.error.psnr)) continue;
     psnr.push_back(r.error.psnr);
     flip.push_back(r.flip);
     instability.push_back(r.instability);
@@ -50,7 +44,7 @@ QualityPoint StillPoint(const BenchResults& res, const std::string& filter, doub
 QualityPoint MovingPoint(const BenchResults& res, double speed, const std::string& filter, double scale) {
   QualityPoint q{filter, scale};
   for (const BenchRow& r : res.rows) {
-    if (!r.moving || !Near(r.speed, speed) || r.filter != filter || !Near(r.scale, scale)) continue;
+    if (!r.moving || !SameScale(r.speed, speed) || r.filter != filter || !SameScale(r.scale, scale)) continue;
     q.psnr = r.error.psnr, q.psnrCi = r.psnrCi, q.flip = r.flip, q.flipCi = r.flipCi, q.instability = r.instability;
     q.frameMs = r.gpuFrame.median, q.samples = r.qualityFrames, q.gpuSamples = r.gpuSamples;
   }
@@ -60,14 +54,14 @@ QualityPoint MovingPoint(const BenchResults& res, double speed, const std::strin
 std::vector<double> MovingSpeeds(const BenchResults& res) {
   std::vector<double> s;
   for (const BenchRow& r : res.rows)
-    if (r.moving && std::none_of(s.begin(), s.end(), [&](double x) { return Near(x, r.speed); })) s.push_back(r.speed);
+    if (r.moving && std::none_of(s.begin(), s.end(), [&](double x) { return SameScale(x, r.speed); })) s.push_back(r.speed);
   return s;
 }
 
 double ReportSpeed(const BenchResults& res) {
   const std::vector<double> s = MovingSpeeds(res);
   for (double x : s)
-    if (Near(x, 1.0)) return x;
+    if (SameScale(x, 1.0)) return x;
   return s.empty() ? std::nan("") : s.front();
 }
 
@@ -94,13 +88,13 @@ void WriteStillQuality(const BenchResults& res, std::ostringstream& md) {
      << " view(s), with the 95 % interval over views (Student t; one view: none). Rows at or below 1.0 "
         "without 2x targets; scales above 1.0 are super-sampling rows (2x targets allowed). "
         "Cell: PSNR ± interval / FLIP (lower is better) / jitter instability (RMS change between consecutive frames, x1000).\n\n| filter |";
-  for (float s : plan.scales) md << ' ' << N(s, 2) << (s > 1.0f ? " (2x)" : "") << " |";
+  for (float s : plan.scales) md << ' ' << FormatCell(s, 2) << (s > 1.0f ? " (2x)" : "") << " |";
   md << "\n| --- |";
   for (size_t i = 0; i < plan.scales.size(); ++i) md << " ---: |";
   md << '\n';
   auto cell = [&](const QualityPoint& q) {
-    md << ' ' << N(q.psnr, 2) << (std::isfinite(q.psnrCi) ? " ± " + N(q.psnrCi, 2) : "") << " / " << N(q.flip, 4) << " / "
-       << N(1000 * q.instability, 1) << " |";
+    md << ' ' << FormatCell(q.psnr, 2) << (std::isfinite(q.psnrCi) ? " ± " + FormatCell(q.psnrCi, 2) : "") << " / " << FormatCell(q.flip, 4) << " / "
+       << FormatCell(1000 * q.instability, 1) << " |";
   };
   for (Filter f : plan.filters) {
     md << "| " << FilterOption(f) << " |";
@@ -117,20 +111,20 @@ void WriteStillQuality(const BenchResults& res, std::ostringstream& md) {
 void WriteMovingQuality(const BenchResults& res, std::ostringstream& md) {
   const BenchPlan& plan = *res.plan;
   for (double speed : MovingSpeeds(res)) {
-    md << "### Moving camera x" << N(speed, 2) << ": PSNR (dB), " << FlipName(res) << ", instability\n\n"
-       << "The cinematic camera moving at " << N(speed, 2) << " x its animation speed (" << N(speed / 30.0, 4)
+    md << "### Moving camera x" << FormatCell(speed, 2) << ": PSNR (dB), " << FlipName(res) << ", instability\n\n"
+       << "The cinematic camera moving at " << FormatCell(speed, 2) << " x its animation speed (" << FormatCell(speed / 30.0, 4)
        << " s of animation a frame), " << plan.movingWarmup << " warm-up frames then " << plan.movingFrames
        << " frames, each against the reference of its own animation time; motion blur off, no 2x targets. "
           "Cell: mean PSNR over frames ± 95 % interval (over 6 blocks of frames) / mean FLIP / instability "
           "(RMS of the frame-to-frame change after reprojecting the previous frame with the reference's "
           "velocity, less the reference's own change, x1000; 0 for an image that moves with the scene, "
           "lower is better).\n\n| filter |";
-    for (float s : plan.movingScales) md << ' ' << N(s, 2) << " |";
+    for (float s : plan.movingScales) md << ' ' << FormatCell(s, 2) << " |";
     md << "\n| --- |";
     for (size_t i = 0; i < plan.movingScales.size(); ++i) md << " ---: |";
     md << '\n';
     auto cell = [&](const QualityPoint& q) {
-      md << ' ' << N(q.psnr, 2) << " ± " << N(q.psnrCi, 2) << " / " << N(q.flip, 4) << " / " << N(1000 * q.instability, 1) << " |";
+      md << ' ' << FormatCell(q.psnr, 2) << " ± " << FormatCell(q.psnrCi, 2) << " / " << FormatCell(q.flip, 4) << " / " << FormatCell(1000 * q.instability, 1) << " |";
     };
     for (Filter f : plan.movingFilters) {
       md << "| " << FilterOption(f) << " |";
@@ -152,17 +146,17 @@ void WriteAblations(const BenchResults& res, std::ostringstream& md) {
   const double speed = ReportSpeed(res);
   for (const BenchRow& r : res.rows) {
     const bool mipBias = r.filter == kTaaNoMipBias || r.filter == kTaauNoMipBias ||
-                         (r.filter == "taau" && (Near(r.scale, 0.5) || Near(r.scale, 0.71)));
+                         (r.filter == "taau" && (SameScale(r.scale, 0.5) || SameScale(r.scale, 0.71)));
     const bool still = !r.moving && r.view == firstView &&
-                       (r.filter == kTaaSymmetric || mipBias || (r.filter == "taa" && (Near(r.scale, 0.5) || Near(r.scale, 0.71) || Near(r.scale, 1.0))));
-    const bool moving = r.moving && Near(r.speed, speed) &&
+                       (r.filter == kTaaSymmetric || mipBias || (r.filter == "taa" && (SameScale(r.scale, 0.5) || SameScale(r.scale, 0.71) || SameScale(r.scale, 1.0))));
+    const bool moving = r.moving && SameScale(r.speed, speed) &&
                         (r.filter == kTaaSymmetric || r.filter == kTaaFast || r.filter == kNativeMotionBlur || r.filter == "native" || mipBias ||
-                         (r.filter == "taa" && (Near(r.scale, 0.71) || Near(r.scale, 1.0))));
+                         (r.filter == "taa" && (SameScale(r.scale, 0.71) || SameScale(r.scale, 1.0))));
     if (!still && !moving) continue;
     const std::string what = r.filter == "taa" ? "taa (asymmetric jitter, velocity-reading)" : r.filter;
-    md << "| " << what << " | " << (r.moving ? "moving x" + N(r.speed, 2) : "still, " + r.view) << " | " << N(r.scale, 2)
-       << " | " << N(r.error.psnr, 2) << (std::isfinite(r.psnrCi) ? " ± " + N(r.psnrCi, 2) : "") << " | " << N(r.flip, 4)
-       << " | " << N(1000 * r.instability, 1) << " | " << N(r.gpuFrame.median, 3) << " | " << N(r.gpuScale.median, 3) << " | "
+    md << "| " << what << " | " << (r.moving ? "moving x" + FormatCell(r.speed, 2) : "still, " + r.view) << " | " << FormatCell(r.scale, 2)
+       << " | " << FormatCell(r.error.psnr, 2) << (std::isfinite(r.psnrCi) ? " ± " + FormatCell(r.psnrCi, 2) : "") << " | " << FormatCell(r.flip, 4)
+       << " | " << FormatCell(1000 * r.instability, 1) << " | " << FormatCell(r.gpuFrame.median, 3) << " | " << FormatCell(r.gpuScale.median, 3) << " | "
        << r.qualityFrames << " / " << r.gpuSamples << " |\n";
   }
   md << "\nTexture mip bias: `taa` samples the scene's textures with the original's MipLODBias -0.5, `" << kTaaNoMipBias
@@ -182,9 +176,9 @@ void WriteIso(const std::vector<QualityPoint>& pts, const std::string& kind, std
     const QualityPoint* best = nullptr;
     for (const QualityPoint& q : pts)
       if (q.frameMs <= budget && std::isfinite(q.flip) && (!best || q.flip < best->flip)) best = &q;
-    md << "| " << N(k, 1) << " | " << N(budget, 2) << " | "
-       << (best ? best->filter + " " + N(best->scale, 2) : std::string("none")) << " | " << N(best ? best->frameMs : NAN, 2)
-       << " | " << N(best ? best->psnr : NAN, 2) << " | " << N(best ? best->flip : NAN, 4) << " |\n";
+    md << "| " << FormatCell(k, 1) << " | " << FormatCell(budget, 2) << " | "
+       << (best ? best->filter + " " + FormatCell(best->scale, 2) : std::string("none")) << " | " << FormatCell(best ? best->frameMs : NAN, 2)
+       << " | " << FormatCell(best ? best->psnr : NAN, 2) << " | " << FormatCell(best ? best->flip : NAN, 4) << " |\n";
   }
   md << "\n| FLIP target (x native FLIP) | FLIP | cheapest point | frame ms (x native) | PSNR dB | FLIP |\n"
         "| ---: | ---: | --- | ---: | ---: | ---: |\n";
@@ -193,10 +187,10 @@ void WriteIso(const std::vector<QualityPoint>& pts, const std::string& kind, std
     const QualityPoint* best = nullptr;
     for (const QualityPoint& q : pts)
       if (q.flip <= target && std::isfinite(q.frameMs) && (!best || q.frameMs < best->frameMs)) best = &q;
-    md << "| " << N(k, 2) << " | " << N(target, 4) << " | "
-       << (best ? best->filter + " " + N(best->scale, 2) : std::string("none")) << " | "
-       << N(best ? best->frameMs : NAN, 2) << " (" << N(best ? best->frameMs / native.frameMs : NAN, 2) << ") | "
-       << N(best ? best->psnr : NAN, 2) << " | " << N(best ? best->flip : NAN, 4) << " |\n";
+    md << "| " << FormatCell(k, 2) << " | " << FormatCell(target, 4) << " | "
+       << (best ? best->filter + " " + FormatCell(best->scale, 2) : std::string("none")) << " | "
+       << FormatCell(best ? best->frameMs : NAN, 2) << " (" << FormatCell(best ? best->frameMs / native.frameMs : NAN, 2) << ") | "
+       << FormatCell(best ? best->psnr : NAN, 2) << " | " << FormatCell(best ? best->flip : NAN, 4) << " |\n";
   }
   md << '\n';
 }
@@ -207,7 +201,7 @@ void WriteIsoTables(const BenchResults& res, std::ostringstream& md) {
         "as ratios within this run. Native = dynamic resolution off.\n\n";
   WriteIso(SweepPoints(res, false, 0), "Still camera (mean over views)", md);
   const double speed = ReportSpeed(res);
-  if (std::isfinite(speed)) WriteIso(SweepPoints(res, true, speed), "Moving camera x" + N(speed, 2), md);
+  if (std::isfinite(speed)) WriteIso(SweepPoints(res, true, speed), "Moving camera x" + FormatCell(speed, 2), md);
 }
 
 namespace {
@@ -232,12 +226,12 @@ bool WriteFront(const std::vector<QualityPoint>& pts, bool flip, const std::stri
     }
     it->x.push_back(q.frameMs);
     it->y.push_back(flip ? q.flip : q.psnr);
-    it->labels.push_back(N(q.scale, 2));
+    it->labels.push_back(FormatCell(q.scale, 2));
   }
   for (const QualityPoint& q : pts) {
     xs.push_back(q.frameMs);
     ys.push_back(flip ? q.flip : -q.psnr);
-    names.push_back(q.filter + " " + (q.filter == "native" ? std::string() : N(q.scale, 2)));
+    names.push_back(q.filter + " " + (q.filter == "native" ? std::string() : FormatCell(q.scale, 2)));
   }
   PlotSeries front{"Pareto front", {}, {}, 0x111111, true, false, true};
   front.labelDy = 2;  // below the point: its scale label is above
@@ -265,9 +259,9 @@ bool WriteFrontPlots(const BenchResults& res, const std::string& dir, std::strin
   const double speed = ReportSpeed(res);
   if (!std::isfinite(speed)) return true;
   const std::vector<QualityPoint> moving = SweepPoints(res, true, speed);
-  return WriteFront(moving, true, "Moving camera x" + N(speed, 2) + ": FLIP against frame time (mean over frames)",
+  return WriteFront(moving, true, "Moving camera x" + FormatCell(speed, 2) + ": FLIP against frame time (mean over frames)",
                     dir + "/front_moving_flip.png", error) &&
-         WriteFront(moving, false, "Moving camera x" + N(speed, 2) + ": PSNR against frame time (mean over frames)",
+         WriteFront(moving, false, "Moving camera x" + FormatCell(speed, 2) + ": PSNR against frame time (mean over frames)",
                     dir + "/front_moving_psnr.png", error);
 }
 

@@ -14,9 +14,6 @@
 namespace drr {
 namespace {
 
-std::string N(double v, int decimals) { return FormatCell(v, decimals); }
-bool Near(double a, double b) { return SameScale(a, b); }
-
 // The goal for TAAU: at 0.71, moving, within this of native's PSNR
 // at under this fraction of native's frame time.
 constexpr double kGoalScale = 0.71, kGoalDb = 0.5, kGoalTime = 0.6;
@@ -31,7 +28,7 @@ PassCost CostOf(const BenchResults& res, double speed, const std::string& filter
   double sum = 0;
   int n = 0;
   for (const BenchRow& r : res.rows) {
-    if (r.filter != filter || !Near(r.scale, scale) || r.moving != (speed > 0) || (speed > 0 && !Near(r.speed, speed)) ||
+    if (r.filter != filter || !SameScale(r.scale, scale) || r.moving != (speed > 0) || (speed > 0 && !SameScale(r.speed, speed)) ||
         !std::isfinite(r.gpuScale.median))
       continue;
     sum += r.gpuScale.median, ++n;
@@ -60,26 +57,26 @@ void WriteTaauRows(const BenchResults& res, double speed, const std::vector<floa
     const QualityPoint taau = point("taau", s), taa = point("taa", s), pt = point("point", s);
     const PassCost c = CostOf(res, speed, "taau", s), cp = CostOf(res, speed, "point", s);
     const double bound = ScalePassBoundMs(res, c.viewportW, c.viewportH);
-    md << "| " << (moving ? "moving x" + N(speed, 2) : std::string("still")) << " | " << N(s, 2) << " | " << N(taau.psnr, 2)
-       << " / " << N(taau.flip, 4) << " | " << N(taau.psnr - native.psnr, 2) << " | " << N(taau.psnr - taa.psnr, 2) << " | "
-       << N(taau.psnr - pt.psnr, 2) << " | " << N(taau.frameMs / native.frameMs, 2) << " | "
-       << N(c.scaleMs / cp.scaleMs, 2) << " | " << N(c.scaleMs / bound, 1) << " |\n";
+    md << "| " << (moving ? "moving x" + FormatCell(speed, 2) : std::string("still")) << " | " << FormatCell(s, 2) << " | " << FormatCell(taau.psnr, 2)
+       << " / " << FormatCell(taau.flip, 4) << " | " << FormatCell(taau.psnr - native.psnr, 2) << " | " << FormatCell(taau.psnr - taa.psnr, 2) << " | "
+       << FormatCell(taau.psnr - pt.psnr, 2) << " | " << FormatCell(taau.frameMs / native.frameMs, 2) << " | "
+       << FormatCell(c.scaleMs / cp.scaleMs, 2) << " | " << FormatCell(c.scaleMs / bound, 1) << " |\n";
   }
 }
 
 void WriteGoal(const BenchResults& res, double speed, std::ostringstream& md) {
   const QualityPoint taau = MovingPoint(res, speed, "taau", kGoalScale), native = MovingPoint(res, speed, "native", 1.0);
   if (!std::isfinite(taau.psnr) || !std::isfinite(native.psnr)) {
-    md << "Goal (TAAU at 0.71 within " << N(kGoalDb, 1) << " dB of native on the moving camera, at under "
-       << N(100 * kGoalTime, 0) << " % of native's frame time): not measured in this run (no moving taau 0.71 row).\n\n";
+    md << "Goal (TAAU at 0.71 within " << FormatCell(kGoalDb, 1) << " dB of native on the moving camera, at under "
+       << FormatCell(100 * kGoalTime, 0) << " % of native's frame time): not measured in this run (no moving taau 0.71 row).\n\n";
     return;
   }
   const double gap = native.psnr - taau.psnr, time = taau.frameMs / native.frameMs;
   const bool quality = gap <= kGoalDb, cost = time < kGoalTime;
-  md << "Goal (TAAU at 0.71 within " << N(kGoalDb, 1) << " dB of native on the moving camera x" << N(speed, 2)
-     << ", at under " << N(100 * kGoalTime, 0) << " % of native's frame time): image "
-     << (quality ? "met" : "not met, by " + N(gap - kGoalDb, 2) + " dB") << " (" << N(taau.psnr, 2) << " against "
-     << N(native.psnr, 2) << " dB); time " << (cost ? "met" : "not met") << " (" << N(100 * time, 0)
+  md << "Goal (TAAU at 0.71 within " << FormatCell(kGoalDb, 1) << " dB of native on the moving camera x" << FormatCell(speed, 2)
+     << ", at under " << FormatCell(100 * kGoalTime, 0) << " % of native's frame time): image "
+     << (quality ? "met" : "not met, by " + FormatCell(gap - kGoalDb, 2) + " dB") << " (" << FormatCell(taau.psnr, 2) << " against "
+     << FormatCell(native.psnr, 2) << " dB); time " << (cost ? "met" : "not met") << " (" << FormatCell(100 * time, 0)
      << " % of native's frame on this machine).\n\n";
 }
 
@@ -94,9 +91,9 @@ void WriteUpscalerTable(const BenchResults& res, double speed, float scale, std:
     const QualityPoint st = StillPoint(res, FilterOption(f), scale);
     const QualityPoint mv = MovingPoint(res, speed, FilterOption(f), scale);
     const PassCost c = CostOf(res, 0, FilterOption(f), scale), cp = CostOf(res, 0, "point", scale);
-    md << "| " << FilterOption(f) << " | " << N(st.psnr, 2) << " / " << N(st.flip, 4) << " | " << N(mv.psnr, 2) << " / "
-       << N(mv.flip, 4) << " / " << N(1000 * mv.instability, 1) << " | " << N(c.scaleMs / cp.scaleMs, 2) << " | "
-       << N(c.scaleMs / ScalePassBoundMs(res, c.viewportW, c.viewportH), 1) << " |\n";
+    md << "| " << FilterOption(f) << " | " << FormatCell(st.psnr, 2) << " / " << FormatCell(st.flip, 4) << " | " << FormatCell(mv.psnr, 2) << " / "
+       << FormatCell(mv.flip, 4) << " / " << FormatCell(1000 * mv.instability, 1) << " | " << FormatCell(c.scaleMs / cp.scaleMs, 2) << " | "
+       << FormatCell(c.scaleMs / ScalePassBoundMs(res, c.viewportW, c.viewportH), 1) << " |\n";
   }
   md << '\n';
 }
@@ -119,7 +116,7 @@ void WriteUpscaling(const BenchResults& res, std::ostringstream& md) {
   if (std::isfinite(speed)) WriteTaauRows(res, speed, plan.movingScales, md);
   md << '\n';
   if (std::isfinite(speed)) WriteGoal(res, speed, md);
-  md << "Every upscaler at " << N(kGoalScale, 2) << " (moving x" << N(speed, 2) << "; `-`: not in this run's moving sweep):\n\n";
+  md << "Every upscaler at " << FormatCell(kGoalScale, 2) << " (moving x" << FormatCell(speed, 2) << "; `-`: not in this run's moving sweep):\n\n";
   WriteUpscalerTable(res, speed, float(kGoalScale), md);
 }
 

@@ -8,6 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scene/DdsBlocks.h"
+#include "scene/FiniteVector.h"
 
 namespace drr {
 
@@ -183,18 +184,12 @@ void GetList(Reader& r, size_t minBytes, std::vector<T>* v, F get) {
   }
 }
 
-bool Finite(const float* p, size_t n) {
-  for (size_t i = 0; i < n; ++i)
-    if (!std::isfinite(p[i])) return false;
-  return true;
-}
-
 std::string ValidateMesh(const MeshData& m, size_t materials) {
   if (m.indices.empty() || m.indices.size() % 3) return "mesh '" + m.name + "': index count not a positive multiple of 3";
   for (uint32_t i : m.indices)
     if (i >= m.vertices.size()) return "mesh '" + m.name + "': index " + std::to_string(i) + " out of range";
   static_assert(sizeof(SceneVertex) % sizeof(float) == 0);
-  if (!Finite(reinterpret_cast<const float*>(m.vertices.data()), m.vertices.size() * sizeof(SceneVertex) / 4))
+  if (!FiniteFloats(reinterpret_cast<const float*>(m.vertices.data()), m.vertices.size() * sizeof(SceneVertex) / 4))
     return "mesh '" + m.name + "': non-finite vertex data";
   if (m.material >= materials) return "mesh '" + m.name + "': material out of range";
   return {};
@@ -204,7 +199,7 @@ std::string ValidateNodes(const ModelData& model) {
   for (size_t i = 0; i < model.nodes.size(); ++i) {
     const NodeData& n = model.nodes[i];
     if (n.parent < -1 || n.parent >= int(i)) return "node '" + n.name + "': parent out of order";
-    if (!Finite(glm::value_ptr(n.local), 16)) return "node '" + n.name + "': non-finite transform";
+    if (!FiniteFloats(glm::value_ptr(n.local), 16)) return "node '" + n.name + "': non-finite transform";
     for (uint32_t m : n.meshes)
       if (m >= model.meshes.size()) return "node '" + n.name + "': mesh out of range";
   }

@@ -4,14 +4,12 @@
 #include <cmath>
 #include <limits>
 
+#include "scene/FiniteVector.h"
 #include "scene/ModelLoader.h"
 
 namespace drr {
 
 namespace {
-
-bool Finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-bool Finite(const glm::vec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 
 void OrthoBasis(const glm::vec3& n, glm::vec3* t, glm::vec3* b) {
   glm::vec3 a = std::fabs(n.y) < 0.99f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0);

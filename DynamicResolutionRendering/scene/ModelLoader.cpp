@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "scene/FiniteVector.h"
 #include "scene/SdkMeshModel.h"
 
 namespace drr {
@@ -24,7 +25,6 @@ glm::mat4 ToGlm(const aiMatrix4x4& m) {
   return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4, m.b4, m.c4, m.d4);
 }
 glm::vec3 ToGlm(const aiVector3D& v) { return {v.x, v.y, v.z}; }
-bool Finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 template <class K, class V, class F>
 V SampleKeys(const std::vector<K>& keys, double t, const V& def, F interp) {

@@ -10,7 +10,7 @@ namespace drr::sdkmesh {
 
 namespace {
 
-bool Finite(const AnimKey& k) {
+bool KeyFinite(const AnimKey& k) {
   for (int i = 0; i < 3; ++i)
     if (!std::isfinite(k.translation[i]) || !std::isfinite(k.scaling[i])) return false;
   for (int i = 0; i < 4; ++i)
@@ -29,7 +29,7 @@ bool ReadKeys(const ByteView& b, uint64_t at, uint32_t numKeys, AnimFrame* frame
     key.translation = {b.F32(p), b.F32(p + 4), b.F32(p + 8)};
     key.orientation = {b.F32(p + 12), b.F32(p + 16), b.F32(p + 20), b.F32(p + 24)};
     key.scaling = {b.F32(p + 28), b.F32(p + 32), b.F32(p + 36)};
-    if (!Finite(key)) return fail("frame '" + frame->name + "', key " + std::to_string(k) + ": value not finite");
+    if (!KeyFinite(key)) return fail("frame '" + frame->name + "', key " + std::to_string(k) + ": value not finite");
   }
   return true;
 }
