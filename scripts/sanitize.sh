@@ -9,7 +9,9 @@
 # which reaches the same passes under the sanitizers without redoing the
 # image comparisons, and so do the scene suite's three whole-Arena image tests
 # (NOT_SANITIZED in Tests/scene/CMakeLists.txt). The test suites' own sources
-# are built at -O0 here (Tests/CMakeLists.txt). Driver and layer leaks are suppressed by library name only
+# are built at -O0 here (Tests/CMakeLists.txt), and the RHI and the sample one
+# unit per file (DRR_UNITY_BUILD=OFF), so every file also compiles on its own.
+# Driver and layer leaks are suppressed by library name only
 # (Tests/sanitizers/lsan.supp). Prints the time each phase took.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -19,7 +21,7 @@ start=$(date +%s)
 # sanitizers' reports still name file and line. Assertions stay on.
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Sanitize \
   -DCMAKE_CXX_FLAGS_SANITIZE="-O1 -g1" -DCMAKE_C_FLAGS_SANITIZE="-O1 -g1" \
-  -DDRR_SANITIZE=ON -DDRR_WERROR=ON -DDRR_FUZZ_SECONDS="${DRR_FUZZ_SECONDS:-30}" >/dev/null
+  -DDRR_SANITIZE=ON -DDRR_WERROR=ON -DDRR_BUILD_TESTS=ON -DDRR_UNITY_BUILD=OFF -DDRR_FUZZ_SECONDS="${DRR_FUZZ_SECONDS:-30}" >/dev/null
 cmake --build "$build" --parallel "$(nproc)"
 built=$(date +%s)
 export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=1:abort_on_error=1:strict_string_checks=1:verify_asan_link_order=0"
