@@ -5,7 +5,7 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 start=$(date +%s)
-"$root/scripts/setup.sh"
+"$root/scripts/setup.sh" run
 # Only what the sample runs: the program, the import worker it starts for
 # every model and texture file, the SPIR-V it loads (drr_shaders) and the
 # default scene generated at build time (drr_arena). The last three are

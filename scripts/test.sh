@@ -10,7 +10,7 @@ start=$(date +%s)
 "$root/scripts/setup.sh"
 set_up=$(date +%s)
 build="${BUILD_DIR:-$root/build}"
-BUILD_DIR="$build" "$root/scripts/build.sh" -DDRR_WERROR=ON
+BUILD_DIR="$build" "$root/scripts/build.sh" -DDRR_WERROR=ON -DDRR_BUILD_TESTS=ON
 built=$(date +%s)
 rc=0
 (cd "$build" && ctest --output-on-failure --parallel "$(nproc)" --timeout 600) || rc=$?
