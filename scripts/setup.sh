@@ -12,10 +12,13 @@ RUN_PACKAGES=(
   glslang-tools glslang-dev spirv-tools
   libglfw3-dev libglm-dev libassimp-dev
   libopenimageio-dev libimgui-dev nlohmann-json3-dev
+  # Debian's OpenImageIO CMake package names its command-line tools'
+  # files, and find_package fails without them.
+  openimageio-tools
 )
 # The tests and benchmarks, and the sample's --validation.
 TEST_PACKAGES=(
-  vulkan-validationlayers vulkan-tools openimageio-tools assimp-testmodels
+  vulkan-validationlayers vulkan-tools assimp-testmodels
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth xdotool openbox matchbox-window-manager
 )
