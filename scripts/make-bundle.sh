@@ -33,7 +33,7 @@ suites=(Tests/rhi/drr_rhi_tests Tests/scene/drr_scene_render_tests Tests/sample/
 
 if ((!from_build)); then
   "$root/scripts/setup.sh"
-  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DDRR_IMAGE_IO=STB >/dev/null
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DDRR_IMAGE_IO=STB -DDRR_BUILD_TESTS=ON >/dev/null
   cmake --build "$build" --parallel "$(nproc)" \
     --target DynamicResolutionRendering drr_import_worker drr_rhi_bench drr_scene_record_bench drr_arena \
     drr_arena_large drr_arena_props "${suites[@]##*/}"
