@@ -69,6 +69,8 @@ done
 # The test suites travel compressed (a carried bundle must stay small);
 # run.sh unpacks one on first use.
 for suite in "${suites[@]}"; do xz -6 -T0 "$out/bin/${suite##*/}"; done
+# The RHI suite reads copies of a few sources beside itself.
+cp -r "$build/Tests/rhi/rhi-test-sources" "$out/bin/"
 if ((validation)); then
   # The layer is large (22 MB); it travels compressed and run.sh unpacks it.
   mkdir -p "$out/layers"
