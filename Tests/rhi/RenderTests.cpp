@@ -86,14 +86,8 @@ TEST_F(RhiRender, ViewportSubRectangleLeavesTheRestUntouched) {
   context()->ClearRenderTargetView(rt.rtv.Get(), blue);
   VIEWPORT vp{16, 8, 32, 16, 0, 1};
   context()->RSSetViewports(1, &vp);
-  auto vs = LoadVertexShader("rhi_fullscreen_vs.spv");
-  auto ps = LoadPixelShader("rhi_solid_ps.spv");
   const float red[4] = {1, 0, 0, 1};
-  auto cb = MakeCB(16, USAGE_DEFAULT, red);
-  context()->VSSetShader(vs.Get());
-  context()->PSSetShader(ps.Get());
-  context()->PSSetConstantBuffers(0, 1, cb.GetAddressOf());
-  context()->IASetPrimitiveTopology(PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+  BindSolidFullScreen(red);
   context()->Draw(3, 0);
   auto img = ReadBack(rt.texture.Get());
   int wrong = 0;
@@ -185,13 +179,7 @@ TEST_F(RhiRender, RenderToTextureThenSampleWithoutManualBarriers) {
     const float c[4] = {0.25f * frame, 0.5f, 1.0f, 1.0f};
     // Pass 1: draw a solid colour into A.
     Bind(a, 16, 16);
-    auto vs = LoadVertexShader("rhi_fullscreen_vs.spv");
-    auto ps = LoadPixelShader("rhi_solid_ps.spv");
-    auto cb = MakeCB(16, USAGE_DEFAULT, c);
-    context()->VSSetShader(vs.Get());
-    context()->PSSetShader(ps.Get());
-    context()->PSSetConstantBuffers(0, 1, cb.GetAddressOf());
-    context()->IASetPrimitiveTopology(PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+    BindSolidFullScreen(c);
     context()->Draw(3, 0);
     // Pass 2: sample A into B (A is transitioned by the RHI).
     Bind(b, 16, 16);

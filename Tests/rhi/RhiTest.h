@@ -100,6 +100,17 @@ class RhiTest : public drrtest::RenderTest {
     context()->PSSetShader(ps.Get());
     context()->Draw(UINT(verts.size()), 0);
   }
+  // Binds the full-screen triangle filled with `rgba` (its constant buffer at
+  // b0) without drawing; the context's slots hold the shaders and the buffer.
+  void BindSolidFullScreen(const float rgba[4]) {
+    auto vs = LoadVertexShader("rhi_fullscreen_vs.spv");
+    auto ps = LoadPixelShader("rhi_solid_ps.spv");
+    auto cb = MakeCB(16, USAGE_DEFAULT, rgba);
+    context()->VSSetShader(vs.Get());
+    context()->PSSetShader(ps.Get());
+    context()->PSSetConstantBuffers(0, 1, cb.GetAddressOf());
+    context()->IASetPrimitiveTopology(PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+  }
   // Full-screen pass sampling `srv` with `smp` into the bound target.
   void DrawSampled(ShaderResourceView* srv, SamplerState* smp, float su = 1, float sv = 1, float ou = 0, float ov = 0) {
     auto vs = LoadVertexShader("rhi_fullscreen_vs.spv");

@@ -205,13 +205,7 @@ TEST_F(RhiValidation, IndirectDrawArgumentsAreRejectedWithAMessage) {
   Bind(rt, 4, 4);
   const float black[4] = {0, 0, 0, 1}, red[4] = {1, 0, 0, 1};
   context()->ClearRenderTargetView(rt.rtv.Get(), black);
-  auto vs = LoadVertexShader("rhi_fullscreen_vs.spv");
-  auto ps = LoadPixelShader("rhi_solid_ps.spv");
-  auto cb = MakeCB(16, USAGE_DEFAULT, red);
-  context()->VSSetShader(vs.Get());
-  context()->PSSetShader(ps.Get());
-  context()->PSSetConstantBuffers(0, 1, cb.GetAddressOf());
-  context()->IASetPrimitiveTopology(PRIMITIVE_TOPOLOGY_TRIANGLELIST);
+  BindSolidFullScreen(red);
   context()->IASetIndexBuffer(ib.Get(), DXGI_FORMAT_R16_UINT, 0);
 
   context()->DrawInstancedIndirect(nullptr, 0);
