@@ -84,7 +84,6 @@ JsonValue Frame(const FrameRecord& r) {
             {"scale", r.gpuScale}}}};
 }
 
-
 JsonValue SceneStatsJson(const Scene& scene) {
   const SceneStats st = scene.Stats();
   JsonValue out = {{"draws_issued", st.drawsIssued}, {"draws_culled", st.drawsCulled},
