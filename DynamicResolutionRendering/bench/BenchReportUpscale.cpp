@@ -14,7 +14,7 @@
 namespace drr {
 namespace {
 
-// The goal for TAAU: at 0.71, moving, within this of native's PSNR
+// The goal set for TAAU: at 0.71, moving, within this of native's PSNR
 // at under this fraction of native's frame time.
 constexpr double kGoalScale = 0.71, kGoalDb = 0.5, kGoalTime = 0.6;
 
