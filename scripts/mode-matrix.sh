@@ -82,21 +82,12 @@ modes=(
   "gles2|--preset gles2"
 )
 
-# Runs one mode. Under the sanitizer job's LeakSanitizer, the leak check at
-# exit stops every thread with a tracer thread, which now and then crashes
-# itself ("Tracer caught signal 11", then "LeakSanitizer has encountered a
-# fatal error") while a driver thread is ending: no leak or error was found,
-# the checker did not run. Such a run is run once more (its log kept as
-# NAME.first.log); a leak, any other sanitizer report, or a second failure
-# fails the mode.
+# Runs one mode, through lsan-retry.sh: under the sanitizer job, a run whose
+# leak check could not run (LeakSanitizer's tracer crashed, nothing reported)
+# is run once more; its first output stays at the top of the log.
 run_mode() {  # name args...
   local name="$1"; shift
-  "$exe" "$@" > "$out/$name.log" 2>&1 && return 0
-  grep -q 'LeakSanitizer has encountered a fatal error' "$out/$name.log" || return 1
-  grep -q -E 'ERROR: (Address|LeakSanitizer: detected)|runtime error:' "$out/$name.log" && return 1
-  mv "$out/$name.log" "$out/$name.first.log"
-  echo "rerun      $name (the leak checker itself crashed: $out/$name.first.log)"
-  "$exe" "$@" > "$out/$name.log" 2>&1
+  bash "$(dirname "$0")/lsan-retry.sh" "$exe" "$@" > "$out/$name.log" 2>&1
 }
 
 ran=0 failed=0 differ=0
