@@ -1,0 +1,116 @@
+#!/usr/bin/env python3
+"""The recording-threads table of Docs/Threads.md, from committed data.
+
+Reads DIR/*.txt written by scripts/measure-threads.sh (drr_scene_record_bench
+outputs: each run 10 alternating pairs of 1 thread and N threads, every pair's
+ratio of the two medians of its frames' Scene::Render times) and prints one
+row per scene: the pooled pairs' median ratio with its distribution-free 95 %
+interval (order statistics of the median), the runs' own medians, the chunk
+times and a verdict against that row's question:
+  props        the many-object Arena, 2 threads against 1: at most 0.65?
+  auto         the Arena, the automatic mode against 1 thread: not slower?
+  arena2       the Arena, 2 threads against 1: do two threads pay (below 1)?
+  props-N      N props, 2 threads against 1: do two threads pay (below 1)?
+A verdict is given only where the interval lies wholly on one side of the
+bound; otherwise "cannot decide". With --write DOC the table replaces the one
+between <!-- threads-tables:begin --> and <!-- threads-tables:end --> in DOC;
+--check DOC exits 1 when it differs.
+
+Usage: scripts/threads-tables.py DIR [--write|--check Docs/Threads.md]
+"""
+import glob
+import math
+import os
+import re
+import statistics as st
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import doc_tables  # noqa: E402
+
+BEGIN, END = "<!-- threads-tables:begin -->", "<!-- threads-tables:end -->"
+PAIR = re.compile(r"^pair \d+: 1 thread ([\d.]+) ms, \d+ threads ([\d.]+) ms \(medians\), ratio ([\d.]+)")
+CHUNK = re.compile(r"^(\d+) thread\(s\): chunk ms per thread \(medians\) ([\d. /]+);")
+DRAWS = re.compile(r"^draws per thread at \d+ threads: ([\d +]+)")
+
+
+def median_interval(values):
+    """The sample median and a 95 % distribution-free interval for the median."""
+    xs = sorted(values)
+    n = len(xs)
+    k = 0  # largest k with P(Binomial(n, 1/2) <= k) <= 0.025
+    cumulative = 0.0
+    for j in range(n + 1):
+        cumulative += math.comb(n, j) / 2 ** n
+        if cumulative > 0.025:
+            break
+        k = j + 1
+    if k == 0:
+        return st.median(xs), xs[0], xs[-1]
+    return st.median(xs), xs[k - 1], xs[n - k]
+
+
+def parse(path):
+    run = {"ratios": [], "chunks": {}, "draws": ""}
+    for line in open(path):
+        if m := PAIR.match(line):
+            run["ratios"].append(float(m.group(3)))
+        elif m := CHUNK.match(line):
+            run["chunks"][int(m.group(1))] = [float(x) for x in m.group(2).split("/")]
+        elif m := DRAWS.match(line):
+            run["draws"] = m.group(1).strip()
+    return run
+
+
+def question(name):
+    if name == "props":
+        return "many-object Arena (2,938 draws), 2 / 1 thread", lambda lo, hi: (
+            "met (at most 0.65)" if hi <= 0.65 else "not met" if lo > 0.65 else "cannot decide")
+    if name == "auto":
+        return "Arena (59 draws), automatic / 1 thread", lambda lo, hi: (
+            "not slower" if lo <= 1.0 else "slower")
+    pays = lambda lo, hi: (
+        "two threads pay" if hi < 1.0 else "two threads cost" if lo > 1.0 else "cannot decide")
+    if name == "arena2":
+        return "Arena (59 draws), 2 / 1 thread", pays
+    props = name.split("-")[1]
+    return f"Arena + {props} props, 2 / 1 thread", lambda lo, hi: (
+        "two threads pay" if hi < 1.0 else "two threads cost" if lo > 1.0 else "cannot decide")
+
+
+def chunk_text(runs, threads):
+    per = [r["chunks"].get(threads) for r in runs if r["chunks"].get(threads)]
+    if not per:
+        return "-"
+    return " / ".join(f"{st.median(c[k] for c in per):.2f}" for k in range(len(per[0])))
+
+
+def tables(folder):
+    groups = {}
+    for path in sorted(glob.glob(os.path.join(folder, "*.txt"))):
+        name = re.sub(r"-\d+\.txt$", "", os.path.basename(path))
+        if name == os.path.basename(path).removesuffix(".txt"):
+            continue  # not a run (load.txt)
+        groups.setdefault(name, []).append(parse(path))
+    order = sorted(groups, key=lambda g: (g != "props", g != "auto", g != "arena2",
+                                          int(g.split("-")[1]) if "-" in g else 0))
+    out = ["| scene, comparison | draws per thread | runs x pairs | ratio: median [95 % interval] | runs' medians | "
+           "chunk ms, 1 thread | chunk ms, N threads (main / worker) | verdict |",
+           "| --- | --- | ---: | --- | --- | ---: | ---: | --- |"]
+    for g in order:
+        runs = [r for r in groups[g] if r["ratios"]]
+        if not runs:
+            continue
+        ratios = [x for r in runs for x in r["ratios"]]
+        med, lo, hi = median_interval(ratios)
+        label, verdict = question(g)
+        run_medians = ", ".join(f"{st.median(r['ratios']):.3f}" for r in runs)
+        many = max((t for r in runs for t in r["chunks"] if t != 1), default=None)
+        out.append(f"| {label} | {runs[0]['draws'] or '-'} | {len(runs)} x {len(ratios) // len(runs)} | "
+                   f"**{med:.3f}** [{lo:.3f}, {hi:.3f}] | {run_medians} | {chunk_text(runs, 1)} | "
+                   f"{chunk_text(runs, many) if many is not None else '-'} | {verdict(lo, hi)} |")
+    return "\n".join(out) + "\n"
+
+
+if __name__ == "__main__":
+    sys.exit(doc_tables.main(sys.argv, __doc__.split("Usage: ")[1], tables, BEGIN, END, "threads-tables.py"))
