@@ -13,9 +13,10 @@ constexpr int kMaxRecordingThreads = 8;   // --threads range 0..this
 // Automatic mode: a thread is added only when each thread gets at least this
 // many draws. Below it, waking a worker, its list's Finish and Execute cost
 // more than its share of the recording saves. Measured on the project's
-// 2-vCPU development guest with lavapipe, quiet (Docs/Threads.md, table
-// "Recording threads"): 2 threads against 1 cost 1.24 with 30 draws per thread
-// (the Arena) and pay 0.77 with 102, the fewest measured that paid.
+// 2-vCPU development guest with lavapipe, quiet (Docs/Threads.md, "glm's
+// functions inlined, measured again"): 2 threads against 1 cost 1.24 with
+// 30 draws per thread (the Arena) and pay 0.77 with 102, the fewest measured
+// that paid.
 constexpr uint32_t kMinDrawsPerRecordingThread = 100;
 
 // The count SceneRenderParams::recordingThreads gets for the --threads value:
