@@ -19,8 +19,7 @@ if [[ $rc -ne 0 ]] && grep -q 'LeakSanitizer has encountered a fatal error' "$er
    ! grep -q -E 'ERROR: (Address|LeakSanitizer: detected)|runtime error:' "$out" "$err"; then
   cat "$out" "$err" >&2
   echo "lsan-retry: the leak check's tracer crashed (no leak or error reported); running once more" >&2
-  "$@"
-  exit $?
+  exec "$@"
 fi
 cat "$out"
 cat "$err" >&2

@@ -21,6 +21,7 @@ gen="$build/DynamicResolutionRendering/tools/drr_arenagen"
 [[ -x "$bench" && -x "$gen" ]] || { echo "measure-threads.sh: build $bench and $gen first" >&2; exit 2; }
 mkdir -p "$out"
 common=(--pairs 10 --frames 10 --size 64x36)
+arena=(--scene "$build/Media/Arena/scene_description.txt" --pairs 10 --frames 20 --size 64x36)  # 59 draws: more frames
 for n in "${props[@]}"; do
   [[ -f "$out/scenes/props-$n/scene_description.txt" ]] ||
     "$gen" --detail props --props "$n" --out "$out/scenes/props-$n" > /dev/null
@@ -28,10 +29,8 @@ done
 { date -u; uptime; } > "$out/load.txt"
 for r in $(seq 1 "$runs"); do
   "$bench" --scene "$build/Media/ArenaProps/scene_description.txt" --threads 2 "${common[@]}" > "$out/props-$r.txt" 2>&1
-  "$bench" --scene "$build/Media/Arena/scene_description.txt" --threads 0 --pairs 10 --frames 20 --size 64x36 \
-    > "$out/auto-$r.txt" 2>&1
-  "$bench" --scene "$build/Media/Arena/scene_description.txt" --threads 2 --pairs 10 --frames 20 --size 64x36 \
-    > "$out/arena2-$r.txt" 2>&1
+  "$bench" "${arena[@]}" --threads 0 > "$out/auto-$r.txt" 2>&1
+  "$bench" "${arena[@]}" --threads 2 > "$out/arena2-$r.txt" 2>&1
   for n in "${props[@]}"; do
     "$bench" --scene "$out/scenes/props-$n/scene_description.txt" --threads 2 "${common[@]}" > "$out/props-$n-$r.txt" 2>&1
   done

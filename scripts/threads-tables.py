@@ -62,6 +62,10 @@ def parse(path):
     return run
 
 
+def pays(lo, hi):
+    return "two threads pay" if hi < 1.0 else "two threads cost" if lo > 1.0 else "cannot decide"
+
+
 def question(name):
     if name == "props":
         return "many-object Arena (2,938 draws), 2 / 1 thread", lambda lo, hi: (
@@ -69,13 +73,10 @@ def question(name):
     if name == "auto":
         return "Arena (59 draws), automatic / 1 thread", lambda lo, hi: (
             "not slower" if lo <= 1.0 else "slower")
-    pays = lambda lo, hi: (
-        "two threads pay" if hi < 1.0 else "two threads cost" if lo > 1.0 else "cannot decide")
     if name == "arena2":
         return "Arena (59 draws), 2 / 1 thread", pays
     props = name.split("-")[1]
-    return f"Arena + {props} props, 2 / 1 thread", lambda lo, hi: (
-        "two threads pay" if hi < 1.0 else "two threads cost" if lo > 1.0 else "cannot decide")
+    return f"Arena + {props} props, 2 / 1 thread", pays
 
 
 def chunk_text(runs, threads):
