@@ -13,8 +13,9 @@ times and a verdict against that row's question:
   props-N      N props, 2 threads against 1: do two threads pay (below 1)?
 A verdict is given only where the interval lies wholly on one side of the
 bound; otherwise "cannot decide". With --write DOC the table replaces the one
-between <!-- threads-tables:begin --> and <!-- threads-tables:end --> in DOC;
---check DOC exits 1 when it differs.
+between <!-- threads-tables:begin NAME --> and <!-- threads-tables:end NAME -->
+in DOC, NAME being DIR's last component (one table per measurement); --check
+DOC exits 1 when it differs.
 
 Usage: scripts/threads-tables.py DIR [--write|--check Docs/Threads.md]
 """
@@ -28,7 +29,9 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import doc_tables  # noqa: E402
 
-BEGIN, END = "<!-- threads-tables:begin -->", "<!-- threads-tables:end -->"
+def markers(data_dir):
+    name = os.path.basename(os.path.normpath(data_dir))
+    return f"<!-- threads-tables:begin {name} -->", f"<!-- threads-tables:end {name} -->"
 PAIR = re.compile(r"^pair \d+: 1 thread ([\d.]+) ms, \d+ threads ([\d.]+) ms \(medians\), ratio ([\d.]+)")
 CHUNK = re.compile(r"^(\d+) thread\(s\): chunk ms per thread \(medians\) ([\d. /]+);")
 DRAWS = re.compile(r"^draws per thread at \d+ threads: ([\d +]+)")
@@ -114,4 +117,5 @@ def tables(folder):
 
 
 if __name__ == "__main__":
-    sys.exit(doc_tables.main(sys.argv, __doc__.split("Usage: ")[1], tables, BEGIN, END, "threads-tables.py"))
+    begin, end = markers(sys.argv[1]) if len(sys.argv) > 1 else ("", "")
+    sys.exit(doc_tables.main(sys.argv, __doc__.split("Usage: ")[1], tables, begin, end, "threads-tables.py"))

@@ -1,17 +1,18 @@
-// Host memory for one command list's VkCommandPool (VkAllocationCallbacks).
+// Host memory for one VkCommandPool (VkAllocationCallbacks): a command
+// list's, or one frame slot's of the immediate context.
 //
 // A driver that stores commands in host memory (lavapipe keeps one heap
 // allocation per recorded command, a few for a descriptor-set bind) calls the
 // pool's allocator for every command and frees it all at vkResetCommandPool.
 // With the default allocator that is malloc/free per command, on two
 // recording threads at once. This allocator keeps freed blocks in per-size
-// free lists for the next recording of the same list, so a recycled list
+// free lists for the next recording into the same pool, so a recycled pool
 // records into warm memory it already owns; memory goes back to the system
 // only when the pool is destroyed.
 //
 // Not locked: Vulkan calls a pool's allocator only from the thread that calls
 // a command on that pool or its buffers, and those are externally
-// synchronized (one deferred context records into one pool at a time).
+// synchronized (one context records into one pool at a time).
 #pragma once
 
 #include <vulkan/vulkan.h>

@@ -47,6 +47,10 @@ class QueryImpl final : public Child<Query> {
 // What a context records with in one frame slot of the queue: its command
 // buffer, the pools its descriptor sets come from and its timestamps.
 struct CommandFrame {
+  // The pool's host memory (CommandMemory.h): the immediate context's
+  // commands, thousands a frame on lavapipe, come from blocks this slot
+  // already owns rather than from a malloc and a free each (Docs/Threads.md).
+  std::unique_ptr<CommandMemory> memory;
   VkCommandPool pool = VK_NULL_HANDLE;
   VkCommandBuffer cmd = VK_NULL_HANDLE;
   uint64_t serial = 0;  // frame recorded in this slot

@@ -23,7 +23,8 @@ void ContextImpl::CreateCommandFrames() {
   const VkDevice d = dev_->vk();
   frames_.resize(dev_->queue().FrameCount());
   for (auto& f : frames_) {
-    dev_->CreateCommandBuffer(&f.pool, &f.cmd);
+    f.memory = std::make_unique<CommandMemory>();
+    dev_->CreateCommandBuffer(&f.pool, &f.cmd, f.memory->callbacks());
     VkQueryPoolCreateInfo qci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     qci.queryType = VK_QUERY_TYPE_TIMESTAMP;
     qci.queryCount = kTimestampsPerFrame;
@@ -39,7 +40,7 @@ void ContextImpl::DestroyCommandFrames() {
     for (QueryImpl* q : f.queries) q->Release();
     for (auto p : f.descPools) vkDestroyDescriptorPool(d, p, nullptr);
     if (f.queryPool) vkDestroyQueryPool(d, f.queryPool, nullptr);
-    if (f.pool) vkDestroyCommandPool(d, f.pool, nullptr);
+    if (f.pool) vkDestroyCommandPool(d, f.pool, f.memory ? f.memory->callbacks() : nullptr);
   }
   frames_.clear();
 }

@@ -105,7 +105,8 @@ class DeviceImpl final : public Device, public ValidationDevice {
                        VkBuffer* buf, VkDeviceMemory* mem, uint8_t** mapped);
   void SetName(VkObjectType type, uint64_t handle, const std::string& name);
   // A transient command pool of the graphics queue with one primary buffer.
-  void CreateCommandBuffer(VkCommandPool* pool, VkCommandBuffer* cmd);
+  // `memory`: the pool's allocator (null: the driver's); destroy the pool with it.
+  void CreateCommandBuffer(VkCommandPool* pool, VkCommandBuffer* cmd, const VkAllocationCallbacks* memory = nullptr);
 
   // Deferred destruction: after the fence of the frame being recorded.
   // `memory`: a command pool's allocator (CommandMemory.h), deleted after the pool.

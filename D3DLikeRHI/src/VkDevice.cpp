@@ -102,11 +102,11 @@ void DeviceImpl::SetName(VkObjectType type, uint64_t handle, const std::string& 
   debugUtils_.setObjectName(device_, &ni);
 }
 
-void DeviceImpl::CreateCommandBuffer(VkCommandPool* pool, VkCommandBuffer* cmd) {
+void DeviceImpl::CreateCommandBuffer(VkCommandPool* pool, VkCommandBuffer* cmd, const VkAllocationCallbacks* memory) {
   VkCommandPoolCreateInfo pci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   pci.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
   pci.queueFamilyIndex = queueFamily_;
-  vkCreateCommandPool(device_, &pci, nullptr, pool);
+  vkCreateCommandPool(device_, &pci, memory, pool);
   VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   ai.commandPool = *pool;
   ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;

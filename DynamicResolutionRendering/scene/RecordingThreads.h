@@ -13,11 +13,12 @@ constexpr int kMaxRecordingThreads = 8;   // --threads range 0..this
 // Automatic mode: a thread is added only when each thread gets at least this
 // many draws. Below it, waking a worker, its list's Finish and Execute cost
 // more than its share of the recording saves. Measured on the project's
-// 2-vCPU development guest with lavapipe, quiet (Docs/Threads.md, "glm's
-// functions inlined, measured again"): 2 threads against 1 cost 1.24 with
-// 30 draws per thread (the Arena) and pay 0.77 with 102, the fewest measured
-// that paid.
-constexpr uint32_t kMinDrawsPerRecordingThread = 100;
+// 2-vCPU development guest with lavapipe, quiet (Docs/Threads.md, "The
+// immediate context's commands in its own memory"): 2 threads against 1 cost
+// 1.64 on the Arena's 59 draws, cannot be told from 1 thread with 102 draws
+// per thread (0.99) and pay 0.88 with 174, the fewest measured that paid;
+// 170 gives the 349 draws of that row two threads.
+constexpr uint32_t kMinDrawsPerRecordingThread = 170;
 
 // The count SceneRenderParams::recordingThreads gets for the --threads value:
 // 0 stays 0 (automatic: the scene picks per frame, AutoRecordingThreads);
