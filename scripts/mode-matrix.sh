@@ -84,7 +84,7 @@ modes=(
 
 # Runs one mode, through lsan-retry.sh: under the sanitizer job, a run whose
 # leak check could not run (LeakSanitizer's tracer crashed, nothing reported)
-# is run once more; its first output stays at the top of the log.
+# is run again (at most three runs); its first output stays at the top of the log.
 run_mode() {  # name args...
   local name="$1"; shift
   bash "$(dirname "$0")/lsan-retry.sh" "$exe" "$@" > "$out/$name.log" 2>&1

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # scripts/lsan-retry.sh against a stand-in command: a run that failed only
-# because LeakSanitizer's tracer crashed is run once more; a leak report,
-# another failure, or a second tracer crash is passed on.
+# because LeakSanitizer's tracer crashed is run again, at most three runs in
+# all; a leak report, another failure, or a third tracer crash is passed on.
 set -u
 retry="$1"
 dir=$(mktemp -d)
@@ -33,10 +33,12 @@ scenario() {  # name expected-rc expected-runs run1 [run2]
 scenario "a passing run" 0 1 ok
 grep -q "frame written" "$dir/out"; check "a passing run: its output" "$?" 0
 scenario "a tracer crash, then a pass" 0 2 tracer ok
-grep -q "running once more" "$dir/err"; check "a tracer crash: said so" "$?" 0
+grep -q "running again" "$dir/err"; check "a tracer crash: said so" "$?" 0
+scenario "two tracer crashes, then a pass" 0 3 tracer tracer ok
+scenario "a tracer crash, then a leak" 23 2 tracer leak
 scenario "a leak" 23 1 leak
 scenario "another failure" 2 1 bad
 grep -q "bad option" "$dir/err"; check "another failure: its message" "$?" 0
-scenario "two tracer crashes" 134 2 tracer tracer
+scenario "three tracer crashes" 134 3 tracer tracer tracer
 echo "$fails failed"
 [[ $fails -eq 0 ]]
