@@ -15,7 +15,8 @@
 set -u
 out=$(mktemp) err=$(mktemp)
 trap 'rm -f "$out" "$err"' EXIT
-for attempt in 1 2; do
+runs=3  # in all; the last one's result is passed on as it is
+for ((run = 1; run < runs; ++run)); do
   "$@" > "$out" 2> "$err"
   rc=$?
   if [[ $rc -eq 0 ]] || ! grep -q 'LeakSanitizer has encountered a fatal error' "$err" ||
@@ -25,6 +26,6 @@ for attempt in 1 2; do
     exit $rc
   fi
   cat "$out" "$err" >&2
-  echo "lsan-retry: the leak check's tracer crashed (no leak or error reported); running again (run $((attempt + 1)) of 3)" >&2
+  echo "lsan-retry: the leak check's tracer crashed (no leak or error reported); running again (run $((run + 1)) of $runs)" >&2
 done
 exec "$@"

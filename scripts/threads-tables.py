@@ -29,9 +29,12 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import doc_tables  # noqa: E402
 
+
 def markers(data_dir):
     name = os.path.basename(os.path.normpath(data_dir))
     return f"<!-- threads-tables:begin {name} -->", f"<!-- threads-tables:end {name} -->"
+
+
 PAIR = re.compile(r"^pair \d+: 1 thread ([\d.]+) ms, \d+ threads ([\d.]+) ms \(medians\), ratio ([\d.]+)")
 CHUNK = re.compile(r"^(\d+) thread\(s\): chunk ms per thread \(medians\) ([\d. /]+);")
 DRAWS = re.compile(r"^draws per thread at \d+ threads: ([\d +]+)")

@@ -22,7 +22,7 @@ case "$(cat "$d/run.$n")" in
 esac
 FAKE
 chmod +x "$dir/fake"
-scenario() {  # name expected-rc expected-runs run1 [run2]
+scenario() {  # name expected-rc expected-runs run1 [run2 [run3]]
   rm -f "$dir"/n "$dir"/run.*
   local name=$1 rc_want=$2 runs_want=$3; shift 3
   local k=1; for r in "$@"; do echo "$r" > "$dir/run.$k"; k=$((k + 1)); done
