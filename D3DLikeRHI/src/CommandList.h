@@ -10,6 +10,8 @@
 // context's ListRecycler and is reused once the GPU is done with it.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <unordered_map>
@@ -39,6 +41,32 @@ struct ListImport {
   RingAlloc slot;
 };
 
+// The API objects a list holds a reference to, each once. Most lookups are
+// of an object the list already holds (the same shader, state or texture
+// draw after draw): a small direct-mapped table of the last object seen per
+// slot answers those without the hash set's bucket walk.
+class RetainedSet {
+ public:
+  // True when `object` was not held yet (the caller then adds its reference).
+  bool Insert(const void* object) {
+    const void*& recent = recent_[(reinterpret_cast<uintptr_t>(object) >> 4) & (kRecent - 1)];
+    if (recent == object) return false;
+    recent = object;
+    return all_.insert(object).second;
+  }
+  // Forgets every object: a slot left over could hide an object of the next
+  // list, which would then hold no reference to it.
+  void Clear() {
+    all_.clear();
+    recent_.fill(nullptr);
+  }
+
+ private:
+  static constexpr size_t kRecent = 256;  // a power of two
+  std::array<const void*, kRecent> recent_{};
+  std::unordered_set<const void*> all_;
+};
+
 struct ListRecording {
   std::unique_ptr<CommandMemory> memory;  // the pool's host memory, kept across recordings
   VkCommandPool pool = VK_NULL_HANDLE;
@@ -66,7 +94,7 @@ struct ListRecording {
     void* object;
     void (*release)(void*);
   };
-  std::unordered_set<const void*> retained;
+  RetainedSet retained;
   std::vector<Held> held;
 
   uint64_t draws = 0;  // added to DEVICE_STATS::DrawCalls at each execution

@@ -5,10 +5,15 @@
 // allocation per recorded command, a few for a descriptor-set bind) calls the
 // pool's allocator for every command and frees it all at vkResetCommandPool.
 // With the default allocator that is malloc/free per command, on two
-// recording threads at once. This allocator keeps freed blocks in per-size
-// free lists for the next recording into the same pool, so a recycled pool
-// records into warm memory it already owns; memory goes back to the system
-// only when the pool is destroyed.
+// recording threads at once. This allocator carves small blocks in order
+// from 64 KiB chunks it keeps. When a reset has freed every block allocated
+// since the pool's own objects were made (StartRecordings), Rewind() starts
+// the next recording at the beginning of the same chunks: its commands land
+// in consecutive addresses, as in a linear arena, instead of in the order of
+// a free list (one dependent cache miss per command). A block still alive
+// after a reset stops the rewind; freed blocks then serve later requests
+// from per-size free lists. Memory goes back to the system only when the
+// pool is destroyed.
 //
 // Not locked: Vulkan calls a pool's allocator only from the thread that calls
 // a command on that pool or its buffers, and those are externally
@@ -36,10 +41,20 @@ class CommandMemory {
   void* Reallocate(void* p, size_t size, size_t alignment);
   void Free(void* p);
 
+  // Blocks allocated from here on belong to recordings; those before (the
+  // pool's and its command buffers' own objects) are not expected back at a
+  // reset. Call once, after the pool and its command buffers are made.
+  void StartRecordings();
+  // Call after vkResetCommandPool: when every recording block has been freed,
+  // the next allocation starts again where StartRecordings left the chunks.
+  // Returns whether it did.
+  bool Rewind();
+
   // Counters for tests: blocks handed out in total, and how many of them
   // came from a free list rather than new memory.
   uint64_t allocations() const { return allocations_; }
   uint64_t reused() const { return reused_; }
+  uint64_t rewinds() const { return rewinds_; }
 
  private:
   // Size classes of 16 bytes up to kMaxSmall; larger or more strictly
@@ -54,13 +69,21 @@ class CommandMemory {
   };
   void* AllocateSmall(size_t cls);
   void* AllocateLarge(size_t size, size_t alignment);
+  bool NextChunk();
+
+  // Where the bump allocator stands: chunk index and bytes used in it.
+  struct Position {
+    size_t chunk = 0;
+    size_t used = kChunkBytes;  // no chunk yet: the first request takes one
+  };
 
   VkAllocationCallbacks callbacks_{};
   FreeBlock* free_[kClasses] = {};
-  std::vector<void*> chunks_;
-  uint8_t* bump_ = nullptr;
-  size_t bumpLeft_ = 0;
-  uint64_t allocations_ = 0, reused_ = 0;
+  std::vector<void*> chunks_;  // in bump order; kept for the next rewind
+  Position at_, recordingsStart_;
+  bool recording_ = false;       // StartRecordings was called
+  uint64_t liveRecordingBlocks_ = 0;
+  uint64_t allocations_ = 0, reused_ = 0, rewinds_ = 0;
 };
 
 }  // namespace d3dl::impl

@@ -48,7 +48,7 @@ CommandListImpl::~CommandListImpl() {
 void ReleaseListReferences(ListRecording& rec) {
   for (const auto& h : rec.held) h.release(h.object);
   rec.held.clear();
-  rec.retained.clear();
+  rec.retained.Clear();
 }
 
 void DestroyRecording(DeviceImpl* dev, ListRecording& rec) {
@@ -212,7 +212,7 @@ void DeferredContext::NoteUse(GpuUse& u, bool write) {
 
 template <class T>
 void DeferredContext::Retain(T* object) {
-  if (!object || !rec_->retained.insert(object).second) return;
+  if (!object || !rec_->retained.Insert(object)) return;
   object->AddRef();
   rec_->held.push_back({object, [](void* p) { static_cast<T*>(p)->Release(); }});
 }

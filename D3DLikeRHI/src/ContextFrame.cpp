@@ -25,6 +25,7 @@ void ContextImpl::CreateCommandFrames() {
   for (auto& f : frames_) {
     f.memory = std::make_unique<CommandMemory>();
     dev_->CreateCommandBuffer(&f.pool, &f.cmd, f.memory->callbacks());
+    f.memory->StartRecordings();
     VkQueryPoolCreateInfo qci{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     qci.queryType = VK_QUERY_TYPE_TIMESTAMP;
     qci.queryCount = kTimestampsPerFrame;
@@ -66,6 +67,7 @@ void ContextImpl::RecycleCommandFrame(CommandFrame& f) {
   for (auto p : f.descPools) vkResetDescriptorPool(d, p, 0);
   f.descPoolCurrent = 0;
   vkResetCommandPool(d, f.pool, 0);
+  dev_->CountCommandPoolReset(f.memory->Rewind());
 }
 
 void ContextImpl::BeginCommandFrame() {

@@ -140,6 +140,12 @@ class DeviceImpl final : public Device, public ValidationDevice {
   uint32_t NextDeferredContextIndex() { return deferredContexts_++; }
 
   DEVICE_STATS stats{};
+  // A command pool was reset (any context's thread): whether its host memory
+  // started over from the beginning (CommandMemory::Rewind).
+  void CountCommandPoolReset(bool rewound) {
+    ++commandPoolResets_;
+    if (rewound) ++commandPoolRewinds_;
+  }
 
  private:
   // DeviceSetup.cpp
@@ -160,6 +166,7 @@ class DeviceImpl final : public Device, public ValidationDevice {
 
   std::atomic<UINT> externalRefs_{1};
   std::atomic<UINT> internalRefs_{0};
+  std::atomic<UINT64> commandPoolResets_{0}, commandPoolRewinds_{0};
   bool orphaned_ = false;
   bool shuttingDown_ = false;
 

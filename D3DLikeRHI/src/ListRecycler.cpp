@@ -66,6 +66,7 @@ std::unique_ptr<ListRecording> ListRecycler::Create() {
   ai.level = VK_COMMAND_BUFFER_LEVEL_SECONDARY;
   ai.commandBufferCount = 1;
   vkAllocateCommandBuffers(dev_->vk(), &ai, &rec->cmd);
+  rec->memory->StartRecordings();
   return rec;
 }
 
@@ -73,6 +74,7 @@ std::unique_ptr<ListRecording> ListRecycler::Create() {
 // emptied but keep their capacity.
 void ListRecycler::Reset(ListRecording& rec) {
   vkResetCommandPool(dev_->vk(), rec.pool, 0);  // the secondary buffer returns to the initial state
+  dev_->CountCommandPoolReset(rec.memory->Rewind());
   for (VkDescriptorPool p : rec.descPools) vkResetDescriptorPool(dev_->vk(), p, 0);
   rec.descPoolCurrent = 0;
   rec.ring.Reset();
@@ -81,7 +83,7 @@ void ListRecycler::Reset(ListRecording& rec) {
   rec.slices.clear();
   rec.imports.clear();
   rec.uses.clear();
-  rec.retained.clear();
+  rec.retained.Clear();
   rec.held.clear();
   rec.draws = 0;
   rec.lastBuffer = nullptr;

@@ -235,6 +235,8 @@ void DeviceImpl::GetStats(DEVICE_STATS* s) const {
   *s = stats;
   s->DeferredDestructionsPending = queue_.PendingGarbage();
   s->LiveObjects = internalRefs_.load();
+  s->CommandPoolResets = commandPoolResets_.load();
+  s->CommandPoolRewinds = commandPoolRewinds_.load();
 }
 
 uint32_t DeviceImpl::FormatFeatures(DXGI_FORMAT format) const {

@@ -243,6 +243,7 @@ struct SceneImpl {
   bool EnsurePool(int threads);
   bool RecordThreaded(d3dl::DeviceContext* immediate, int threads, const SceneRenderParams& p, FrameDraw& f,
                       const std::function<void()>& prepare);
+  ChunkBalance chunkBalance;            // learnt from the frames RecordThreaded recorded
   std::unique_ptr<RecordingPool> pool;  // last member: joined before the device goes
 };
 

@@ -46,7 +46,8 @@ bool SceneImpl::EnsurePool(int threads) {
 }
 
 // The workers are woken first and set their context's frame state while this
-// thread builds the draw list; they start drawing once it is published.
+// thread builds the draw list; they start drawing once it is published. The
+// chunks' sizes follow the threads' measured speeds (ChunkBalance).
 // Chunk t > 0 goes to worker t unless this thread, done with chunk 0, finds it
 // still unclaimed (a worker not scheduled yet, on a loaded machine): it then
 // draws it itself on the immediate context, so a frame never waits for the
@@ -62,7 +63,7 @@ bool SceneImpl::RecordThreaded(d3dl::DeviceContext* immediate, int threads, cons
   const size_t n = size_t(threads);
   ChunkedFrame frame(n);
   const auto chunk = [&](size_t t) {
-    const ChunkRange r = SplitEvenly(uint32_t(drawList.size()), uint32_t(n), uint32_t(t));
+    const ChunkRange r = chunkBalance.Split(uint32_t(drawList.size()), uint32_t(n), uint32_t(t));
     return std::pair(drawList.data() + r.first, drawList.data() + r.last);
   };
   const std::function<void(int)> worker = [&](int thread) {
@@ -91,6 +92,7 @@ bool SceneImpl::RecordThreaded(d3dl::DeviceContext* immediate, int threads, cons
   } while (onImmediate < n && p.callerTakesLateChunks && frame.Claim(onImmediate, kCaller));
   frame.chunkMs[0] = Ms(drawing, Clock::now());
   pool->Wait();
+  for (size_t t = 0; t < n; ++t) chunkBalance.Observe(uint32_t(n), uint32_t(t), frame.issued[t], frame.chunkMs[t]);
   // The workers' lists in draw-list order after the chunks drawn here, so the
   // image is the single-threaded one.
   for (size_t t = onImmediate; t < n; ++t)

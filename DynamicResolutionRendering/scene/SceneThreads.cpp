@@ -4,6 +4,7 @@
 #include <pthread.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace drr {
@@ -12,6 +13,31 @@ ChunkRange SplitEvenly(uint32_t draws, uint32_t chunks, uint32_t chunk) {
   if (chunks == 0) return {};
   const uint64_t n = draws;
   return {uint32_t(n * chunk / chunks), uint32_t(n * (chunk + 1) / chunks)};
+}
+
+ChunkRange ChunkBalance::Split(uint32_t draws, uint32_t chunks, uint32_t chunk) const {
+  if (chunks == 0 || chunk >= chunks) return {};
+  bool known = msPerDraw_.size() == chunks;
+  for (uint32_t t = 0; known && t < chunks; ++t) known = msPerDraw_[t] > 0.0;
+  if (!known) return SplitEvenly(draws, chunks, chunk);
+  // Speeds (draws per ms), each at least the fastest's / kMaxSpeedRatio;
+  // chunk boundaries where the running sum of speeds crosses draws' shares.
+  const double fastest = 1.0 / *std::min_element(msPerDraw_.begin(), msPerDraw_.end());
+  std::vector<double> upTo(chunks + 1, 0.0);  // sum of the speeds of threads [0, k)
+  for (uint32_t t = 0; t < chunks; ++t) upTo[t + 1] = upTo[t] + std::max(1.0 / msPerDraw_[t], fastest / kMaxSpeedRatio);
+  const auto boundary = [&](uint32_t k) {
+    if (k == chunks) return draws;
+    return std::min(draws, uint32_t(std::lround(double(draws) * upTo[k] / upTo[chunks])));
+  };
+  return {boundary(chunk), boundary(chunk + 1)};
+}
+
+void ChunkBalance::Observe(uint32_t chunks, uint32_t thread, uint32_t draws, double ms) {
+  if (msPerDraw_.size() != chunks) msPerDraw_.assign(chunks, 0.0);
+  if (thread >= chunks || draws < kMinDraws || !(ms > 0.0) || !std::isfinite(ms)) return;
+  const double sample = ms / double(draws);
+  double& estimate = msPerDraw_[thread];
+  estimate = estimate > 0.0 ? estimate + kLearningRate * (sample - estimate) : sample;
 }
 
 std::unique_ptr<RecordingPool> RecordingPool::Create(d3dl::Device* device, int threads, std::string* error) {

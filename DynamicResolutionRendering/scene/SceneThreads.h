@@ -27,6 +27,37 @@ struct ChunkRange {
 };
 ChunkRange SplitEvenly(uint32_t draws, uint32_t chunks, uint32_t chunk);
 
+// The split that gives every thread the same expected recording time. A
+// draw's cost differs between threads: the caller's immediate context records
+// straight into its frame, a worker's deferred context also tracks what its
+// list uses and ends with FinishCommandList. Each thread's time per draw is
+// learnt from the frames recorded so far (a running average), and chunk t
+// gets draws in proportion to thread t's speed. Before anything is known, or
+// for a thread count not seen yet, the split is even. Only where a chunk
+// starts moves: the chunks stay contiguous and in draw-list order, so the
+// image is the same whatever the split.
+class ChunkBalance {
+ public:
+  // [first, last) of chunk `chunk` of `draws` split over `chunks` threads.
+  ChunkRange Split(uint32_t draws, uint32_t chunks, uint32_t chunk) const;
+  // After a frame: thread `thread` of `chunks` recorded `draws` draws in `ms`
+  // milliseconds. Chunks of fewer than kMinDraws draws teach nothing (their
+  // time is mostly fixed costs), nor do non-positive or non-finite times.
+  void Observe(uint32_t chunks, uint32_t thread, uint32_t draws, double ms);
+  // Thread t's learnt time per draw, 0 while unknown.
+  double MsPerDraw(uint32_t thread) const { return thread < msPerDraw_.size() ? msPerDraw_[thread] : 0.0; }
+
+  static constexpr uint32_t kMinDraws = 32;
+  // Weight of a new frame in the running average.
+  static constexpr double kLearningRate = 0.25;
+  // No thread gets more than this many times another's share per draw, so
+  // one frame of a descheduled worker cannot starve it of draws for long.
+  static constexpr double kMaxSpeedRatio = 3.0;
+
+ private:
+  std::vector<double> msPerDraw_;  // per thread of the last thread count seen
+};
+
 class RecordingPool {
  public:
   // threads - 1 worker threads (threads >= 2), each with its deferred

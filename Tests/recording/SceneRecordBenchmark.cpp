@@ -137,10 +137,11 @@ class SceneFrame {
   }
   drr::SceneStats Stats() const { return scene_->Stats(); }
   void SetWorkersAlways(bool on) { params_.callerTakesLateChunks = !on; }
-  uint64_t Messages() const {
+  uint64_t Messages() const { return DeviceStats().ValidationMessages + g_messages; }
+  d3dl::DEVICE_STATS DeviceStats() const {
     d3dl::DEVICE_STATS stats;
     device_->GetStats(&stats);
-    return stats.ValidationMessages + g_messages;
+    return stats;
   }
 
  private:
@@ -303,6 +304,10 @@ int main(int argc, char** argv) {
     benchmark::RunSpecifiedBenchmarks();
     std::printf("draws per thread at %d threads: %s\n", threads, DrawsPerThread(g_frame->Stats()).c_str());
     PrintThreadTimes();
+    const d3dl::DEVICE_STATS ds = g_frame->DeviceStats();
+    std::printf("command pools reset %llu times, host memory started over %llu times\n",
+                static_cast<unsigned long long>(ds.CommandPoolResets),
+                static_cast<unsigned long long>(ds.CommandPoolRewinds));
     PrintPairs(pairs, threads);
     benchmark::Shutdown();
   }

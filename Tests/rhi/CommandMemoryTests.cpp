@@ -1,6 +1,7 @@
 // CPU unit tests of the backend's command-pool allocator (CommandMemory.h):
 // the VkAllocationCallbacks contract (alignment, reallocation keeping the
-// contents, size 0 and null pointers) and the reuse of freed blocks.
+// contents, size 0 and null pointers), the reuse of freed blocks, and the
+// rewind that starts a recording again at the beginning of its chunks.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -43,6 +44,59 @@ TEST(CommandMemory, FreedBlocksServeTheNextRecording) {
   record();
   EXPECT_EQ(m.allocations(), 2000u);
   EXPECT_EQ(m.reused(), 1000u) << "the second recording takes every block from the free lists";
+}
+
+// A pool's life as a driver that frees every command at reset lives it: its
+// own objects first, then recordings, each freed entirely by a reset.
+TEST(CommandMemory, RewoundRecordingsReuseTheSameAddressesInOrder) {
+  CommandMemory m;
+  void* poolObject = m.Allocate(200, 8);  // the command buffer's own state
+  std::memset(poolObject, 0, 200);
+  m.StartRecordings();
+  auto record = [&] {
+    std::vector<void*> blocks;
+    for (int i = 0; i < 3000; ++i) blocks.push_back(m.Allocate(16 + size_t(i % 7) * 24, 8));  // > one chunk
+    return blocks;
+  };
+  const std::vector<void*> first = record();
+  for (size_t i = 1; i < first.size(); ++i) ASSERT_NE(first[i], first[i - 1]);
+  for (void* p : first) m.Free(p);
+  EXPECT_TRUE(m.Rewind());
+  const std::vector<void*> second = record();
+  EXPECT_EQ(second, first) << "the same blocks in the same order: a linear arena";
+  for (void* p : second) std::memset(p, 0xCD, 16);
+  EXPECT_NE(*static_cast<uint8_t*>(poolObject), 0xCD) << "the pool's own block is not handed out";
+  for (void* p : second) m.Free(p);
+  EXPECT_TRUE(m.Rewind());
+  EXPECT_EQ(m.rewinds(), 2u);
+  m.Free(poolObject);
+}
+
+TEST(CommandMemory, ABlockAliveAfterTheResetStopsTheRewind) {
+  CommandMemory m;
+  m.StartRecordings();
+  void* kept = m.Allocate(64, 8);
+  std::memset(kept, 0x5A, 64);
+  std::vector<void*> blocks;
+  for (int i = 0; i < 100; ++i) blocks.push_back(m.Allocate(64, 8));
+  for (void* p : blocks) m.Free(p);
+  EXPECT_FALSE(m.Rewind()) << "one recording block is still alive";
+  // The next recording takes the freed blocks, never the live one.
+  for (int i = 0; i < 200; ++i) {
+    void* p = m.Allocate(64, 8);
+    ASSERT_NE(p, kept);
+    std::memset(p, 0, 64);
+  }
+  for (int i = 0; i < 64; ++i) ASSERT_EQ(static_cast<uint8_t*>(kept)[i], 0x5A) << "byte " << i;
+  EXPECT_EQ(m.rewinds(), 0u);
+  m.Free(kept);
+}
+
+TEST(CommandMemory, NoRewindBeforeRecordingsStart) {
+  CommandMemory m;
+  void* p = m.Allocate(32, 8);
+  m.Free(p);
+  EXPECT_FALSE(m.Rewind());
 }
 
 TEST(CommandMemory, ReallocationKeepsTheContents) {

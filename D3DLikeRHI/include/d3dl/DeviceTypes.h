@@ -126,6 +126,11 @@ struct DEVICE_STATS {
   UINT64 ObjectsDestroyed = 0;             // Vulkan handles actually destroyed
   UINT64 DeferredDestructionsPending = 0;  // handles waiting for a frame fence
   UINT64 LiveObjects = 0;                  // API objects (resources, views, states...) alive
+  // Command pools reset for reuse, and of those the ones whose host memory
+  // (the backend's allocator) started over from its beginning: every block
+  // the driver allocated while recording came back at the reset.
+  UINT64 CommandPoolResets = 0;
+  UINT64 CommandPoolRewinds = 0;
 };
 
 // ---- Deferred contexts (D3D11_DEVICE_CONTEXT_TYPE) -------------------------
