@@ -11,6 +11,10 @@ times and a verdict against that row's question:
   auto         the Arena, the automatic mode against 1 thread: not slower?
   arena2       the Arena, 2 threads against 1: do two threads pay (below 1)?
   props-N      N props, 2 threads against 1: do two threads pay (below 1)?
+A folder of before-R.txt and after-R.txt runs (scripts/compare-recording.sh:
+two builds side by side) gives instead one row per thread count: each build's
+median Scene::Render time and the paired after / before ratio (run R's pair i
+of one build with run R's pair i of the other) with its interval.
 A verdict is given only where the interval lies wholly on one side of the
 bound; otherwise "cannot decide". With --write DOC the table replaces the one
 between <!-- threads-tables:begin NAME --> and <!-- threads-tables:end NAME -->
@@ -35,7 +39,7 @@ def markers(data_dir):
     return f"<!-- threads-tables:begin {name} -->", f"<!-- threads-tables:end {name} -->"
 
 
-PAIR = re.compile(r"^pair \d+: 1 thread ([\d.]+) ms, \d+ threads ([\d.]+) ms \(medians\), ratio ([\d.]+)")
+PAIR = re.compile(r"^pair \d+: 1 thread ([\d.]+) ms, (\d+) threads ([\d.]+) ms \(medians\), ratio ([\d.]+)")
 CHUNK = re.compile(r"^(\d+) thread\(s\): chunk ms per thread \(medians\) ([\d. /]+);")
 DRAWS = re.compile(r"^draws per thread at \d+ threads: ([\d +]+)")
 
@@ -57,10 +61,13 @@ def median_interval(values):
 
 
 def parse(path):
-    run = {"ratios": [], "chunks": {}, "draws": ""}
+    run = {"ratios": [], "ms": {1: [], "N": []}, "threads": 0, "chunks": {}, "draws": ""}
     for line in open(path):
         if m := PAIR.match(line):
-            run["ratios"].append(float(m.group(3)))
+            run["ratios"].append(float(m.group(4)))
+            run["ms"][1].append(float(m.group(1)))
+            run["ms"]["N"].append(float(m.group(3)))
+            run["threads"] = int(m.group(2))
         elif m := CHUNK.match(line):
             run["chunks"][int(m.group(1))] = [float(x) for x in m.group(2).split("/")]
         elif m := DRAWS.match(line):
@@ -92,6 +99,31 @@ def chunk_text(runs, threads):
     return " / ".join(f"{st.median(c[k] for c in per):.2f}" for k in range(len(per[0])))
 
 
+def faster(lo, hi):
+    return "faster" if hi < 1.0 else "slower" if lo > 1.0 else "cannot decide"
+
+
+def comparison_table(groups):
+    """Two builds side by side: before-R and after-R runs, paired."""
+    before, after = groups["before"], groups["after"]
+    out = ["| `Scene::Render` | runs x pairs | before, median ms | after, median ms | "
+           "after / before: paired median [95 % interval] | verdict |",
+           "| --- | ---: | ---: | ---: | --- | --- |"]
+    threads = before[0]["threads"]
+    for key, label in ((1, "1 thread"), ("N", f"{threads} threads")):
+        b = [x for r in before for x in r["ms"][key]]
+        a = [x for r in after for x in r["ms"][key]]
+        paired = [y / x for rb, ra in zip(before, after) for x, y in zip(rb["ms"][key], ra["ms"][key])]
+        med, lo, hi = median_interval(paired)
+        out.append(f"| {label} | {min(len(before), len(after))} x {len(paired) // min(len(before), len(after))} | "
+                   f"{st.median(b):.2f} | {st.median(a):.2f} | **{med:.3f}** [{lo:.3f}, {hi:.3f}] | {faster(lo, hi)} |")
+    ratio = {side: median_interval([x for r in groups[side] for x in r["ratios"]]) for side in ("before", "after")}
+    out.append(f"| {threads} / 1 thread, each build's own pairs | | **{ratio['before'][0]:.3f}** "
+               f"[{ratio['before'][1]:.3f}, {ratio['before'][2]:.3f}] | **{ratio['after'][0]:.3f}** "
+               f"[{ratio['after'][1]:.3f}, {ratio['after'][2]:.3f}] | | |")
+    return "\n".join(out) + "\n"
+
+
 def tables(folder):
     groups = {}
     for path in sorted(glob.glob(os.path.join(folder, "*.txt"))):
@@ -99,6 +131,8 @@ def tables(folder):
         if name == os.path.basename(path).removesuffix(".txt"):
             continue  # not a run (load.txt)
         groups.setdefault(name, []).append(parse(path))
+    if "before" in groups and "after" in groups:
+        return comparison_table(groups)
     order = sorted(groups, key=lambda g: (g != "props", g != "auto", g != "arena2",
                                           int(g.split("-")[1]) if "-" in g else 0))
     out = ["| scene, comparison | draws per thread | runs x pairs | ratio: median [95 % interval] | runs' medians | "

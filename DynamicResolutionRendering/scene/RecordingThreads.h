@@ -13,11 +13,12 @@ constexpr int kMaxRecordingThreads = 8;   // --threads range 0..this
 // Automatic mode: a thread is added only when each thread gets at least this
 // many draws. Below it, waking a worker, its list's Finish and Execute cost
 // more than its share of the recording saves. Measured on the project's
-// 2-vCPU development guest with lavapipe, quiet (Docs/Threads.md, "The
-// immediate context's commands in its own memory"): 2 threads against 1 cost
-// 1.64 on the Arena's 59 draws, cannot be told from 1 thread with 102 draws
-// per thread (0.99) and pay 0.88 with 174, the fewest measured that paid;
-// 170 gives the 349 draws of that row two threads.
+// 2-vCPU development guest with lavapipe, quiet (Docs/Threads.md, "commands
+// at consecutive addresses, chunks by measured speed"): 2 threads against 1
+// cost 1.54 on the Arena's 59 draws, cannot be told from 1 thread with 102
+// draws per thread (0.97) and pay 0.90 with 175, the fewest measured that
+// paid (as in the section before it); 170 gives the 349 draws of that row
+// two threads.
 constexpr uint32_t kMinDrawsPerRecordingThread = 170;
 
 // The count SceneRenderParams::recordingThreads gets for the --threads value:
