@@ -71,7 +71,8 @@ class CommandMemory {
   void* AllocateLarge(size_t size, size_t alignment);
   bool NextChunk();
 
-  // Where the bump allocator stands: chunk index and bytes used in it.
+  // Where the bump allocator stands: how many chunks it has entered (the
+  // current one is chunks_[chunk - 1]) and the bytes used in the current one.
   struct Position {
     size_t chunk = 0;
     size_t used = kChunkBytes;  // no chunk yet: the first request takes one
