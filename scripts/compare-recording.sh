@@ -2,14 +2,15 @@
 # Two builds of drr_scene_record_bench side by side (Docs/Threads.md): RUNS
 # rounds, each a run of the BEFORE binary then one of the AFTER binary, every
 # run 10 alternating pairs of 1 thread and 2 threads on SCENE (default: the
-# many-object Arena of BUILD). Outputs before-R.txt and after-R.txt in OUT as
+# many-object Arena of ./build). Outputs before-R.txt and after-R.txt in OUT as
 # each run completes; scripts/threads-tables.py OUT pairs run R of one with
 # run R of the other, pair by pair.
 # Usage: scripts/compare-recording.sh BEFORE_BENCH AFTER_BENCH OUT [RUNS] [SCENE]
 set -euo pipefail
-[[ $# -ge 3 ]] || { sed -n '2,9p' "$0" >&2; exit 2; }
+[[ $# -ge 3 ]] || { sed -n '2,8p' "$0" >&2; exit 2; }
 before=$1 after=$2 out=$3 runs=${4:-4}
 scene=${5:-build/Media/ArenaProps/scene_description.txt}
+[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "compare-recording.sh: RUNS must be a positive integer, got '$runs'" >&2; exit 2; }
 for b in "$before" "$after"; do [[ -x "$b" ]] || { echo "compare-recording.sh: $b is not an executable" >&2; exit 2; }; done
 [[ -f "$scene" ]] || { echo "compare-recording.sh: no scene description $scene" >&2; exit 2; }
 mkdir -p "$out"
