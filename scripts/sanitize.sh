@@ -21,7 +21,7 @@ start=$(date +%s)
 # sanitizers' reports still name file and line. Assertions stay on.
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Sanitize \
   -DCMAKE_CXX_FLAGS_SANITIZE="-O1 -g1" -DCMAKE_C_FLAGS_SANITIZE="-O1 -g1" \
-  -DDRR_SANITIZE=ON -DDRR_WERROR=ON -DDRR_BUILD_TESTS=ON -DDRR_UNITY_BUILD=OFF -DDRR_FUZZ_SECONDS="${DRR_FUZZ_SECONDS:-30}" >/dev/null
+  -DDRR_SANITIZE=ON -DDRR_WERROR=ON -DDRR_BUILD_TESTS=ON -DDRR_UNITY_BUILD=OFF -DDRR_FUZZ_SECONDS="${DRR_FUZZ_SECONDS:-20}" >/dev/null
 cmake --build "$build" --parallel "$(nproc)"
 built=$(date +%s)
 export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=1:abort_on_error=1:strict_string_checks=1:verify_asan_link_order=0"
