@@ -75,8 +75,17 @@ def parse(path):
     return run
 
 
+def against_one(lo, hi, below, above):
+    """The verdict of a ratio's interval against 1: wholly below, wholly above, or neither."""
+    return below if hi < 1.0 else above if lo > 1.0 else "cannot decide"
+
+
 def pays(lo, hi):
-    return "two threads pay" if hi < 1.0 else "two threads cost" if lo > 1.0 else "cannot decide"
+    return against_one(lo, hi, "two threads pay", "two threads cost")
+
+
+def interval_text(med, lo, hi):
+    return f"**{med:.3f}** [{lo:.3f}, {hi:.3f}]"
 
 
 def question(name):
@@ -99,10 +108,6 @@ def chunk_text(runs, threads):
     return " / ".join(f"{st.median(c[k] for c in per):.2f}" for k in range(len(per[0])))
 
 
-def faster(lo, hi):
-    return "faster" if hi < 1.0 else "slower" if lo > 1.0 else "cannot decide"
-
-
 def comparison_table(groups):
     """Two builds side by side: before-R and after-R runs, paired."""
     before, after = groups["before"], groups["after"]
@@ -110,17 +115,17 @@ def comparison_table(groups):
            "after / before: paired median [95 % interval] | verdict |",
            "| --- | ---: | ---: | ---: | --- | --- |"]
     threads = before[0]["threads"]
+    runs = min(len(before), len(after))
     for key, label in ((1, "1 thread"), ("N", f"{threads} threads")):
         b = [x for r in before for x in r["ms"][key]]
         a = [x for r in after for x in r["ms"][key]]
         paired = [y / x for rb, ra in zip(before, after) for x, y in zip(rb["ms"][key], ra["ms"][key])]
         med, lo, hi = median_interval(paired)
-        out.append(f"| {label} | {min(len(before), len(after))} x {len(paired) // min(len(before), len(after))} | "
-                   f"{st.median(b):.2f} | {st.median(a):.2f} | **{med:.3f}** [{lo:.3f}, {hi:.3f}] | {faster(lo, hi)} |")
-    ratio = {side: median_interval([x for r in groups[side] for x in r["ratios"]]) for side in ("before", "after")}
-    out.append(f"| {threads} / 1 thread, each build's own pairs | | **{ratio['before'][0]:.3f}** "
-               f"[{ratio['before'][1]:.3f}, {ratio['before'][2]:.3f}] | **{ratio['after'][0]:.3f}** "
-               f"[{ratio['after'][1]:.3f}, {ratio['after'][2]:.3f}] | | |")
+        out.append(f"| {label} | {runs} x {len(paired) // runs} | {st.median(b):.2f} | {st.median(a):.2f} | "
+                   f"{interval_text(med, lo, hi)} | {against_one(lo, hi, 'faster', 'slower')} |")
+    own = {side: interval_text(*median_interval([x for r in groups[side] for x in r["ratios"]]))
+           for side in ("before", "after")}
+    out.append(f"| {threads} / 1 thread, each build's own pairs | | {own['before']} | {own['after']} | | |")
     return "\n".join(out) + "\n"
 
 
@@ -148,7 +153,7 @@ def tables(folder):
         run_medians = ", ".join(f"{st.median(r['ratios']):.3f}" for r in runs)
         many = max((t for r in runs for t in r["chunks"] if t != 1), default=None)
         out.append(f"| {label} | {runs[0]['draws'] or '-'} | {len(runs)} x {len(ratios) // len(runs)} | "
-                   f"**{med:.3f}** [{lo:.3f}, {hi:.3f}] | {run_medians} | {chunk_text(runs, 1)} | "
+                   f"{interval_text(med, lo, hi)} | {run_medians} | {chunk_text(runs, 1)} | "
                    f"{chunk_text(runs, many) if many is not None else '-'} | {verdict(lo, hi)} |")
     return "\n".join(out) + "\n"
 
