@@ -99,6 +99,22 @@ struct ListRecording {
 
   uint64_t draws = 0;  // added to DEVICE_STATS::DrawCalls at each execution
 
+  // Textures read again exactly as their last read in this list
+  // (DeferredContext::UseTexture): such a read changes none of their entries
+  // and records no barrier, so it is skipped. A read only adds stages to what
+  // an entry has made visible, so only a write or a layout change can undo
+  // that; either bumps `readEpoch`, which voids every remembered read. A
+  // direct-mapped table keyed by the image's first subresource state.
+  struct RepeatedRead {
+    const SyncState* sync = nullptr;
+    uint64_t epoch = 0;
+    SubresourceRange range;
+    Usage usage{};
+  };
+  static constexpr uint32_t kRepeatedReadBits = 6;
+  RepeatedRead repeatedReads[1u << kRepeatedReadBits];
+  uint64_t readEpoch = 1;  // raised at each reset too: a recycled list remembers nothing
+
   // Single-entry cache of `slices` (one constant buffer per draw is common);
   // the node stays put until `slices` is cleared.
   const BufferImpl* lastBuffer = nullptr;

@@ -23,6 +23,19 @@ SyncState StateAfterEntry(const Usage& u) {
   s.readStages = u.write ? 0 : u.stages;
   return s;
 }
+
+uint32_t RepeatedReadSlot(const SyncState* sync) {
+  const uint64_t h = (reinterpret_cast<uintptr_t>(sync) >> 4) * 0x9E3779B97F4A7C15ull;
+  return static_cast<uint32_t>(h >> (64 - ListRecording::kRepeatedReadBits));
+}
+
+bool IsRepeatedRead(const ListRecording::RepeatedRead& last, uint64_t epoch, const SyncState* sync,
+                    const SubresourceRange& r, const Usage& u) {
+  return last.epoch == epoch && last.sync == sync && last.range.baseMip == r.baseMip &&
+         last.range.mips == r.mips && last.range.baseLayer == r.baseLayer && last.range.layers == r.layers &&
+         last.usage.stages == u.stages && last.usage.access == u.access && last.usage.layout == u.layout &&
+         !last.usage.write;
+}
 }  // namespace
 
 // ---------------------------------------------------------------------------
@@ -171,23 +184,32 @@ uint32_t DeferredContext::ListImageEntries(TextureCore* t, TextureImage& img) {
 }
 
 void DeferredContext::UseTexture(TextureCore* t, const SubresourceRange& r, const Usage& u) {
+  if (u.layout != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) dirty_ |= kSrvLayouts;
   TextureImage& img = t->Cur();
+  ListRecording& rec = *rec_;
+  ListRecording::RepeatedRead& last = rec.repeatedReads[RepeatedReadSlot(img.sync.data())];
+  if (!u.write && IsRepeatedRead(last, rec.readEpoch, img.sync.data(), r, u)) return;
   const uint32_t mipCount = t->desc.MipLevels;
   const uint32_t base = ListImageEntries(t, img);
+  bool undoesReads = u.write;
   for (uint32_t l = r.baseLayer; l < r.baseLayer + r.layers; ++l) {
     for (uint32_t m = r.baseMip; m < r.baseMip + r.mips; ++m) {
-      ListSyncEntry& e = rec_->syncs[base + l * mipCount + m];
+      ListSyncEntry& e = rec.syncs[base + l * mipCount + m];
       if (!e.used) {  // the immediate context records this barrier at execution
         e.used = true;
         e.entry = u;
         e.initial = e.local = StateAfterEntry(u);
         continue;
       }
+      undoesReads |= e.local.layout != u.layout && u.layout != VK_IMAGE_LAYOUT_UNDEFINED;
       BarrierInfo info;
       if (Transition(e.local, u, &info)) barriers_.AddImage(img.image, t->aspect, m, l, info);
     }
   }
-  if (u.layout != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) dirty_ |= kSrvLayouts;
+  if (undoesReads)
+    ++rec.readEpoch;
+  else if (!u.write)
+    last = {img.sync.data(), rec.readEpoch, r, u};
 }
 
 void DeferredContext::UseBuffer(VkBuffer buf, SyncState& s, const Usage& u) {

@@ -86,6 +86,7 @@ void ListRecycler::Reset(ListRecording& rec) {
   rec.retained.Clear();
   rec.held.clear();
   rec.draws = 0;
+  ++rec.readEpoch;
   rec.lastBuffer = nullptr;
   rec.lastEntry = nullptr;
 }

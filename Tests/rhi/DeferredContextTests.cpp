@@ -352,6 +352,47 @@ TEST_F(RhiDeferred, TextureRenderedByOneListIsSampledByTheNext) {
   EXPECT_EQ(img.RGBA8(60, 60)[1], 255);
 }
 
+// One list samples a texture, samples it again the same way (a read the list
+// skips: nothing would change), renders into it and samples it once more: the
+// write must void the skipped read, or the last draw samples a texture still
+// in the attachment layout without a barrier (a validation error) and misses
+// the second batch of quads.
+TEST_F(RhiDeferred, ATextureRenderedAfterARepeatedReadIsSampledAfresh) {
+  auto tex = MakeRenderTarget(kW, kH);
+  auto other = MakeRenderTarget(kW, kH);
+  auto out = MakeRenderTarget(kW, kH);
+  const std::vector<Quad> first = MakeQuads(11, 12), second = MakeQuads(12, 12);
+  auto sampleVs = LoadVertexShader("rhi_fullscreen_vs.spv");
+  auto samplePs = LoadPixelShader("rhi_sample_ps.spv");
+  auto point = MakeSampler(FILTER_MIN_MAG_MIP_POINT);
+  const float params[4] = {1, 1, 0, 0};
+  auto paramsCb = MakeCB(16, USAGE_DEFAULT, params);
+  auto ctx = MakeDeferred();
+  const auto sampleInto = [&](ShaderResourceView* view) {
+    ctx->OMSetRenderTargets(1, out.rtv.GetAddressOf(), nullptr);
+    ctx->VSSetShader(sampleVs.Get());
+    ctx->PSSetShader(samplePs.Get());
+    ctx->PSSetShaderResources(0, 1, &view);
+    ctx->PSSetSamplers(0, 1, point.GetAddressOf());
+    ctx->PSSetConstantBuffers(0, 1, paramsCb.GetAddressOf());
+    ctx->Draw(3, 0);
+  };
+  ctx->ClearRenderTargetView(tex.rtv.Get(), kBlack);
+  ctx->ClearRenderTargetView(other.rtv.Get(), kBlack);
+  EXPECT_EQ(RecordQuads(ctx.Get(), tex.rtv.Get(), first), 0);
+  sampleInto(tex.srv.Get());    // into the read layout
+  sampleInto(other.srv.Get());  // another texture, so that the next bind is a new read
+  sampleInto(tex.srv.Get());    // the same read again: skipped
+  EXPECT_EQ(RecordQuads(ctx.Get(), tex.rtv.Get(), second), 0);
+  sampleInto(tex.srv.Get());    // after the write: must be read afresh
+  auto list = Finish(ctx.Get());
+  ASSERT_TRUE(list);
+  context()->ExecuteCommandList(list.Get(), 0);
+  std::vector<Quad> both = first;
+  both.insert(both.end(), second.begin(), second.end());
+  EXPECT_EQ(CountDifferences(ReadBack(out.texture.Get()), Rasterise(both), 1, "sampled after the write"), 0);
+}
+
 // The SRV/render-target hazard rule is per context: a texture bound as a
 // target on a deferred context stays bindable as an SRV elsewhere.
 TEST_F(RhiDeferred, HazardRuleIsPerContext) {
