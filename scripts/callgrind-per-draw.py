@@ -45,8 +45,9 @@ def main():
         annotated = subprocess.run(['callgrind_annotate', '--inclusive=yes', path],
                                    capture_output=True, text=True, check=True).stdout.splitlines()
         for name in functions:
-            line = next((l for l in annotated if name in l and '=>' not in l), None)
-            count = int(line.split()[0].replace(',', '')) if line else 0
+            counted = (re.match(r'\s*([\d,]+) ', l) for l in annotated if name in l and '=>' not in l)
+            first = next((m for m in counted if m), None)
+            count = int(first.group(1).replace(',', '')) if first else 0
             print(f'  {name}: {count / draws:.0f} per draw (inclusive)')
 
 
