@@ -9,8 +9,9 @@
 # which reaches the same passes under the sanitizers without redoing the
 # image comparisons, and so do the scene suite's three whole-Arena image tests
 # (NOT_SANITIZED in Tests/scene/CMakeLists.txt). The test suites' own sources
-# are built at -O0 here (Tests/CMakeLists.txt), and the RHI and the sample one
-# unit per file (DRR_UNITY_BUILD=OFF), so every file also compiles on its own.
+# are built at -O0 here (Tests/CMakeLists.txt), and everything one unit per
+# file (DRR_UNITY_BUILD=OFF; the test job combines files), so every file also
+# compiles on its own.
 # Driver and layer leaks are suppressed by library name only
 # (Tests/sanitizers/lsan.supp). Prints the time each phase took.
 set -euo pipefail
