@@ -31,10 +31,7 @@ uint32_t RepeatedReadSlot(const SyncState* sync) {
 
 bool IsRepeatedRead(const ListRecording::RepeatedRead& last, uint64_t epoch, const SyncState* sync,
                     const SubresourceRange& r, const Usage& u) {
-  return last.epoch == epoch && last.sync == sync && last.range.baseMip == r.baseMip &&
-         last.range.mips == r.mips && last.range.baseLayer == r.baseLayer && last.range.layers == r.layers &&
-         last.usage.stages == u.stages && last.usage.access == u.access && last.usage.layout == u.layout &&
-         !last.usage.write;
+  return last.epoch == epoch && last.sync == sync && last.range == r && last.usage == u;
 }
 }  // namespace
 

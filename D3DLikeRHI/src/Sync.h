@@ -23,6 +23,7 @@ struct Usage {
   VkAccessFlags2 access;
   VkImageLayout layout;
   bool write;
+  bool operator==(const Usage&) const = default;
 };
 
 namespace usage {
@@ -110,6 +111,7 @@ TransferInit TransferInitBarriers(VkPipelineStageFlags2 transferStage, VkAccessF
 // Mips and array layers of a texture that one use touches.
 struct SubresourceRange {
   uint32_t baseMip = 0, mips = 1, baseLayer = 0, layers = 1;
+  bool operator==(const SubresourceRange&) const = default;
 };
 inline SubresourceRange OneSubresource(uint32_t mip, uint32_t layer) { return {mip, 1, layer, 1}; }
 
