@@ -12,8 +12,9 @@
 # aborts. The sanitizer job now keeps the tracer out of the threads' dynamic
 # TLS (intercept_tls_get_addr=0 in scripts/sanitize.sh), which removed the
 # crash in the runs measured there; this stays as the fallback. Such a run is
-# run again, its output first (to stderr, with a line saying so). A leak, any other sanitizer report, any other failure, or a
-# third failure is passed on unchanged: output and exit code.
+# run again, its output first (to stderr, with a line saying so). A leak, any
+# other sanitizer report, any other failure, or a third failure is passed on
+# unchanged: output and exit code.
 set -u
 out=$(mktemp) err=$(mktemp)
 trap 'rm -f "$out" "$err"' EXIT

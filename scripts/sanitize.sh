@@ -29,9 +29,10 @@ built=$(date +%s)
 # threads' dynamic TLS (the driver's and LLVM's threads create it). Without it
 # the tracer crashed now and then ("Tracer caught signal 11", no leak check
 # run): the TAAU mode under validation with both cores busy crashed in 14 of
-# 30 runs without it and in 0 of 30 with it. Blocks reachable only from dynamic TLS would be
-# reported as leaks rather than hidden, and sanitizers.planted_leak_is_reported
-# checks that a real leak is still reported with these options.
+# 30 runs without it and in 0 of 30 with it. Blocks reachable only from
+# dynamic TLS would be reported as leaks rather than hidden, and
+# sanitizers.planted_leak_is_reported checks that a real leak is still
+# reported with these options.
 export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=1:abort_on_error=1:strict_string_checks=1:verify_asan_link_order=0:intercept_tls_get_addr=0"
 # Keeps the driver and layers mapped until LSan runs, so its frames have a library name.
 export LD_PRELOAD="$build/Tests/sanitizers/libdrr_keep_loaded.so"
