@@ -341,6 +341,7 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   VkPipeline pipeline_ = VK_NULL_HANDLE;
   PipelineKey key_{};      // the bound pipeline's
   PipelineKey nextKey_{};  // built by BindPipeline, compared with key_
+  PipelineCacheFront pipelineFront_;  // this context's memo of the shared cache
   int labelDepth_ = 0;
   uint32_t errorsLogged_ = 0;  // bits of OnceError
 

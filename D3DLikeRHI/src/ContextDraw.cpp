@@ -162,7 +162,7 @@ void ContextImpl::UseDrawResources(bool indexed) {
 bool ContextImpl::CommitSlow(bool indexed) {
   if (!CheckDrawState(indexed)) return false;
   if (dirty_ & kProgram) {
-    program_ = dev_->pipelines().GetProgram(BoundShaders());
+    program_ = pipelineFront_.GetProgram(dev_->pipelines(), BoundShaders());
     if (!program_) return ErrorOnce(OnceError::ProgramLayoutFailed), false;
     dirty_ |= kDescriptors | kConstants;
   }
@@ -204,7 +204,7 @@ bool ContextImpl::BindPipeline(VkCommandBuffer cmd) {
   k.samples = TargetSamples();
   k.sampleMask = k.samples >= 32 ? om.sampleMask : om.sampleMask & ((1u << k.samples) - 1);
   if (pipeline_ && k == key_) return true;
-  VkPipeline p = dev_->pipelines().GetPipeline(k, in, program_);
+  VkPipeline p = pipelineFront_.GetPipeline(dev_->pipelines(), k, in, program_);
   if (!p) return ErrorOnce(OnceError::PipelineFailed), false;
   key_ = k;
   if (p != pipeline_) {

@@ -315,4 +315,22 @@ void PipelineCache::Destroy() {
   computePrograms_.clear();
 }
 
+ProgramLayout* PipelineCacheFront::GetProgram(PipelineCache& cache, const PerStage<ShaderBase*>& shaders) {
+  const ShaderIds key = IdsOf(shaders);
+  auto& e = programs_.At(WordHash{}(key));
+  if (e.value && e.key == key) return e.value;
+  ProgramLayout* p = cache.GetProgram(shaders);
+  if (p) e = {key, p};
+  return p;
+}
+
+VkPipeline PipelineCacheFront::GetPipeline(PipelineCache& cache, const PipelineKey& key, const PipelineInputs& in,
+                                           ProgramLayout* prog) {
+  auto& e = pipelines_.At(WordHash{}(key));
+  if (e.value && e.key == key) return e.value;
+  VkPipeline p = cache.GetPipeline(key, in, prog);
+  if (p) e = {key, p};
+  return p;
+}
+
 }  // namespace d3dl::impl

@@ -109,4 +109,31 @@ class PipelineCache {
   std::mutex mutex_;
 };
 
+// One context's memo in front of the shared cache. The shared cache takes a
+// mutex on every lookup; with two recording threads that mutex's cache line
+// moves between the cores at each draw that changes its program or pipeline
+// (Docs/Threads.md measures it). A context asks its own memo first: a
+// direct-mapped table it alone reads and writes, filled from the shared cache
+// on a miss. It can never return a destroyed object: every key is made of
+// object uids, which are never reused, and the shared cache destroys a
+// pipeline or layout only with a shader whose uid is then in no live key.
+class PipelineCacheFront {
+ public:
+  ProgramLayout* GetProgram(PipelineCache& cache, const PerStage<ShaderBase*>& shaders);
+  VkPipeline GetPipeline(PipelineCache& cache, const PipelineKey& key, const PipelineInputs& in, ProgramLayout* prog);
+
+ private:
+  template <class Key, class Value, size_t N>
+  struct DirectMapped {
+    struct Entry {
+      Key key{};
+      Value value{};
+    };
+    Entry entries[N];  // a null value marks an empty entry
+    Entry& At(size_t hash) { return entries[hash % N]; }
+  };
+  DirectMapped<ShaderIds, ProgramLayout*, 32> programs_;
+  DirectMapped<PipelineKey, VkPipeline, 64> pipelines_;
+};
+
 }  // namespace d3dl::impl

@@ -88,6 +88,12 @@ struct SceneRenderParams {
   // The caller's thread, done with its chunk, draws the next chunks itself
   // while their workers have not started (false: always the workers; tests).
   bool callerTakesLateChunks = true;
+  // Measurement (drr_scene_record_bench --contention): chunks of equal draw
+  // counts instead of by measured speed, and the caller drawing its chunk only
+  // after the workers have finished theirs, so that every chunk is recorded
+  // with no other recording beside it. The image does not change.
+  bool evenChunks = false;
+  bool callerDrawsAfterWorkers = false;
 };
 
 // The original's lighting constants (its RenderScene values): LIT entries'

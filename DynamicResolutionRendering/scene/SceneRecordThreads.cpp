@@ -63,7 +63,9 @@ bool SceneImpl::RecordThreaded(d3dl::DeviceContext* immediate, int threads, cons
   const size_t n = size_t(threads);
   ChunkedFrame frame(n);
   const auto chunk = [&](size_t t) {
-    const ChunkRange r = chunkBalance.Split(uint32_t(drawList.size()), uint32_t(n), uint32_t(t));
+    const uint32_t draws = uint32_t(drawList.size());
+    const ChunkRange r = p.evenChunks ? SplitEvenly(draws, uint32_t(n), uint32_t(t))
+                                      : chunkBalance.Split(draws, uint32_t(n), uint32_t(t));
     return std::pair(drawList.data() + r.first, drawList.data() + r.last);
   };
   const std::function<void(int)> worker = [&](int thread) {
@@ -84,6 +86,7 @@ bool SceneImpl::RecordThreaded(d3dl::DeviceContext* immediate, int threads, cons
   frame.planned.store(true, std::memory_order_release);
   frame.planned.notify_all();
   BeginDraws(immediate, f, false);
+  if (p.callerDrawsAfterWorkers) pool->Wait();
   const Clock::time_point drawing = Clock::now();
   size_t onImmediate = 0;  // chunks [0, onImmediate) drawn here
   do {

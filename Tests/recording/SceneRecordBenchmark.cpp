@@ -10,10 +10,14 @@
 // --no-take-over: every chunk on its worker, however late the worker starts.
 //   drr_scene_record_bench --smoke [--scene PATH]   1, 2 and 3 threads give the same
 //                                                  image, validation-clean
+//   drr_scene_record_bench --contention [--scene PATH] [--threads N] [--pairs K] [--frames F]
+//                          each chunk's time beside the other threads over its time alone
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <map>
@@ -137,6 +141,10 @@ class SceneFrame {
   }
   drr::SceneStats Stats() const { return scene_->Stats(); }
   void SetWorkersAlways(bool on) { params_.callerTakesLateChunks = !on; }
+  void SetChunkTiming(bool evenChunks, bool callerAfterWorkers) {
+    params_.evenChunks = evenChunks;
+    params_.callerDrawsAfterWorkers = callerAfterWorkers;
+  }
   uint64_t Messages() const { return DeviceStats().ValidationMessages + g_messages; }
   d3dl::DEVICE_STATS DeviceStats() const {
     d3dl::DEVICE_STATS stats;
@@ -254,17 +262,71 @@ void PrintPairs(int pairs, int threads) {
               threads, ratios.size(), std::thread::hardware_concurrency(), Median(ratios), *lo, *hi);
 }
 
+// Median of `v` and its distribution-free 95 % interval (the order statistics
+// n/2 -+ 0.98 sqrt(n), 1-based, clamped).
+std::array<double, 3> MedianInterval(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const double n = double(v.size()), half = 0.98 * std::sqrt(n);
+  const auto at = [&](double rank) { return v[size_t(std::clamp(rank, 1.0, n)) - 1]; };
+  return {Median(v), at(std::floor(n / 2 - half)), at(std::ceil(n / 2 + 1 + half))};
+}
+
+// --contention: what the recording threads cost each other. Frames come in
+// pairs with equal chunks: in one the caller records its chunk after the
+// workers have finished theirs (every chunk alone), in the other beside them
+// (the normal frame); which comes first alternates. Per chunk, the ratio of
+// its time beside the others to its time alone, over the pairs: above 1 is
+// the cost of sharing (cache lines written by both threads, locks), on the
+// same draws, and slow phases of the machine hit both frames of a pair.
+int Contention(int threads, int pairs, int frames) {
+  const size_t n = size_t(threads);
+  std::vector<std::vector<double>> ratios(n), alone(n);
+  int skipped = 0;
+  for (int i = 0; i < pairs * frames; ++i) {
+    std::vector<double> ms[2];  // [0] alone, [1] beside the others
+    bool usable = true;
+    for (int k = 0; k < 2; ++k) {
+      const int together = (i % 2) ^ k;
+      g_frame->SetChunkTiming(true, together == 0);
+      g_frame->Render(threads);
+      const drr::SceneStats st = g_frame->Stats();
+      usable = usable && st.callerChunks == 1 && st.chunkMs.size() == n;
+      ms[together] = st.chunkMs;
+      g_frame->Finish();
+    }
+    if (!usable) {
+      ++skipped;
+      continue;
+    }
+    for (size_t t = 0; t < n; ++t) {
+      ratios[t].push_back(ms[1][t] / ms[0][t]);
+      alone[t].push_back(ms[0][t]);
+    }
+  }
+  g_frame->SetChunkTiming(false, false);
+  std::printf("chunk times beside the other threads / alone, %d threads, equal chunks (%s draws), %zu frame pairs "
+              "(%d skipped: the caller took a late chunk)\n",
+              threads, DrawsPerThread(g_frame->Stats()).c_str(), ratios[0].size(), skipped);
+  for (size_t t = 0; t < n && !ratios[t].empty(); ++t) {
+    const auto [median, lo, hi] = MedianInterval(ratios[t]);
+    std::printf("chunk %zu (%s): alone %.3f ms (median); beside / alone median %.3f [%.3f, %.3f]\n", t,
+                t == 0 ? "caller, immediate context" : "worker, deferred context", Median(alone[t]), median, lo, hi);
+  }
+  return ratios[0].empty() ? 1 : 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string scene = DRR_ARENA_LARGE_DIR "/scene_description.txt";
   int threads = 2, pairs = 10, frames = 30;
   uint32_t w = 320, h = 180;
-  bool smoke = false, takeOver = true;
+  bool smoke = false, takeOver = true, contention = false;
   std::vector<char*> args{argv[0]};
   for (int i = 1; i < argc; ++i) {
     const auto value = [&] { return i + 1 < argc ? argv[++i] : (char*)""; };
     if (std::strcmp(argv[i], "--smoke") == 0) smoke = true;
+    else if (std::strcmp(argv[i], "--contention") == 0) contention = true;
     else if (std::strcmp(argv[i], "--no-take-over") == 0) takeOver = false;
     else if (std::strcmp(argv[i], "--scene") == 0) scene = value();
     else if (std::strcmp(argv[i], "--threads") == 0) threads = std::atoi(value());
@@ -289,6 +351,8 @@ int main(int argc, char** argv) {
   int rc = 0;
   if (smoke) {
     rc = Smoke();
+  } else if (contention) {
+    rc = Contention(threads < 2 ? 2 : threads, pairs, frames);
   } else {
     for (int k = 0; k < pairs; ++k) {
       const std::string suffix = "/pair:" + std::to_string(k);
