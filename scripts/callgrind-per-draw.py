@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""callgrind-per-draw.py FILE [FUNCTION...]
+"""callgrind-per-draw.py FILE [FUNCTION...] [calls:REGEX...]
 
 Instructions per draw in one thread's callgrind output, written by
 `valgrind --tool=callgrind --separate-threads=yes
@@ -7,14 +7,17 @@ Instructions per draw in one thread's callgrind output, written by
 drr_scene_record_bench (Docs/Threads.md): the file's total (everything inside
 RecordDraws on that thread) and each FUNCTION's inclusive count (from
 callgrind_annotate --inclusive=yes, first line naming it), divided by the
-calls of ContextImpl::DrawIndexed the file records.
+calls of ContextImpl::DrawIndexed the file records. A calls:REGEX argument
+prints instead the calls per draw of the functions whose names match REGEX
+(calls:pthread_mutex_lock: the locks taken per draw).
 """
 import re
 import subprocess
 import sys
 
 
-def draw_calls(path):
+def draw_calls(path, pattern=r'ContextImpl::DrawIndexed\b'):
+    """Calls recorded in the file of the functions whose names match pattern."""
     names, current, total = {}, None, 0
     with open(path) as f:
         for line in f:
@@ -25,7 +28,7 @@ def draw_calls(path):
                 current = names.get(m.group(2), '') if m.group(1) == 'cfn' else None
                 continue
             if line.startswith('calls=') and current is not None:
-                if re.search(r'ContextImpl::DrawIndexed\b', current):
+                if re.search(pattern, current):
                     total += int(line.split('=')[1].split()[0])
                 current = None
     return total
@@ -34,13 +37,17 @@ def draw_calls(path):
 def main():
     if len(sys.argv) < 2:
         sys.exit(__doc__)
-    path, functions = sys.argv[1], sys.argv[2:]
+    path = sys.argv[1]
+    functions = [a for a in sys.argv[2:] if not a.startswith('calls:')]
+    callees = [a.removeprefix('calls:') for a in sys.argv[2:] if a.startswith('calls:')]
     with open(path) as f:
         m = re.search(r'^totals: (\d+)', f.read(), re.M)
     draws = draw_calls(path)
     if not m or draws == 0:
         sys.exit(f'{path}: no totals line or no DrawIndexed calls')
     print(f'{path}: {draws} draws, {int(m.group(1)) / draws:.0f} instructions per draw in RecordDraws')
+    for pattern in callees:
+        print(f'  calls of {pattern}: {draw_calls(path, pattern) / draws:.3f} per draw')
     if functions:
         annotated = subprocess.run(['callgrind_annotate', '--inclusive=yes', path],
                                    capture_output=True, text=True, check=True).stdout.splitlines()

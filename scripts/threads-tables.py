@@ -14,7 +14,11 @@ times and a verdict against that row's question:
 A folder of before-R.txt and after-R.txt runs (scripts/compare-recording.sh:
 two builds side by side) gives instead one row per thread count: each build's
 median Scene::Render time and the paired after / before ratio (run R's pair i
-of one build with run R's pair i of the other) with its interval.
+of one build with run R's pair i of the other) with its interval; with
+contention-before-R.txt and contention-after-R.txt (the benchmark's
+--contention runs) a second table: per chunk, each build's ratio of the
+chunk's time beside the other thread to its time alone, and after / before
+paired the same way.
 A verdict is given only where the interval lies wholly on one side of the
 bound; otherwise "cannot decide". With --write DOC the table replaces the one
 between <!-- threads-tables:begin NAME --> and <!-- threads-tables:end NAME -->
@@ -42,6 +46,8 @@ def markers(data_dir):
 PAIR = re.compile(r"^pair \d+: 1 thread ([\d.]+) ms, (\d+) threads ([\d.]+) ms \(medians\), ratio ([\d.]+)")
 CHUNK = re.compile(r"^(\d+) thread\(s\): chunk ms per thread \(medians\) ([\d. /]+);")
 DRAWS = re.compile(r"^draws per thread at \d+ threads: ([\d +]+)")
+CONTENTION = re.compile(r"^chunk (\d+) ratios:((?: [\d.]+)*)$")
+ALONE = re.compile(r"^chunk (\d+) \(([^)]*)\): alone ([\d.]+) ms")
 
 
 def median_interval(values):
@@ -72,6 +78,17 @@ def parse(path):
             run["chunks"][int(m.group(1))] = [float(x) for x in m.group(2).split("/")]
         elif m := DRAWS.match(line):
             run["draws"] = m.group(1).strip()
+    return run
+
+
+def parse_contention(path):
+    """Per chunk: every frame pair's beside / alone ratio, the chunk's label and its median time alone."""
+    run = {}
+    for line in open(path):
+        if m := CONTENTION.match(line.rstrip("\n")):
+            run.setdefault(int(m.group(1)), {})["ratios"] = [float(x) for x in m.group(2).split()]
+        elif m := ALONE.match(line):
+            run.setdefault(int(m.group(1)), {}).update(label=m.group(2), alone=float(m.group(3)))
     return run
 
 
@@ -129,6 +146,30 @@ def comparison_table(groups):
     return "\n".join(out) + "\n"
 
 
+def contention_table(folder):
+    """The --contention runs of two builds: per chunk, beside / alone for each, and after / before paired."""
+    runs = {side: [parse_contention(p) for p in sorted(glob.glob(os.path.join(folder, f"contention-{side}-*.txt")))]
+            for side in ("before", "after")}
+    for side in runs:  # a run still being written has no ratios yet
+        runs[side] = [r for r in runs[side] if r and all("ratios" in c for c in r.values())]
+    if not runs["before"] or not runs["after"]:
+        return ""
+    out = ["| chunk | frame pairs | alone, median ms (before / after) | before: beside / alone | "
+           "after: beside / alone | after / before, paired | verdict |",
+           "| --- | ---: | ---: | --- | --- | --- | --- |"]
+    for chunk in sorted(runs["before"][0]):
+        own = {side: [x for r in runs[side] for x in r[chunk]["ratios"]] for side in runs}
+        alone = {side: st.median(r[chunk]["alone"] for r in runs[side]) for side in runs}
+        paired = [a / b for rb, ra in zip(runs["before"], runs["after"])
+                  for b, a in zip(rb[chunk]["ratios"], ra[chunk]["ratios"])]
+        med, lo, hi = median_interval(paired)
+        out.append(f"| {chunk} ({runs['before'][0][chunk]['label']}) | {len(own['before'])} / {len(own['after'])} | "
+                   f"{alone['before']:.2f} / {alone['after']:.2f} | {interval_text(*median_interval(own['before']))} | "
+                   f"{interval_text(*median_interval(own['after']))} | {interval_text(med, lo, hi)} | "
+                   f"{against_one(lo, hi, 'less sharing', 'more sharing')} |")
+    return "\n".join(out) + "\n"
+
+
 def tables(folder):
     groups = {}
     for path in sorted(glob.glob(os.path.join(folder, "*.txt"))):
@@ -137,7 +178,8 @@ def tables(folder):
             continue  # not a run (load.txt)
         groups.setdefault(name, []).append(parse(path))
     if "before" in groups and "after" in groups:
-        return comparison_table(groups)
+        contention = contention_table(folder)
+        return comparison_table(groups) + ("\n" + contention if contention else "")
     order = sorted(groups, key=lambda g: (g != "props", g != "auto", g != "arena2",
                                           int(g.split("-")[1]) if "-" in g else 0))
     out = ["| scene, comparison | draws per thread | runs x pairs | ratio: median [95 % interval] | runs' medians | "

@@ -6,6 +6,9 @@
 // (created on the calling thread before the split).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdio>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "RenderTest.h"
@@ -27,6 +30,9 @@ class SceneThreads : public drrtest::RenderTest {
   };
   // The port's other scene paths, recorded on the lists the same way.
   enum class Path { Forward, Tessellated, GBuffer };
+  // drr_scene_record_bench --contention's frames: equal chunks, the caller's
+  // drawn after the workers'.
+  bool measurementSplit_ = false;
 
   // Six frames of the cinematic camera on `threads`, from a reset matrix
   // history: three with TAA's sampler, three with TAAU's; the third of each
@@ -57,6 +63,7 @@ class SceneThreads : public drrtest::RenderTest {
       p.recordingThreads = threads;
       p.viewport = d3dl::VIEWPORT{0, 0, float(kW), float(kH), 0, 1};
       p.callerTakesLateChunks = false;
+      p.evenChunks = p.callerDrawsAfterWorkers = measurementSplit_;
       p.gbuffer = path == Path::GBuffer;
       if (path == Path::Tessellated) {
         p.tessellation.enabled = true;
@@ -107,6 +114,34 @@ TEST_F(SceneThreads, DeferredChunksGiveTheImmediateContextsBytes) {
       EXPECT_TRUE(many[i].colour.pixels == one[i].colour.pixels) << threads << " threads, frame " << i;
       EXPECT_TRUE(many[i].velocity.pixels == one[i].velocity.pixels) << threads << " threads, frame " << i;
     }
+  }
+}
+
+// The contention measurement's frames (equal chunks, the caller's chunk
+// recorded after the worker's list is finished) give the same bytes, and the
+// chunks are equal after frames that taught the balance the threads' speeds
+// (the immediate context records faster: it would give the caller more).
+TEST_F(SceneThreads, EqualChunksRecordedOneAfterAnotherGiveTheSameBytes) {
+  std::string err;
+  auto scene = Scene::Load(device(), DRR_ARENA_PROPS_DIR "/scene_description.txt", {}, &err);
+  ASSERT_TRUE(scene) << err;
+  const std::vector<Frame> one = Render(scene.get(), 1);
+  ASSERT_EQ(one.size(), 6u);
+  const std::vector<Frame> balanced = Render(scene.get(), 2);
+  const std::vector<uint32_t>& learned = balanced.back().stats.drawsPerThread;
+  ASSERT_EQ(learned.size(), 2u);
+  std::printf("balanced split after six frames: %u + %u\n", learned[0], learned[1]);
+  measurementSplit_ = true;
+  const std::vector<Frame> many = Render(scene.get(), 2);
+  ASSERT_EQ(many.size(), 6u);
+  for (size_t i = 0; i < many.size(); ++i) {
+    const SceneStats& s = many[i].stats;
+    ASSERT_EQ(s.drawsPerThread.size(), 2u);
+    const auto [lo, hi] = std::minmax_element(s.drawsPerThread.begin(), s.drawsPerThread.end());
+    EXPECT_LE(*hi - *lo, 1u) << "frame " << i;
+    EXPECT_EQ(s.callerChunks, 1u);
+    EXPECT_TRUE(many[i].colour.pixels == one[i].colour.pixels) << "frame " << i;
+    EXPECT_TRUE(many[i].velocity.pixels == one[i].velocity.pixels) << "frame " << i;
   }
 }
 
