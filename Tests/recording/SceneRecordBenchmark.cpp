@@ -15,9 +15,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <map>
@@ -262,15 +260,6 @@ void PrintPairs(int pairs, int threads) {
               threads, ratios.size(), std::thread::hardware_concurrency(), Median(ratios), *lo, *hi);
 }
 
-// Median of `v` and its distribution-free 95 % interval (the order statistics
-// n/2 -+ 0.98 sqrt(n), 1-based, clamped).
-std::array<double, 3> MedianInterval(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const double n = double(v.size()), half = 0.98 * std::sqrt(n);
-  const auto at = [&](double rank) { return v[size_t(std::clamp(rank, 1.0, n)) - 1]; };
-  return {Median(v), at(std::floor(n / 2 - half)), at(std::ceil(n / 2 + 1 + half))};
-}
-
 // --contention: what the recording threads cost each other. Frames come in
 // pairs with equal chunks: in one the caller records its chunk after the
 // workers have finished theirs (every chunk alone), in the other beside them
@@ -312,12 +301,12 @@ int Contention(int threads, int pairs, int frames) {
   std::printf("chunk times beside the other threads / alone, %d threads, equal chunks (%s draws), %zu frame pairs "
               "(%d skipped: a chunk not on its thread)\n",
               threads, DrawsPerThread(g_frame->Stats()).c_str(), ratios[0].size(), skipped);
-  for (size_t t = 0; t < n && !ratios[t].empty(); ++t) {
-    const auto [median, lo, hi] = MedianInterval(ratios[t]);
-    std::printf("chunk %zu (%s): alone %.3f ms (median); beside / alone median %.3f [%.3f, %.3f]\n", t,
-                t == 0 ? "caller, immediate context" : "worker, deferred context", Median(alone[t]), median, lo, hi);
-  }
-  for (size_t t = 0; t < n; ++t) {  // every pair's ratio, for scripts/threads-tables.py
+  for (size_t t = 0; t < n && !ratios[t].empty(); ++t)
+    std::printf("chunk %zu (%s): alone %.3f ms (median); beside / alone median %.3f\n", t,
+                t == 0 ? "caller, immediate context" : "worker, deferred context", Median(alone[t]),
+                Median(ratios[t]));
+  // Every pair's ratio: scripts/threads-tables.py gives the intervals.
+  for (size_t t = 0; t < n; ++t) {
     std::printf("chunk %zu ratios:", t);
     for (double r : ratios[t]) std::printf(" %.4f", r);
     std::printf("\n");
