@@ -171,6 +171,10 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   // is left in PRESENT_SRC), submits them through the device queue with
   // `signal`, and begins the next frame.
   void SubmitFrame(TextureCore* present = nullptr, VkSemaphore signal = VK_NULL_HANDLE);
+  // Releases the pins of objects no slot holds any more (Pins.h): what D3D11
+  // releases at the unbind. ResizeBuffers calls it before it counts the back
+  // buffer's references.
+  void CompactPins();
   void ForgetDiscardedConstants(BufferImpl* b);  // `b` is being destroyed
 
  protected:
@@ -226,6 +230,15 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   bool HasPendingBarriers() const { return !barriers_.Empty(); }
 
   // ContextState.cpp
+  // Stores `value` in a slot, pinning it first (Pins.h); nothing happens when
+  // it is there already.
+  template <class T>
+  void Bind(Bound<T>& slot, T* value) {
+    if (slot.Get() == value) return;
+    slot.Set(value);
+    if (value && pins_.Pin(value) && pins_.size() > kPinsBeforeCompaction) CompactPins();
+  }
+  static constexpr size_t kPinsBeforeCompaction = 4096;
   void SetShader(ShaderStage stage, ShaderBase* shader);
   void SetCBs(ShaderStage stage, UINT start, UINT num, Buffer* const* buffers);
   void SetSRVs(ShaderStage stage, UINT start, UINT num, ShaderResourceView* const* views);
@@ -240,7 +253,7 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   void MarkDirty(ShaderStage s, uint32_t graphicsBits) { dirty_ |= DirtyBits(s, graphicsBits); }
 
   // ContextCompute.cpp
-  void SetUavs(ComPtr<UAVImpl>* slots, const char* fn, UINT start, UINT num, UnorderedAccessView* const* views);
+  void SetUavs(Bound<UAVImpl>* slots, const char* fn, UINT start, UINT num, UnorderedAccessView* const* views);
   bool CommitCompute();
   bool CheckUavs(const ProgramLayout& p, ShaderStage stage);
   void UseShaderViews(const ProgramLayout& p, ShaderStage stage);
@@ -351,6 +364,7 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   BoundDescriptors computeDesc_;
 
   ContextState state_;
+  PinTable pins_;  // one reference to each object state_ holds, or held since the last compaction
   // Default states (D3D11 defaults), used when nullptr is bound.
   struct {
     ComPtr<RasterizerImpl> raster;

@@ -19,15 +19,13 @@ void ContextImpl::CSSetSamplers(UINT s, UINT n, SamplerState* const* v) { SetSam
 
 // Stores the views; SRVs of their resources bound to this context are
 // unbound (D3D11 hazard rule).
-void ContextImpl::SetUavs(ComPtr<UAVImpl>* slots, const char* fn, UINT start, UINT num,
+void ContextImpl::SetUavs(Bound<UAVImpl>* slots, const char* fn, UINT start, UINT num,
                           UnorderedAccessView* const* views) {
   for (UINT i = 0; i < num; ++i) {
     auto* v = static_cast<UAVImpl*>(views ? views[i] : nullptr);
     const ViewInfo info = v ? DescribeView(v->v) : ViewInfo{};
     if (!ValidateUavBinding(*dev_, fn, v ? &info : nullptr, start + i)) v = nullptr;
-    ComPtr<UAVImpl>& slot = slots[start + i];
-    if (slot.Get() == v) continue;
-    Assign(slot, v);
+    Bind(slots[start + i], v);
   }
   UnbindAliasedSRVs();
 }

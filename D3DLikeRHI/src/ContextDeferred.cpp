@@ -137,7 +137,10 @@ HRESULT DeferredContext::FinishCommandList(BOOL restoreState, CommandList** out)
   vkEndCommandBuffer(cmd_);
   std::unique_ptr<ListRecording> done = std::move(rec_);
   BeginRecording();
-  if (!restoreState) ClearState();
+  if (restoreState)
+    CompactPins();
+  else
+    ClearState();
   *out = new CommandListImpl(dev_, std::move(done), recycler_);
   return S_OK;
 }

@@ -106,6 +106,7 @@ void ContextImpl::SubmitFrame(TextureCore* present, VkSemaphore signal) {
   EndCommandFrame(present);
   dev_->queue().Submit(cmd_, signal);
   BeginCommandFrame();
+  CompactPins();  // objects unbound this frame are released, as D3D11 would have at the unbind
 }
 
 void ContextImpl::Flush() { SubmitFrame(); }

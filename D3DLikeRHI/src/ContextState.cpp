@@ -1,6 +1,8 @@
-// Context state setters: they only store state (holding references) and set
+// Context state setters: they only store state (pinning objects) and set
 // dirty bits; Commit() in ContextDraw.cpp turns them into Vulkan commands.
 // Arguments are checked by Validate*.cpp first.
+#include <algorithm>
+
 #include "Context.h"
 #include "Topology.h"
 #include "Validate.h"
@@ -33,7 +35,7 @@ void ContextImpl::MarkDirtyAll() {
 void ContextImpl::IASetInputLayout(InputLayout* layout) {
   auto* il = static_cast<InputLayoutImpl*>(layout);
   if (il == state_.ia.layout.Get()) return;
-  Assign(state_.ia.layout, il);
+  Bind(state_.ia.layout, il);
   dirty_ |= kPipeline | kVertexBuffers;
 }
 
@@ -47,7 +49,7 @@ void ContextImpl::IASetVertexBuffers(UINT start, UINT num, Buffer* const* buffer
     if (!ValidateVertexBuffer(*dev_, b ? &b->desc() : nullptr, start + i)) b = nullptr;
     const UINT stride = strides ? strides[i] : 0, offset = offsets ? offsets[i] : 0;
     if (v.buffer.Get() == b && v.stride == stride && v.offset == offset) continue;
-    Assign(v.buffer, b);
+    Bind(v.buffer, b);
     v.stride = stride;
     v.offset = offset;
     changed = true;
@@ -61,7 +63,7 @@ void ContextImpl::IASetIndexBuffer(Buffer* buffer, DXGI_FORMAT format, UINT offs
   const VkIndexType type = format == DXGI_FORMAT_R32_UINT ? VK_INDEX_TYPE_UINT32 : VK_INDEX_TYPE_UINT16;
   InputAssemblerState& ia = state_.ia;
   if (ia.indexBuffer.Get() == b && ia.indexType == type && ia.indexOffset == offset) return;
-  Assign(ia.indexBuffer, b);
+  Bind(ia.indexBuffer, b);
   ia.indexType = type;
   ia.indexOffset = offset;
   dirty_ |= kIndexBuffer;
@@ -81,9 +83,9 @@ void ContextImpl::IASetPrimitiveTopology(PRIMITIVE_TOPOLOGY t) {
 }
 
 void ContextImpl::SetShader(ShaderStage stage, ShaderBase* shader) {
-  ComPtr<ShaderBase>& slot = Stage(stage).shader;
+  Bound<ShaderBase>& slot = Stage(stage).shader;
   if (shader == slot.Get()) return;
-  Assign(slot, shader);
+  Bind(slot, shader);
   MarkDirty(stage, kProgram | kPipeline);
 }
 void ContextImpl::VSSetShader(VertexShader* s) { SetShader(ShaderStage::Vertex, static_cast<VertexShaderImpl*>(s)); }
@@ -98,7 +100,7 @@ void ContextImpl::SetCBs(ShaderStage stage, UINT start, UINT num, Buffer* const*
     auto* b = static_cast<BufferImpl*>(buffers ? buffers[i] : nullptr);
     if (!ValidateConstantBuffer(*dev_, stage, b ? &b->desc() : nullptr, start + i)) b = nullptr;
     changed = changed || slots[start + i].Get() != b;
-    Assign(slots[start + i], b);
+    Bind(slots[start + i], b);
   }
   MarkDirty(stage, changed ? uint32_t(kConstants | kCbSlots) : uint32_t(kConstants));
 }
@@ -118,7 +120,7 @@ void ContextImpl::SetSRVs(ShaderStage stage, UINT start, UINT num, ShaderResourc
       v = nullptr;
     }
     changed = changed || slots[start + i].Get() != v;
-    Assign(slots[start + i], v);
+    Bind(slots[start + i], v);
   }
   if (changed) MarkDirty(stage, kDescriptors);
 }
@@ -132,7 +134,7 @@ void ContextImpl::SetSamplers(ShaderStage stage, UINT start, UINT num, SamplerSt
   for (UINT i = 0; i < num; ++i) {
     auto* smp = samplers ? static_cast<SamplerImpl*>(samplers[i]) : nullptr;
     changed = changed || slots[start + i].Get() != smp;
-    Assign(slots[start + i], smp);
+    Bind(slots[start + i], smp);
   }
   if (changed) MarkDirty(stage, kDescriptors);
 }
@@ -156,7 +158,7 @@ void ContextImpl::RSSetScissorRects(UINT num, const RECT* rects) {
 void ContextImpl::RSSetState(RasterizerState* state) {
   auto* s = static_cast<RasterizerImpl*>(state);
   if (s == state_.rs.state.Get()) return;
-  Assign(state_.rs.state, s);
+  Bind(state_.rs.state, s);
   dirty_ |= kPipeline | kScissor;
 }
 
@@ -164,7 +166,7 @@ void ContextImpl::OMSetBlendState(BlendState* state, const float factor[4], UINT
   OutputMergerState& om = state_.om;
   auto* s = static_cast<BlendImpl*>(state);
   if (s != om.blend.Get()) {
-    Assign(om.blend, s);
+    Bind(om.blend, s);
     dirty_ |= kPipeline;
   }
   if (sampleMask != om.sampleMask) {  // part of the pipeline (VkPipelineMultisampleStateCreateInfo)
@@ -180,7 +182,7 @@ void ContextImpl::OMSetDepthStencilState(DepthStencilState* state, UINT stencilR
   OutputMergerState& om = state_.om;
   auto* s = static_cast<DepthStencilImpl*>(state);
   if (s != om.depthStencil.Get()) {
-    Assign(om.depthStencil, s);
+    Bind(om.depthStencil, s);
     dirty_ |= kPipeline;
   }
   if (stencilRef != om.stencilRef) {
@@ -205,10 +207,10 @@ void ContextImpl::OMSetRenderTargets(UINT num, RenderTargetView* const* rtvs, De
   EndRendering();
   om.numRenderTargets = 0;
   for (UINT i = 0; i < SIMULTANEOUS_RENDER_TARGET_COUNT; ++i) {
-    Assign(om.renderTargets[i], newRt[i]);
+    Bind(om.renderTargets[i], newRt[i]);
     if (newRt[i]) om.numRenderTargets = i + 1;
   }
-  Assign(om.depthStencilView, newDs);
+  Bind(om.depthStencilView, newDs);
   UnbindAliasedSRVs();
   dirty_ |= kPipeline | kScissor | kViewport;
 }
@@ -233,7 +235,7 @@ bool ContextImpl::BoundForOutput(const ViewCore& v) const {
       if (om.renderTargets[i] && om.renderTargets[i]->v.tex == v.tex) return true;
     if (om.depthStencilView && om.depthStencilView->v.tex == v.tex) return true;
   }
-  for (const ComPtr<UAVImpl>* slots : {Stage(ShaderStage::Compute).uavs, Stage(ShaderStage::Pixel).uavs})
+  for (const Bound<UAVImpl>* slots : {Stage(ShaderStage::Compute).uavs, Stage(ShaderStage::Pixel).uavs})
     for (uint32_t i = 0; i < kMaxUnorderedAccessSlots; ++i)
       if (slots[i] && (v.tex ? slots[i]->v.tex == v.tex : slots[i]->v.buf == v.buf)) return true;
   return false;
@@ -258,7 +260,38 @@ void ContextImpl::ClearState() {
   OMSetRenderTargetsAndUnorderedAccessViews(KEEP_RENDER_TARGETS_AND_DEPTH_STENCIL, nullptr, nullptr, 0,
                                             kMaxUnorderedAccessSlots, nullptr, nullptr);
   state_ = ContextState{};
+  pins_.ReleaseUnless([](const void*) { return false; });
   dirty_ = kAll;
+}
+
+// Every object a slot of `state` holds, as the pointer its slot's type gives.
+static std::vector<const void*> BoundObjects(const ContextState& state) {
+  std::vector<const void*> out;
+  auto add = [&out](const auto& slot) {
+    if (slot) out.push_back(static_cast<const void*>(slot.Get()));
+  };
+  add(state.ia.layout);
+  for (const auto& v : state.ia.vertexBuffers) add(v.buffer);
+  add(state.ia.indexBuffer);
+  for (const ShaderStageState& s : state.stages) {
+    add(s.shader);
+    for (const auto& b : s.constantBuffers) add(b);
+    for (const auto& v : s.shaderResources) add(v);
+    for (const auto& v : s.samplers) add(v);
+    for (const auto& v : s.uavs) add(v);
+  }
+  add(state.rs.state);
+  for (const auto& v : state.om.renderTargets) add(v);
+  add(state.om.depthStencilView);
+  add(state.om.blend);
+  add(state.om.depthStencil);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+void ContextImpl::CompactPins() {
+  const std::vector<const void*> bound = BoundObjects(state_);
+  pins_.ReleaseUnless([&bound](const void* p) { return std::binary_search(bound.begin(), bound.end(), p); });
 }
 
 }  // namespace d3dl::impl

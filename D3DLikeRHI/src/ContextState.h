@@ -1,9 +1,11 @@
 // Bound state of a context, grouped as D3D11 groups its pipeline: input
 // assembler, one block per shader stage, rasterizer, output merger. Slots
-// hold references (ComPtr), as D3D11 does; nullptr states mean the defaults.
+// keep their objects alive, as D3D11's do, through the context's PinTable
+// (Pins.h); nullptr states mean the defaults.
 #pragma once
 
 #include "OnceError.h"
+#include "Pins.h"
 #include "PipelineCache.h"
 #include "Views.h"
 
@@ -11,30 +13,30 @@ namespace d3dl::impl {
 
 struct InputAssemblerState {
   struct VertexBuffer {
-    ComPtr<BufferImpl> buffer;
+    Bound<BufferImpl> buffer;
     UINT stride = 0;
     UINT offset = 0;
   };
-  ComPtr<InputLayoutImpl> layout;
+  Bound<InputLayoutImpl> layout;
   VertexBuffer vertexBuffers[IA_VERTEX_INPUT_RESOURCE_SLOT_COUNT];
-  ComPtr<BufferImpl> indexBuffer;
+  Bound<BufferImpl> indexBuffer;
   VkIndexType indexType = VK_INDEX_TYPE_UINT16;
   UINT indexOffset = 0;
   PRIMITIVE_TOPOLOGY topology = PRIMITIVE_TOPOLOGY_UNDEFINED;
 };
 
 struct ShaderStageState {
-  ComPtr<ShaderBase> shader;
-  ComPtr<BufferImpl> constantBuffers[kMaxConstantBufferSlots];
-  ComPtr<SRVImpl> shaderResources[kMaxTextureSlots];
-  ComPtr<SamplerImpl> samplers[kMaxSamplerSlots];
+  Bound<ShaderBase> shader;
+  Bound<BufferImpl> constantBuffers[kMaxConstantBufferSlots];
+  Bound<SRVImpl> shaderResources[kMaxTextureSlots];
+  Bound<SamplerImpl> samplers[kMaxSamplerSlots];
   // u# slots: bound only for the compute stage (CSSetUnorderedAccessViews)
   // and the pixel stage (OMSetRenderTargetsAndUnorderedAccessViews).
-  ComPtr<UAVImpl> uavs[kMaxUnorderedAccessSlots];
+  Bound<UAVImpl> uavs[kMaxUnorderedAccessSlots];
 };
 
 struct RasterizerStageState {
-  ComPtr<RasterizerImpl> state;
+  Bound<RasterizerImpl> state;
   VIEWPORT viewport{};  // only the first viewport and scissor rectangle are used
   UINT numViewports = 0;
   RECT scissor{};
@@ -42,12 +44,12 @@ struct RasterizerStageState {
 };
 
 struct OutputMergerState {
-  ComPtr<RTVImpl> renderTargets[SIMULTANEOUS_RENDER_TARGET_COUNT];
+  Bound<RTVImpl> renderTargets[SIMULTANEOUS_RENDER_TARGET_COUNT];
   UINT numRenderTargets = 0;  // highest bound slot + 1
-  ComPtr<DSVImpl> depthStencilView;
-  ComPtr<BlendImpl> blend;
+  Bound<DSVImpl> depthStencilView;
+  Bound<BlendImpl> blend;
   float blendFactor[4] = {1, 1, 1, 1};
-  ComPtr<DepthStencilImpl> depthStencil;
+  Bound<DepthStencilImpl> depthStencil;
   UINT stencilRef = 0;
   UINT sampleMask = 0xffffffffu;  // OMSetBlendState's: which samples of MSAA targets are written
 };

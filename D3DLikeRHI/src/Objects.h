@@ -1,5 +1,5 @@
 // Object model of the backend: COM-like reference counting for every API
-// object, and the helper that stores references in bound-state slots.
+// object.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -59,13 +59,6 @@ class Child : public Object<Iface> {
  protected:
   virtual void OnDebugName() {}
 };
-
-// Stores `value` in a bound-state slot: a reference is added to it and the
-// previous object's is released; nothing happens when it is already there.
-template <class T>
-inline void Assign(ComPtr<T>& slot, T* value) {
-  if (slot.Get() != value) slot = ComPtr<T>(value);
-}
 
 std::string ToUpper(const char* s);
 

@@ -62,6 +62,7 @@ class SwapChainHeadless final : public Object<SwapChain>, public SwapChainImplBa
     return S_OK;
   }
   HRESULT ResizeBuffers(UINT count, UINT w, UINT h, DXGI_FORMAT format, UINT) override {
+    if (ContextImpl* ctx = dev_->context()) ctx->CompactPins();  // views unbound since the last submit
     if (proxy_->RefCount() > 1) {
       dev_->Log(LogLevel::Error, "ResizeBuffers: release every reference to the back buffer (and its views) first");
       return E_INVALIDARG;

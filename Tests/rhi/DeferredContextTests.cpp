@@ -475,6 +475,56 @@ TEST_F(RhiDeferred, ListKeepsWhatItsLaterDrawsBound) {
   EXPECT_EQ(CountDifferences(ReadBack(rt.texture.Get()), Rasterise({first, second}), 1, "after release"), 0);
 }
 
+// A context keeps what its slots hold alive, as D3D11's do, with one
+// reference per object (Pins.h). A buffer the application released while it
+// was bound is still drawn after the context has bound more objects than its
+// table holds before it drops the unbound ones (4096); those dropped go, so
+// the live objects stay bounded; unbinding and the context's next submit or
+// ClearState release the rest.
+TEST_F(RhiDeferred, BoundObjectsStayAliveAndUnboundOnesGoOnBothContexts) {
+  constexpr int kOthers = 4200;  // more than the table's 4096 pins before it drops the unbound ones
+  auto rt = MakeRenderTarget(kW, kH);
+  const Quad q{6, 10, 50, 44, {0.2f, 0.4f, 1, 1}};
+  for (bool deferred : {false, true}) {
+    SCOPED_TRACE(deferred ? "deferred" : "immediate");
+    DEVICE_STATS before;
+    device()->GetStats(&before);
+    ComPtr<DeviceContext> ctx = deferred ? MakeDeferred() : ComPtr<DeviceContext>(context());
+    {
+      const QuadConstants c = ToConstants(q);
+      auto cb = MakeCB(sizeof(c), USAGE_DEFAULT, &c);
+      BindQuadState(ctx.Get(), rt.rtv.Get(), cb.Get());
+    }  // the application's reference to the quad's buffer is gone
+    UINT64 mostAlive = 0;
+    for (int i = 0; i < kOthers; ++i) {
+      auto other = MakeCB(16);
+      ctx->PSSetConstantBuffers(1, 1, other.GetAddressOf());
+      DEVICE_STATS now;
+      device()->GetStats(&now);
+      mostAlive = std::max(mostAlive, now.LiveObjects - before.LiveObjects);
+    }
+    // The deferred context itself and its three default states count too.
+    EXPECT_LE(mostAlive, 4096u + 2u + (deferred ? 4u : 0u)) << "unbound buffers are released once the table is full";
+    DEVICE_STATS bound;
+    device()->GetStats(&bound);
+    EXPECT_GE(bound.LiveObjects, before.LiveObjects + 2) << "the quad's buffer and the last other one are bound";
+    context()->ClearRenderTargetView(rt.rtv.Get(), kBlack);
+    ctx->Draw(6, 0);
+    if (deferred) context()->ExecuteCommandList(Finish(ctx.Get()).Get(), 0);  // the list holds the quad's buffer
+    EXPECT_EQ(CountDifferences(ReadBack(rt.texture.Get()), Rasterise({q}), 1, "released while bound"), 0);
+    if (!deferred) {  // unbound, then gone at the submit
+      Buffer* none = nullptr;
+      ctx->VSSetConstantBuffers(0, 1, &none);
+      ctx->PSSetConstantBuffers(1, 1, &none);
+      ctx->Flush();
+    }
+    ctx = {};  // the deferred context goes, and the list went after its execution
+    DEVICE_STATS after;
+    device()->GetStats(&after);
+    EXPECT_EQ(after.LiveObjects, before.LiveObjects);
+  }
+}
+
 TEST_F(RhiDeferred, BadUsesAreRejected) {
   auto ctx = MakeDeferred();
   auto expectError = [this](const char* what) {
