@@ -12,6 +12,7 @@
 
 #include "SampleTestKit.h"
 #include "analysis/ImageMetrics.h"
+#include "ScratchDir.h"
 
 namespace drr {
 namespace {
@@ -67,8 +68,7 @@ class DeferredTest : public SampleTest {
   }
   // The Arena's description with light lines appended (the model paths made absolute).
   static std::string LitScene(const std::string& lights) {
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "drr_deferred_test";
-    std::filesystem::create_directories(dir);
+    const std::filesystem::path& dir = drrtest::ProcessScratchDir();
     const std::string a = std::string(DRR_TEST_ARENA_DIR) + "/";
     const std::filesystem::path file = dir / ("lit_" + std::to_string(std::hash<std::string>{}(lights)) + ".txt");
     std::ofstream(file) << a << "arena.gltf NO_ANIM LIT\n"

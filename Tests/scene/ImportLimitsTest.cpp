@@ -17,6 +17,7 @@
 
 #include "imageio/ImageFile.h"
 #include "scene/IsolatedImport.h"
+#include "ScratchDir.h"
 
 using namespace drr;
 namespace fs = std::filesystem;
@@ -29,8 +30,7 @@ constexpr size_t kTruncatedBytes = 30;  // the size of the PLY header below
 // A folder of its own for each file, so that no companion counts.
 fs::path FreshDir(const std::string& name) {
   static int made = 0;
-  fs::path d = fs::temp_directory_path() /
-               ("drr_import_limits_" + std::to_string(::getpid()) + "_" + std::to_string(made++)) / name;
+  fs::path d = drrtest::ProcessScratchDir() / std::to_string(made++) / name;
   fs::create_directories(d.parent_path());
   return d;
 }

@@ -15,6 +15,7 @@
 #include "scene/ImportWire.h"
 #include "scene/IsolatedImport.h"
 #include "scene/SceneDescription.h"
+#include "ScratchDir.h"
 
 using namespace drr;
 namespace fs = std::filesystem;
@@ -24,9 +25,7 @@ namespace {
 const fs::path kModels = "/usr/share/assimp/models";
 
 fs::path TempDir() {
-  fs::path d = fs::temp_directory_path() / ("drr_isolation_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
+  return drrtest::ProcessScratchDir();
 }
 
 void WriteFile(const fs::path& p, const std::vector<uint8_t>& bytes) {

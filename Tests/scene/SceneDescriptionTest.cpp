@@ -7,6 +7,7 @@
 #include <random>
 
 #include "scene/SceneDescription.h"
+#include "ScratchDir.h"
 
 using namespace drr;
 namespace fs = std::filesystem;
@@ -126,7 +127,7 @@ TEST(SceneDescription, VeryLongLine) {
 }
 
 TEST(SceneDescription, BadPathsAreReportedWithTheResolvedLocation) {
-  fs::path dir = fs::temp_directory_path() / "drr_scene_desc_test";
+  fs::path dir = drrtest::ProcessScratchDir() / "desc_test";
   fs::create_directories(dir);
   { std::ofstream(dir / "exists.obj") << "v 0 0 0\n"; }
   std::ofstream(dir / "scene.txt") << "exists.obj NO_ANIM LIT\n\nmissing.obj NO_ANIM LIT\n";
@@ -229,7 +230,7 @@ TEST(SceneDescription, TessellationRulesPerMaterial) {
 }
 
 TEST(SceneDescription, MissingDisplacementMapNamesFileAndLine) {
-  fs::path dir = fs::temp_directory_path() / "drr_scene_desc_tess";
+  fs::path dir = drrtest::ProcessScratchDir() / "desc_tess";
   fs::create_directories(dir);
   std::ofstream(dir / "a.obj") << "v 0 0 0\n";
   SceneDescription d;

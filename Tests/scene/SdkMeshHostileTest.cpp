@@ -11,6 +11,7 @@
 
 #include "ArenaGenSdkMesh.h"
 #include "scene/IsolatedImport.h"
+#include "ScratchDir.h"
 
 using namespace drr;
 namespace fs = std::filesystem;
@@ -28,9 +29,7 @@ ImportLimits ShortLimits() {
 
 // Writes bytes to a temporary file named name and imports it; returns the error ("" on success).
 std::string Import(const std::string& name, const std::vector<uint8_t>& bytes) {
-  const fs::path dir = fs::temp_directory_path() / ("drr_sdkmesh_hostile_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path file = dir / name;
+  const fs::path file = drrtest::ProcessScratchDir() / name;
   std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
   ModelLoadOptions opts;
   opts.animationsOnly = name.find("_anim") != std::string::npos;

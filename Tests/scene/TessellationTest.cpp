@@ -22,6 +22,7 @@
 #include "RenderTest.h"
 #include "imageio/ImageFile.h"
 #include "scene/Scene.h"
+#include "ScratchDir.h"
 
 using namespace drr;
 namespace fs = std::filesystem;
@@ -127,7 +128,7 @@ void WritePlane(const fs::path& dir, int n, float size) {
 }
 
 fs::path PlaneScene(const std::string& name, const std::string& rules) {
-  const fs::path dir = fs::temp_directory_path() / ("drr_tess_" + name);
+  const fs::path dir = drrtest::ProcessScratchDir() / name;
   fs::create_directories(dir);
   WritePlane(dir, 8, 100.f);
   std::ofstream(dir / "scene.txt") << "plane.obj NO_ANIM LIT " << rules << "\n";
