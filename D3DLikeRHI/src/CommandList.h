@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "CommandMemory.h"
+#include "Pins.h"
 #include "Resources.h"
 
 namespace d3dl::impl {
@@ -89,13 +90,11 @@ struct ListRecording {
   std::unordered_map<const BufferImpl*, Slice> slices;
   std::vector<ListImport> imports;
   std::unordered_map<GpuUse*, bool> uses;  // -> written
-  // API objects the commands use: one reference each, dropped with the list.
-  struct Held {
-    void* object;
-    void (*release)(void*);
-  };
+  // API objects the list holds a reference to, dropped with it: every object
+  // bound while it was recorded (the context's pins, Pins.h) and the others
+  // its commands use (a cleared view, a mapped buffer), those once each.
   RetainedSet retained;
-  std::vector<Held> held;
+  std::vector<PinTable::Entry> held;
 
   uint64_t draws = 0;  // added to DEVICE_STATS::DrawCalls at each execution
 

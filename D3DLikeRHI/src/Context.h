@@ -202,8 +202,10 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   // A list holds a reference to each object its commands use; the frame
   // needs none (the application's bindings hold them until it is submitted).
   virtual void Hold(Unknown* object) = 0;
-  virtual void HoldDrawState(bool indexed) = 0;
-  virtual void HoldComputeState() = 0;
+  // A pin dropped (Pins.h): the immediate context releases it, a deferred
+  // context hands it to its list, which then holds every object bound while it
+  // was recorded; so draws and dispatches need no reference of their own.
+  virtual void Unpinned(const PinTable::Entry& e) { e.release(e.object); }
   // The descriptor pools sets come from: the frame slot's, or the list's
   // (freed with it); `countStats`: DEVICE_STATS counts them (the immediate
   // context's thread only).
@@ -239,6 +241,7 @@ class ContextImpl : public DeviceContext, public BlitExtension {
     if (value && pins_.Pin(value) && pins_.size() > kPinsBeforeCompaction) CompactPins();
   }
   static constexpr size_t kPinsBeforeCompaction = 4096;
+  void PinBoundState();  // pins what the slots hold (a list's end that keeps the state)
   void SetShader(ShaderStage stage, ShaderBase* shader);
   void SetCBs(ShaderStage stage, UINT start, UINT num, Buffer* const* buffers);
   void SetSRVs(ShaderStage stage, UINT start, UINT num, ShaderResourceView* const* views);

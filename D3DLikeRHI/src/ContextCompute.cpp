@@ -110,7 +110,6 @@ bool ContextImpl::CommitCompute() {
   // UAV slots change only with kComputeDescriptors (a failed check leaves it set).
   if ((dirty_ & kComputeDescriptors) && !CheckUavs(p, ShaderStage::Compute)) return false;
   UseShaderViews(p, ShaderStage::Compute);
-  HoldComputeState();
   EndRendering();
   FlushBarriers();
   if (dirty_ & kComputePipeline) {

@@ -135,10 +135,11 @@ HRESULT DeferredContext::FinishCommandList(BOOL restoreState, CommandList** out)
   FlushBarriers();
   while (labelDepth_ > 0) EndEvent();
   vkEndCommandBuffer(cmd_);
+  pins_.DropAll([this](const PinTable::Entry& e) { Unpinned(e); });  // the list holds what was bound
   std::unique_ptr<ListRecording> done = std::move(rec_);
   BeginRecording();
   if (restoreState)
-    CompactPins();
+    PinBoundState();  // the context's own references to the state it keeps
   else
     ClearState();
   *out = new CommandListImpl(dev_, std::move(done), recycler_);
@@ -241,47 +242,11 @@ void DeferredContext::Retain(T* object) {
 
 void DeferredContext::Hold(Unknown* object) { Retain(object); }
 
-// Every object a draw reads, referenced by the list (D3D11 lists keep them).
-// Only the groups whose dirty bits are set can bring objects the list does
-// not hold yet (every setter that binds a new object raises its group's bit,
-// and a new list starts with every bit set), so the others are skipped.
-void DeferredContext::HoldDrawState(bool indexed) {
-  if (dirty_ & (kPipeline | kProgram)) {  // shaders, input layout, fixed-function states, targets
-    for (ShaderStage s : kGraphicsStages) Retain(state_.stages[s].shader.Get());
-    Retain(state_.ia.layout.Get());
-    Retain(state_.rs.state.Get());
-    const OutputMergerState& om = state_.om;
-    for (uint32_t i = 0; i < om.numRenderTargets; ++i) Retain(om.renderTargets[i].Get());
-    Retain(om.depthStencilView.Get());
-    Retain(om.blend.Get());
-    Retain(om.depthStencil.Get());
-  }
-  const InputAssemblerState& ia = state_.ia;
-  if (dirty_ & kVertexBuffers)
-    for (uint32_t m = ia.layout ? ia.layout->slotMask : 0; m; m &= m - 1)
-      Retain(ia.vertexBuffers[__builtin_ctz(m)].buffer.Get());
-  if (indexed && (dirty_ & kIndexBuffer)) Retain(ia.indexBuffer.Get());
-  if (dirty_ & (kDescriptors | kCbSlots | kProgram | kUavs)) {  // what the descriptor set points at
-    for (const auto& s : program_->cbs) Retain(state_.stages[s.stage].constantBuffers[s.slot].Get());
-    for (const auto& s : program_->srvs) Retain(state_.stages[s.stage].shaderResources[s.slot].Get());
-    for (const auto& s : program_->bufferSrvs) Retain(state_.stages[s.stage].shaderResources[s.slot].Get());
-    for (const auto& s : program_->samplers) Retain(state_.stages[s.stage].samplers[s.slot].Get());
-    for (const auto& s : program_->uavImages) Retain(state_.stages[ShaderStage::Pixel].uavs[s.slot].Get());
-    for (const auto& s : program_->uavBuffers) Retain(state_.stages[ShaderStage::Pixel].uavs[s.slot].Get());
-  }
-}
-
-// Every object a dispatch reads or writes (compute on a deferred context).
-void DeferredContext::HoldComputeState() {
-  const ProgramLayout& p = *computeProgram_;
-  const ShaderStageState& cs = state_.stages[ShaderStage::Compute];
-  Retain(cs.shader.Get());
-  for (const auto& s : p.cbs) Retain(cs.constantBuffers[s.slot].Get());
-  for (const auto& s : p.srvs) Retain(cs.shaderResources[s.slot].Get());
-  for (const auto& s : p.bufferSrvs) Retain(cs.shaderResources[s.slot].Get());
-  for (const auto& s : p.samplers) Retain(cs.samplers[s.slot].Get());
-  for (const auto& s : p.uavImages) Retain(cs.uavs[s.slot].Get());
-  for (const auto& s : p.uavBuffers) Retain(cs.uavs[s.slot].Get());
+void DeferredContext::Unpinned(const PinTable::Entry& e) {
+  if (rec_)
+    rec_->held.push_back(e);
+  else
+    e.release(e.object);
 }
 
 // ---------------------------------------------------------------------------

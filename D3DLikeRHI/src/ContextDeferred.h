@@ -54,8 +54,7 @@ class DeferredContext final : public ContextImpl {
   void UseBuffer(VkBuffer buf, SyncState& s, const Usage& u) override;
   void NoteUse(GpuUse& u, bool write) override;
   void Hold(Unknown* object) override;
-  void HoldDrawState(bool indexed) override;
-  void HoldComputeState() override;
+  void Unpinned(const PinTable::Entry& e) override;
   DescriptorPools SetPools() override { return {rec_->descPools, rec_->descPoolCurrent, false}; }
   VkPipelineLayout BindingLayout(const ProgramLayout& p) override {
     return dev_->pipelines().ListLayout(p, listLayoutIndex_);

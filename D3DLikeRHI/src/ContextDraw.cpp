@@ -168,7 +168,6 @@ bool ContextImpl::CommitSlow(bool indexed) {
   }
   if (program_->HasUavs() && !CheckUavs(*program_, ShaderStage::Pixel)) return false;
   UseDrawResources(indexed);
-  HoldDrawState(indexed);
   if (HasPendingBarriers()) FlushBarriers();
   if (!rendering_ && !BeginRendering()) return false;
   VkCommandBuffer cmd = cmd_;

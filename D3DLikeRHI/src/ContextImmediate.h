@@ -29,8 +29,6 @@ class ImmediateContext final : public ContextImpl {
     write ? u.Write(dev_->CurrentSerial()) : u.Read(dev_->CurrentSerial());
   }
   void Hold(Unknown*) override {}
-  void HoldDrawState(bool) override {}
-  void HoldComputeState() override {}
   DescriptorPools SetPools() override {
     CommandFrame& f = frames_[dev_->queue().Slot()];
     return {f.descPools, f.descPoolCurrent, true};

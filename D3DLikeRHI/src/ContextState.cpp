@@ -260,38 +260,20 @@ void ContextImpl::ClearState() {
   OMSetRenderTargetsAndUnorderedAccessViews(KEEP_RENDER_TARGETS_AND_DEPTH_STENCIL, nullptr, nullptr, 0,
                                             kMaxUnorderedAccessSlots, nullptr, nullptr);
   state_ = ContextState{};
-  pins_.ReleaseUnless([](const void*) { return false; });
+  pins_.DropAll([this](const PinTable::Entry& e) { Unpinned(e); });
   dirty_ = kAll;
 }
 
-// Every object a slot of `state` holds, as the pointer its slot's type gives.
-static std::vector<const void*> BoundObjects(const ContextState& state) {
-  std::vector<const void*> out;
-  auto add = [&out](const auto& slot) {
-    if (slot) out.push_back(static_cast<const void*>(slot.Get()));
-  };
-  add(state.ia.layout);
-  for (const auto& v : state.ia.vertexBuffers) add(v.buffer);
-  add(state.ia.indexBuffer);
-  for (const ShaderStageState& s : state.stages) {
-    add(s.shader);
-    for (const auto& b : s.constantBuffers) add(b);
-    for (const auto& v : s.shaderResources) add(v);
-    for (const auto& v : s.samplers) add(v);
-    for (const auto& v : s.uavs) add(v);
-  }
-  add(state.rs.state);
-  for (const auto& v : state.om.renderTargets) add(v);
-  add(state.om.depthStencilView);
-  add(state.om.blend);
-  add(state.om.depthStencil);
-  std::sort(out.begin(), out.end());
-  return out;
+void ContextImpl::CompactPins() {
+  std::vector<const void*> bound;  // as the pointer each slot's type gives
+  ForEachBound(state_, [&bound](const auto& slot) { bound.push_back(static_cast<const void*>(slot.Get())); });
+  std::sort(bound.begin(), bound.end());
+  pins_.DropUnless([&bound](const void* p) { return std::binary_search(bound.begin(), bound.end(), p); },
+                   [this](const PinTable::Entry& e) { Unpinned(e); });
 }
 
-void ContextImpl::CompactPins() {
-  const std::vector<const void*> bound = BoundObjects(state_);
-  pins_.ReleaseUnless([&bound](const void* p) { return std::binary_search(bound.begin(), bound.end(), p); });
+void ContextImpl::PinBoundState() {
+  ForEachBound(state_, [this](const auto& slot) { pins_.Pin(slot.Get()); });
 }
 
 }  // namespace d3dl::impl

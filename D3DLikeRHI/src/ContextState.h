@@ -61,6 +61,29 @@ struct ContextState {
   OutputMergerState om;
 };
 
+// Calls `f` with every slot of `state` that holds an object (a Bound<T>).
+template <class F>
+void ForEachBound(const ContextState& state, F&& f) {
+  auto visit = [&f](const auto& slot) {
+    if (slot) f(slot);
+  };
+  visit(state.ia.layout);
+  for (const auto& v : state.ia.vertexBuffers) visit(v.buffer);
+  visit(state.ia.indexBuffer);
+  for (const ShaderStageState& s : state.stages) {
+    visit(s.shader);
+    for (const auto& b : s.constantBuffers) visit(b);
+    for (const auto& v : s.shaderResources) visit(v);
+    for (const auto& v : s.samplers) visit(v);
+    for (const auto& v : s.uavs) visit(v);
+  }
+  visit(state.rs.state);
+  for (const auto& v : state.om.renderTargets) visit(v);
+  visit(state.om.depthStencilView);
+  visit(state.om.blend);
+  visit(state.om.depthStencil);
+}
+
 // What changed since the last commit, in one mask: Commit re-records only
 // the graphics bits that are set, CommitCompute only the compute ones.
 enum Dirty : uint32_t {

@@ -3,9 +3,12 @@
 // threads that bind the same meshes' buffers and textures write the same
 // counters from two cores. Here a slot (Bound<T>) points at its object without
 // counting, and the context's PinTable holds one reference per object however
-// often it is bound. Pins of objects no longer bound are released where the
+// often it is bound. Pins of objects no longer bound are dropped where the
 // context can see its whole bound state: ClearState, the end of a deferred
 // list, the immediate context's submit, and when the table has grown large.
+// The immediate context releases what it drops; a deferred context hands it
+// to the list being recorded, which so holds every object bound while it was
+// recorded (as a D3D11 list, which records the binds).
 #pragma once
 
 #include <cstddef>
@@ -39,10 +42,16 @@ class Bound {
 // array, at most half full.
 class PinTable {
  public:
+  // One reference to `object`, dropped by calling `release` on it.
+  struct Entry {
+    void* object = nullptr;
+    void (*release)(void*) = nullptr;
+  };
+
   PinTable() = default;
   PinTable(const PinTable&) = delete;
   PinTable& operator=(const PinTable&) = delete;
-  ~PinTable() { ReleaseUnless([](const void*) { return false; }); }
+  ~PinTable() { DropAll([](const Entry& e) { e.release(e.object); }); }
 
   // Adds a reference to `object` unless it is pinned already; true when added.
   template <class T>
@@ -60,10 +69,11 @@ class PinTable {
   }
   size_t size() const { return count_; }
 
-  // Releases the pin of every object `keep` returns false for. The table is
-  // rebuilt before any release, so an object's destructor sees it consistent.
-  template <class Keep>
-  void ReleaseUnless(Keep&& keep) {
+  // Hands the pin of every object `keep` returns false for to `drop` (which
+  // releases it or passes it on). The table is rebuilt before the first
+  // call, so an object's destructor sees it consistent.
+  template <class Keep, class Drop>
+  void DropUnless(Keep&& keep, Drop&& drop) {
     if (count_ == 0) return;
     std::vector<Entry> old = std::move(slots_);
     slots_.assign(old.size(), Entry{});
@@ -78,14 +88,14 @@ class PinTable {
         dropped.push_back(e);
       }
     }
-    for (const Entry& e : dropped) e.release(e.object);
+    for (const Entry& e : dropped) drop(e);
+  }
+  template <class Drop>
+  void DropAll(Drop&& drop) {
+    DropUnless([](const void*) { return false; }, drop);
   }
 
  private:
-  struct Entry {
-    void* object = nullptr;
-    void (*release)(void*) = nullptr;
-  };
   static size_t Hash(const void* p) {
     const auto v = static_cast<uint64_t>(reinterpret_cast<uintptr_t>(p));
     return static_cast<size_t>((v >> 4) * 0x9E3779B97F4A7C15ull >> 32);

@@ -247,6 +247,36 @@ TEST_F(RhiDeferred, FinishCommandListResetsOrKeepsTheDeferredState) {
   context()->ExecuteCommandList(reset.Get(), 1);
 }
 
+// FinishCommandList(TRUE): the list holds what was bound, and the context
+// keeps references of its own to the state it keeps, so a buffer the
+// application released is still drawn by the next list after the first is gone.
+TEST_F(RhiDeferred, KeptStateStaysAliveForTheNextList) {
+  auto rt = MakeRenderTarget(kW, kH);
+  const Quad q{12, 4, 60, 30, {1, 0.5f, 0, 1}};
+  auto ctx = MakeDeferred();
+  DEVICE_STATS before;
+  device()->GetStats(&before);
+  {
+    const QuadConstants c = ToConstants(q);
+    auto cb = MakeCB(sizeof(c), USAGE_DEFAULT, &c);
+    BindQuadState(ctx.Get(), rt.rtv.Get(), cb.Get());
+  }
+  ctx->Draw(6, 0);
+  Finish(ctx.Get(), 1);  // released at once
+  DEVICE_STATS kept;
+  device()->GetStats(&kept);
+  EXPECT_EQ(kept.LiveObjects, before.LiveObjects + 1) << "the context holds its kept state's buffer";
+  ctx->Draw(6, 0);
+  auto second = Finish(ctx.Get(), 0);
+  context()->ClearRenderTargetView(rt.rtv.Get(), kBlack);
+  context()->ExecuteCommandList(second.Get(), 1);
+  EXPECT_EQ(CountDifferences(ReadBack(rt.texture.Get()), Rasterise({q}), 1, "kept state"), 0);
+  second = {};
+  DEVICE_STATS after;
+  device()->GetStats(&after);
+  EXPECT_EQ(after.LiveObjects, before.LiveObjects);
+}
+
 // restoreContextState TRUE: the immediate context draws on with its own state
 // after the list; FALSE: it is left in default state (a draw is skipped).
 TEST_F(RhiDeferred, ExecuteCommandListRestoresOrClearsTheImmediateState) {
@@ -478,9 +508,11 @@ TEST_F(RhiDeferred, ListKeepsWhatItsLaterDrawsBound) {
 // A context keeps what its slots hold alive, as D3D11's do, with one
 // reference per object (Pins.h). A buffer the application released while it
 // was bound is still drawn after the context has bound more objects than its
-// table holds before it drops the unbound ones (4096); those dropped go, so
-// the live objects stay bounded; unbinding and the context's next submit or
-// ClearState release the rest.
+// table holds before it drops the unbound ones (4096). The immediate context
+// releases those dropped, so its live objects stay bounded, and the rest at
+// the submit after the unbind; a deferred context hands them to its list,
+// which holds every object bound while it was recorded (a D3D11 list records
+// the binds) until it goes.
 TEST_F(RhiDeferred, BoundObjectsStayAliveAndUnboundOnesGoOnBothContexts) {
   constexpr int kOthers = 4200;  // more than the table's 4096 pins before it drops the unbound ones
   auto rt = MakeRenderTarget(kW, kH);
@@ -503,8 +535,10 @@ TEST_F(RhiDeferred, BoundObjectsStayAliveAndUnboundOnesGoOnBothContexts) {
       device()->GetStats(&now);
       mostAlive = std::max(mostAlive, now.LiveObjects - before.LiveObjects);
     }
-    // The deferred context itself and its three default states count too.
-    EXPECT_LE(mostAlive, 4096u + 2u + (deferred ? 4u : 0u)) << "unbound buffers are released once the table is full";
+    if (deferred)
+      EXPECT_GE(mostAlive, UINT64(kOthers)) << "the list holds every buffer bound while it was recorded";
+    else
+      EXPECT_LE(mostAlive, 4096u + 2u) << "unbound buffers are released once the table is full";
     DEVICE_STATS bound;
     device()->GetStats(&bound);
     EXPECT_GE(bound.LiveObjects, before.LiveObjects + 2) << "the quad's buffer and the last other one are bound";

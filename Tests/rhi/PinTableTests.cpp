@@ -13,6 +13,8 @@ namespace {
 
 using d3dl::impl::PinTable;
 
+void ReleaseIt(const PinTable::Entry& e) { e.release(e.object); }
+
 struct Counted {
   unsigned refs = 1;  // the application's
   unsigned AddRef() { return ++refs; }
@@ -36,7 +38,7 @@ TEST(PinTable, OnlyTheObjectsNotKeptAreReleased) {
   t.Pin(&a);
   t.Pin(&b);
   t.Pin(&c);
-  t.ReleaseUnless([&](const void* p) { return p == &b; });
+  t.DropUnless([&](const void* p) { return p == &b; }, ReleaseIt);
   EXPECT_EQ(a.refs, 1u);
   EXPECT_EQ(b.refs, 2u);
   EXPECT_EQ(c.refs, 1u);
@@ -62,16 +64,36 @@ TEST(PinTable, ManyObjectsSurviveTheTablesGrowth) {
   EXPECT_EQ(found, objects.size());
   EXPECT_EQ(referencedOnce, objects.size());
   // Keep every other one.
-  t.ReleaseUnless([&](const void* p) {
-    for (size_t i = 0; i < objects.size(); i += 2)
-      if (objects[i].get() == p) return true;
-    return false;
-  });
+  t.DropUnless(
+      [&](const void* p) {
+        for (size_t i = 0; i < objects.size(); i += 2)
+          if (objects[i].get() == p) return true;
+        return false;
+      },
+      ReleaseIt);
   EXPECT_EQ(t.size(), objects.size() / 2);
   for (size_t i = 0; i < objects.size(); ++i) {
     EXPECT_EQ(objects[i]->refs, i % 2 ? 1u : 2u) << i;
     EXPECT_EQ(t.Pinned(objects[i].get()), i % 2 == 0) << i;
   }
+}
+
+// A deferred context hands its dropped pins to its list: the references stay
+// until the receiver releases them, each once.
+TEST(PinTable, DroppedPinsAreHandedOnWithTheirReferences) {
+  Counted a, b;
+  PinTable t;
+  t.Pin(&a);
+  t.Pin(&b);
+  std::vector<PinTable::Entry> list;
+  t.DropAll([&](const PinTable::Entry& e) { list.push_back(e); });
+  EXPECT_EQ(t.size(), 0u);
+  EXPECT_EQ(a.refs, 2u);
+  EXPECT_EQ(b.refs, 2u);
+  ASSERT_EQ(list.size(), 2u);
+  for (const auto& e : list) ReleaseIt(e);
+  EXPECT_EQ(a.refs, 1u);
+  EXPECT_EQ(b.refs, 1u);
 }
 
 TEST(PinTable, TheTableReleasesWhatItStillHoldsWhenItGoes) {
