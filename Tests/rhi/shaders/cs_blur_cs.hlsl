@@ -1,6 +1,6 @@
 // The blur of cs_blur.hlsli as a compute shader writing an RGBA8 UAV.
 #include "cs_blur.hlsli"
-[[vk::image_format("rgba8")]] RWTexture2D<float4> g_Dst : register(u0);
+RWTexture2D<float4> g_Dst : register(u0);
 
 [numthreads(8, 8, 1)]
 void main(uint3 id : SV_DispatchThreadID) {

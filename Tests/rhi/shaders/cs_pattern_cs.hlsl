@@ -1,5 +1,5 @@
 // Writes a texel pattern into an RGBA8 UAV: (x, y, x ^ y ^ salt, 255) / 255.
-[[vk::image_format("rgba8")]] RWTexture2D<float4> g_Dst : register(u0);
+RWTexture2D<float4> g_Dst : register(u0);
 cbuffer Pattern : register(b1) {
   uint g_Salt;
 };
