@@ -28,6 +28,13 @@ Texture2DImpl* CreateBackBufferProxy(DeviceImpl* dev, uint32_t w, uint32_t h, DX
   return t;
 }
 
+bool BackBufferReleased(DeviceImpl* dev, const Texture2DImpl* proxy) {
+  if (ContextImpl* ctx = dev->context()) ctx->CompactPins();
+  if (!proxy || proxy->RefCount() <= 1) return true;
+  dev->Log(LogLevel::Error, "ResizeBuffers: release every reference to the back buffer (and its views) first");
+  return false;
+}
+
 class SwapChainHeadless final : public Object<SwapChain>, public SwapChainImplBase {
  public:
   explicit SwapChainHeadless(DeviceImpl* d) : Object(d) {}
@@ -62,11 +69,7 @@ class SwapChainHeadless final : public Object<SwapChain>, public SwapChainImplBa
     return S_OK;
   }
   HRESULT ResizeBuffers(UINT count, UINT w, UINT h, DXGI_FORMAT format, UINT) override {
-    if (ContextImpl* ctx = dev_->context()) ctx->CompactPins();  // views unbound since the last submit
-    if (proxy_->RefCount() > 1) {
-      dev_->Log(LogLevel::Error, "ResizeBuffers: release every reference to the back buffer (and its views) first");
-      return E_INVALIDARG;
-    }
+    if (!BackBufferReleased(dev_, proxy_)) return E_INVALIDARG;
     SWAP_CHAIN_DESC d = desc_;
     if (count) d.BufferCount = count;
     if (w) d.Width = w;

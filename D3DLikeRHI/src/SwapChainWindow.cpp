@@ -84,11 +84,7 @@ class SwapChainWindow final : public Object<SwapChain>, public SwapChainImplBase
   }
 
   HRESULT ResizeBuffers(UINT count, UINT w, UINT h, DXGI_FORMAT format, UINT) override {
-    if (ContextImpl* ctx = dev_->context()) ctx->CompactPins();  // views unbound since the last submit
-    if (proxy_ && proxy_->RefCount() > 1) {
-      dev_->Log(LogLevel::Error, "ResizeBuffers: release every reference to the back buffer (and its views) first");
-      return E_INVALIDARG;
-    }
+    if (!BackBufferReleased(dev_, proxy_)) return E_INVALIDARG;
     if (count) desc_.BufferCount = count;
     desc_.Width = w;
     desc_.Height = h;
