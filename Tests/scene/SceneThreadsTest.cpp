@@ -34,6 +34,14 @@ class SceneThreads : public drrtest::RenderTest {
   // drawn after the workers'.
   bool measurementSplit_ = false;
 
+  // Whether two frames have the same colour and velocity bytes; a failure
+  // says which image differs.
+  static ::testing::AssertionResult SameColourAndVelocity(const Frame& a, const Frame& b) {
+    if (a.colour.pixels != b.colour.pixels) return ::testing::AssertionFailure() << "colour differs";
+    if (a.velocity.pixels != b.velocity.pixels) return ::testing::AssertionFailure() << "velocity differs";
+    return ::testing::AssertionSuccess();
+  }
+
   // Six frames of the cinematic camera on `threads`, from a reset matrix
   // history: three with TAA's sampler, three with TAAU's; the third of each
   // paused.
@@ -111,8 +119,7 @@ TEST_F(SceneThreads, DeferredChunksGiveTheImmediateContextsBytes) {
       ASSERT_EQ(s.drawsPerThread.size(), size_t(threads));
       for (uint32_t n : s.drawsPerThread) EXPECT_GT(n, 0u) << "every chunk on its own thread";
       EXPECT_EQ(s.drawsIssued, one[i].stats.drawsIssued);
-      EXPECT_TRUE(many[i].colour.pixels == one[i].colour.pixels) << threads << " threads, frame " << i;
-      EXPECT_TRUE(many[i].velocity.pixels == one[i].velocity.pixels) << threads << " threads, frame " << i;
+      EXPECT_TRUE(SameColourAndVelocity(many[i], one[i])) << threads << " threads, frame " << i;
     }
   }
 }
@@ -140,8 +147,7 @@ TEST_F(SceneThreads, EqualChunksRecordedOneAfterAnotherGiveTheSameBytes) {
     const auto [lo, hi] = std::minmax_element(s.drawsPerThread.begin(), s.drawsPerThread.end());
     EXPECT_LE(*hi - *lo, 1u) << "frame " << i;
     EXPECT_EQ(s.callerChunks, 1u);
-    EXPECT_TRUE(many[i].colour.pixels == one[i].colour.pixels) << "frame " << i;
-    EXPECT_TRUE(many[i].velocity.pixels == one[i].velocity.pixels) << "frame " << i;
+    EXPECT_TRUE(SameColourAndVelocity(many[i], one[i])) << "frame " << i;
   }
 }
 
@@ -161,8 +167,7 @@ TEST_F(SceneThreads, ManyObjectArenaOnFourListsGivesTheImmediateContextsBytes) {
     EXPECT_GT(one[i].stats.drawsIssued, 2000u);
     EXPECT_EQ(four[i].stats.recordingThreads, 4u);
     for (uint32_t n : four[i].stats.drawsPerThread) EXPECT_GT(n, 0u) << "every chunk on its own thread";
-    EXPECT_TRUE(four[i].colour.pixels == one[i].colour.pixels) << "frame " << i;
-    EXPECT_TRUE(four[i].velocity.pixels == one[i].velocity.pixels) << "frame " << i;
+    EXPECT_TRUE(SameColourAndVelocity(four[i], one[i])) << "frame " << i;
     const uint32_t previous = i > 0 ? automatic[i - 1].stats.drawsIssued : four.back().stats.drawsIssued;
     EXPECT_EQ(automatic[i].stats.recordingThreads, uint32_t(AutoRecordingThreads(previous))) << "frame " << i;
     EXPECT_TRUE(automatic[i].colour.pixels == one[i].colour.pixels) << "frame " << i;
@@ -188,8 +193,7 @@ TEST_F(SceneThreads, TessellatedAndGBufferChunksGiveTheImmediateContextsBytes) {
         EXPECT_GT(s.tessellatedDraws, 0u);
         EXPECT_EQ(s.patchesSubmitted, one[i].stats.patchesSubmitted);
       }
-      EXPECT_TRUE(two[i].colour.pixels == one[i].colour.pixels) << int(path) << ", frame " << i;
-      EXPECT_TRUE(two[i].velocity.pixels == one[i].velocity.pixels) << int(path) << ", frame " << i;
+      EXPECT_TRUE(SameColourAndVelocity(two[i], one[i])) << int(path) << ", frame " << i;
       ASSERT_EQ(two[i].gbuffer.size(), one[i].gbuffer.size());
       for (size_t k = 0; k < two[i].gbuffer.size(); ++k)
         EXPECT_TRUE(two[i].gbuffer[k].pixels == one[i].gbuffer[k].pixels) << "G-buffer target " << k << ", frame " << i;
