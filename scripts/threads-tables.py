@@ -18,7 +18,11 @@ of one build with run R's pair i of the other) with its interval; with
 contention-before-R.txt and contention-after-R.txt (the benchmark's
 --contention runs) a second table: per chunk, each build's ratio of the
 chunk's time beside the other thread to its time alone, and after / before
-paired the same way.
+paired the same way; where the after build's runs print them, a third: where
+its frames' time goes, per thread count (the medians over the runs of each
+run's median Render, draw-list build, chunk per thread, workers'
+FinishCommandList, wait for the workers and list executions, and the frames
+in which the caller drew a worker's chunk).
 A verdict is given only where the interval lies wholly on one side of the
 bound; otherwise "cannot decide". With --write DOC the table replaces the one
 between <!-- threads-tables:begin NAME --> and <!-- threads-tables:end NAME -->
@@ -45,6 +49,9 @@ def markers(data_dir):
 
 PAIR = re.compile(r"^pair \d+: 1 thread ([\d.]+) ms, (\d+) threads ([\d.]+) ms \(medians\), ratio ([\d.]+)")
 CHUNK = re.compile(r"^(\d+) thread\(s\): chunk ms per thread \(medians\) ([\d. /]+);")
+FINISH = re.compile(r"^(\d+) thread\(s\): chunk ms .*; FinishCommandList ms ([\d. /]+)$")
+SERIAL = re.compile(r"^(\d+) thread\(s\): Render ([\d.]+) ms, draw list ([\d.]+) ms, wait for the workers ([\d.]+) ms, "
+                    r"list executions ([\d.]+) ms \(medians\); a worker's chunk drawn by the caller in (\d+) of (\d+) frames")
 DRAWS = re.compile(r"^draws per thread at \d+ threads: ([\d +]+)")
 CONTENTION = re.compile(r"^chunk (\d+) ratios:((?: [\d.]+)*)$")
 ALONE = re.compile(r"^chunk (\d+) \(([^)]*)\): alone ([\d.]+) ms")
@@ -67,7 +74,7 @@ def median_interval(values):
 
 
 def parse(path):
-    run = {"ratios": [], "ms": {1: [], "N": []}, "threads": 0, "chunks": {}, "draws": ""}
+    run = {"ratios": [], "ms": {1: [], "N": []}, "threads": 0, "chunks": {}, "draws": "", "finish": {}, "serial": {}}
     for line in open(path):
         if m := PAIR.match(line):
             run["ratios"].append(float(m.group(4)))
@@ -76,6 +83,10 @@ def parse(path):
             run["threads"] = int(m.group(2))
         elif m := CHUNK.match(line):
             run["chunks"][int(m.group(1))] = [float(x) for x in m.group(2).split("/")]
+            if f := FINISH.match(line.rstrip("\n")):
+                run["finish"][int(f.group(1))] = [float(x) for x in f.group(2).split("/")]
+        elif m := SERIAL.match(line):
+            run["serial"][int(m.group(1))] = [float(m.group(k)) for k in range(2, 6)] + [int(m.group(6)), int(m.group(7))]
         elif m := DRAWS.match(line):
             run["draws"] = m.group(1).strip()
     return run
@@ -170,6 +181,25 @@ def contention_table(folder):
     return "\n".join(out) + "\n"
 
 
+def serial_table(runs):
+    """Where the frame's time goes, 1 thread and N: medians over the runs of each run's medians."""
+    runs = [r for r in runs if r["serial"]]
+    if not runs:
+        return ""
+    out = ["| threads | runs | Render | draw list | chunk per thread (caller / workers) | workers' FinishCommandList | "
+           "wait for the workers | list executions | frames with a worker's chunk drawn by the caller |",
+           "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"]
+    for threads in sorted({t for r in runs for t in r["serial"]}):
+        per = [r for r in runs if threads in r["serial"] and threads in r["chunks"]]
+        col = [st.median(r["serial"][threads][k] for r in per) for k in range(4)]
+        finish = " / ".join(f"{st.median(r['finish'][threads][k] for r in per):.3f}"
+                            for k in range(1, len(per[0]["finish"].get(threads, []))))
+        taken, frames = sum(r["serial"][threads][4] for r in per), sum(r["serial"][threads][5] for r in per)
+        out.append(f"| {threads} | {len(per)} | {col[0]:.3f} | {col[1]:.3f} | {chunk_text(per, threads)} | "
+                   f"{finish or '-'} | {col[2]:.3f} | {col[3]:.3f} | {taken} of {frames} |")
+    return "\n".join(out) + "\n"
+
+
 def tables(folder):
     groups = {}
     for path in sorted(glob.glob(os.path.join(folder, "*.txt"))):
@@ -178,8 +208,8 @@ def tables(folder):
             continue  # not a run (load.txt)
         groups.setdefault(name, []).append(parse(path))
     if "before" in groups and "after" in groups:
-        contention = contention_table(folder)
-        return comparison_table(groups) + ("\n" + contention if contention else "")
+        extra = [t for t in (contention_table(folder), serial_table(groups["after"])) if t]
+        return "\n".join([comparison_table(groups)] + extra)
     order = sorted(groups, key=lambda g: (g != "props", g != "auto", g != "arena2",
                                           int(g.split("-")[1]) if "-" in g else 0))
     out = ["| scene, comparison | draws per thread | runs x pairs | ratio: median [95 % interval] | runs' medians | "

@@ -120,8 +120,13 @@ struct SceneStats {
   double recordMs = 0.0;
   // Per thread, wall clock: from its first draw to the end of its chunk
   // (workers: FinishCommandList included), and from the wake-up call to the
-  // worker running (0 for the caller's thread). Where the time goes.
-  std::vector<double> chunkMs, wakeMs;
+  // worker running (0 for the caller's thread), and its FinishCommandList
+  // (0 for the caller's thread). Where the time goes.
+  std::vector<double> chunkMs, wakeMs, finishMs;
+  // The rest of the last Render's serial path, wall clock: building the draw
+  // list (frame move, culling), the caller's wait for the workers after its
+  // own chunk, and the ExecuteCommandList calls (0 and 0 on one thread).
+  double planMs = 0.0, waitMs = 0.0, executeMs = 0.0;
   // Chunks the caller's thread drew: 1, more when it took over the chunks of
   // workers that had not started yet (their drawsPerThread are then 0).
   uint32_t callerChunks = 1;

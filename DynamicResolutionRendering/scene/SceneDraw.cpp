@@ -268,15 +268,19 @@ void Scene::Render(d3dl::DeviceContext* ctx, const SceneRenderParams& p) {
   const int threads = p.recordingThreads > 0 ? p.recordingThreads : AutoRecordingThreads(uint32_t(s.drawList.size()));
   const bool threaded = threads > 1 && p.viewport && ctx->GetType() == d3dl::DEVICE_CONTEXT_IMMEDIATE;
   if (!threaded || !s.RecordThreaded(ctx, threads, p, f, prepare)) {
+    const auto planning = std::chrono::steady_clock::now();
     prepare();
     SceneImpl::BeginDraws(ctx, f, false);
     const auto drawing = std::chrono::steady_clock::now();
+    s.stats.planMs = std::chrono::duration<double, std::milli>(drawing - planning).count();
+    s.stats.waitMs = s.stats.executeMs = 0.0;
     const uint32_t issued = s.RecordDraws(ctx, f, s.drawList.data(), s.drawList.data() + s.drawList.size());
     s.stats.recordingThreads = 1;
     s.stats.drawsPerThread.assign(1, issued);
     const auto drawn = std::chrono::steady_clock::now();
     s.stats.chunkMs.assign(1, std::chrono::duration<double, std::milli>(drawn - drawing).count());
     s.stats.wakeMs.assign(1, 0.0);
+    s.stats.finishMs.assign(1, 0.0);
     s.stats.callerChunks = 1;
   }
   SceneImpl::EndDraws(ctx);

@@ -21,7 +21,8 @@ enum Owner : int { kFree, kWorker, kCaller };
 // What the threads of one frame share. Each worker writes only its own slots;
 // the caller reads them after RecordingPool::Wait.
 struct ChunkedFrame {
-  explicit ChunkedFrame(size_t n) : owner(n), lists(n), issued(n, 0), chunkMs(n, 0.0), wakeMs(n, 0.0) {}
+  explicit ChunkedFrame(size_t n)
+      : owner(n), lists(n), issued(n, 0), chunkMs(n, 0.0), wakeMs(n, 0.0), finishMs(n, 0.0) {}
   bool Claim(size_t t, Owner who) {
     int expected = kFree;
     return owner[t].compare_exchange_strong(expected, who, std::memory_order_acq_rel);
@@ -30,7 +31,7 @@ struct ChunkedFrame {
   std::vector<std::atomic<int>> owner;
   std::vector<ComPtr<d3dl::CommandList>> lists;
   std::vector<uint32_t> issued;
-  std::vector<double> chunkMs, wakeMs;
+  std::vector<double> chunkMs, wakeMs, finishMs;
   const Clock::time_point woken = Clock::now();
 };
 
@@ -78,11 +79,16 @@ bool SceneImpl::RecordThreaded(d3dl::DeviceContext* immediate, int threads, cons
     const Clock::time_point drawing = Clock::now();
     const auto [first, last] = chunk(t);
     frame.issued[t] = RecordDraws(dc, f, first, last);
+    const Clock::time_point finishing = Clock::now();
     dc->FinishCommandList(0, frame.lists[t].GetAddressOf());
-    frame.chunkMs[t] = Ms(drawing, Clock::now());
+    const Clock::time_point finished = Clock::now();
+    frame.finishMs[t] = Ms(finishing, finished);
+    frame.chunkMs[t] = Ms(drawing, finished);
   };
   pool->Start(&worker);
+  const Clock::time_point planning = Clock::now();
   prepare();
+  const Clock::time_point planned = Clock::now();
   frame.planned.store(true, std::memory_order_release);
   frame.planned.notify_all();
   BeginDraws(immediate, f, false);
@@ -93,13 +99,18 @@ bool SceneImpl::RecordThreaded(d3dl::DeviceContext* immediate, int threads, cons
     const auto [first, last] = chunk(onImmediate++);
     frame.issued[0] += RecordDraws(immediate, f, first, last);
   } while (onImmediate < n && p.callerTakesLateChunks && frame.Claim(onImmediate, kCaller));
-  frame.chunkMs[0] = Ms(drawing, Clock::now());
+  const Clock::time_point drawn = Clock::now();
+  frame.chunkMs[0] = Ms(drawing, drawn);
   pool->Wait();
+  const Clock::time_point joined = Clock::now();
   for (size_t t = 0; t < n; ++t) chunkBalance.Observe(uint32_t(n), uint32_t(t), frame.issued[t], frame.chunkMs[t]);
   // The workers' lists in draw-list order after the chunks drawn here, so the
   // image is the single-threaded one.
   for (size_t t = onImmediate; t < n; ++t)
     if (frame.lists[t] && frame.issued[t] > 0) immediate->ExecuteCommandList(frame.lists[t].Get(), 1);
+  stats.planMs = Ms(planning, planned);
+  stats.waitMs = Ms(drawn, joined);
+  stats.executeMs = Ms(joined, Clock::now());
   for (d3dl::RenderTargetView* v : f.rtv)
     if (v) v->Release();
   if (f.dsv) f.dsv->Release();
@@ -107,6 +118,7 @@ bool SceneImpl::RecordThreaded(d3dl::DeviceContext* immediate, int threads, cons
   stats.drawsPerThread = frame.issued;
   stats.chunkMs = frame.chunkMs;
   stats.wakeMs = frame.wakeMs;
+  stats.finishMs = frame.finishMs;
   stats.callerChunks = uint32_t(onImmediate);
   return true;
 }
