@@ -150,7 +150,7 @@ void ImmediateContext::UseBuffer(VkBuffer buf, SyncState& s, const Usage& u) {
 void ContextImpl::FlushBarriers() {
   if (barriers_.Empty()) return;
   EndRendering();
-  barriers_.Record(cmd_);
+  barriers_.Record(Cmd());
 }
 
 }  // namespace d3dl::impl

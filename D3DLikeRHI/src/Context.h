@@ -237,6 +237,7 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   template <class T>
   void Bind(Bound<T>& slot, T* value) {
     if (slot.Get() == value) return;
+    if (value && cmd_ == VK_NULL_HANDLE) OpenList();  // a new list starts with its first bind
     slot.Set(value);
     if (value && pins_.Pin(value) && pins_.size() > kPinsBeforeCompaction) CompactPins();
   }
@@ -343,8 +344,20 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   void CopyStagingToImage(TextureCore* dst, SubIndex ds, UINT x, UINT y, TextureCore* src,
                           UINT srcSub, const BOX& b);
 
+  // The command buffer being recorded: this frame's, or the deferred list's.
+  // Null on a deferred context between FinishCommandList and the next list's
+  // first bind or command, which take its recording (OpenList): the recycled
+  // recording's reset then runs while the application sets the next list's
+  // state, not in FinishCommandList.
+  VkCommandBuffer Cmd() {
+    if (cmd_ == VK_NULL_HANDLE) [[unlikely]]
+      OpenList();
+    return cmd_;
+  }
+  virtual void OpenList() {}
+
   DeviceImpl* dev_;
-  VkCommandBuffer cmd_ = VK_NULL_HANDLE;  // this frame's command buffer
+  VkCommandBuffer cmd_ = VK_NULL_HANDLE;  // read through Cmd() where a command is recorded
 
   // Committed state of the current command buffer (the hot path first).
   uint32_t dirty_ = kAll;
@@ -411,7 +424,7 @@ inline VkRenderingAttachmentInfo LoadStoreAttachment(VkImageView view, VkImageLa
 inline bool ContextImpl::Commit(bool indexed) {
   const uint32_t ignored = indexed ? uint32_t(kConstants) : uint32_t(kConstants | kIndexBuffer);
   if ((dirty_ & kGraphicsDirty & ~ignored) != 0 || !rendering_ || HasPendingBarriers()) return CommitSlow(indexed);
-  if ((dirty_ & kConstants) && !BindConstantsHot(cmd_)) return false;
+  if ((dirty_ & kConstants) && !BindConstantsHot(Cmd())) return false;
   dirty_ &= indexed ? uint32_t(kComputeDirty) : uint32_t(kComputeDirty | kIndexBuffer);
   return true;
 }

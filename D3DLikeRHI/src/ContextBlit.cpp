@@ -30,7 +30,7 @@ void ContextImpl::BlitRegion(Texture2D* dstTex, const RECT& dstRect, Texture2D* 
   blit.dstOffsets[0] = {dstRect.left, dstRect.top, 0};
   blit.dstOffsets[1] = {dstRect.right, dstRect.bottom, 1};
   const VkFilter vkFilter = BlitIsLinear(dstRect, srcRect, filter) ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-  vkCmdBlitImage(cmd_, src->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst->Cur().image,
+  vkCmdBlitImage(Cmd(), src->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst->Cur().image,
                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, vkFilter);
   const uint64_t serial = dev_->CurrentSerial();
   src->use.Read(serial);

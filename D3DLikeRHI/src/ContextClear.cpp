@@ -32,7 +32,7 @@ void ContextImpl::ClearRectsInScope(uint32_t attachment, VkImageAspectFlags aspe
       if (r > l && b > t) cr.push_back({{{l, t}, {uint32_t(r - l), uint32_t(b - t)}}, 0, layers});
     }
   }
-  if (!cr.empty()) vkCmdClearAttachments(cmd_, 1, &ca, static_cast<uint32_t>(cr.size()), cr.data());
+  if (!cr.empty()) vkCmdClearAttachments(Cmd(), 1, &ca, static_cast<uint32_t>(cr.size()), cr.data());
 }
 
 // Slot of `v` among the bound render targets, or -1.
@@ -58,7 +58,7 @@ void ContextImpl::ClearRenderTargetView(RenderTargetView* rtv, const float color
   UseTexture(v->v.tex, v->v.range(), usage::TransferDst);
   FlushBarriers();
   VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, v->v.baseMip, 1, v->v.baseLayer, v->v.layerCount};
-  vkCmdClearColorImage(cmd_, v->v.tex->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &cv.color, 1, &range);
+  vkCmdClearColorImage(Cmd(), v->v.tex->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &cv.color, 1, &range);
   NoteUse(v->v.tex->use, true);
 }
 
@@ -79,7 +79,7 @@ void ContextImpl::ClearDepthStencilView(DepthStencilView* dsv, UINT flags, float
   UseTexture(v->v.tex, v->v.range(), usage::TransferDst);
   FlushBarriers();
   VkImageSubresourceRange range{aspect, v->v.baseMip, 1, v->v.baseLayer, v->v.layerCount};
-  vkCmdClearDepthStencilImage(cmd_, v->v.tex->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+  vkCmdClearDepthStencilImage(Cmd(), v->v.tex->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                               &cv.depthStencil, 1, &range);
 }
 
@@ -111,11 +111,11 @@ void ContextImpl::ClearUnboundView(RTVImpl* v, const VkClearValue& cv, const REC
   ri.layerCount = v->v.layerCount;
   ri.colorAttachmentCount = 1;
   ri.pColorAttachments = &att;
-  vkCmdBeginRendering(cmd_, &ri);
+  vkCmdBeginRendering(Cmd(), &ri);
   rendering_ = true;  // for ClearRectsInScope's slice count
   renderLayers_ = v->v.layerCount;
   ClearRectsInScope(0, VK_IMAGE_ASPECT_COLOR_BIT, cv, rects, numRects, w, h);
-  vkCmdEndRendering(cmd_);
+  vkCmdEndRendering(Cmd());
   rendering_ = false;
   NoteUse(v->v.tex->use, true);
 }

@@ -115,13 +115,13 @@ bool ContextImpl::CommitCompute() {
   if (dirty_ & kComputePipeline) {
     VkPipeline pipeline = dev_->pipelines().GetComputePipeline(cs, computeProgram_);
     if (!pipeline) return ErrorOnce(OnceError::PipelineFailed), false;
-    if (pipeline != computePipeline_) vkCmdBindPipeline(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+    if (pipeline != computePipeline_) vkCmdBindPipeline(Cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
     computePipeline_ = pipeline;
   }
   // Only constant data changed since the last dispatch: the same set, new offsets.
   const bool sameSet = !(dirty_ & (kComputeDescriptors | kComputeCbSlots)) && computeDesc_.hotLayout;
-  if (!(sameSet && RebindWithNewOffsets(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, computeDesc_)) &&
-      !BindSet(cmd_, VK_PIPELINE_BIND_POINT_COMPUTE, p, computeDesc_, (dirty_ & kComputeDescriptors) != 0))
+  if (!(sameSet && RebindWithNewOffsets(Cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, computeDesc_)) &&
+      !BindSet(Cmd(), VK_PIPELINE_BIND_POINT_COMPUTE, p, computeDesc_, (dirty_ & kComputeDescriptors) != 0))
     return false;
   dirty_ &= ~uint32_t(kComputeDirty);
   return true;
@@ -129,13 +129,13 @@ bool ContextImpl::CommitCompute() {
 
 void ContextImpl::Dispatch(UINT x, UINT y, UINT z) {
   if (!ValidateDispatch(*dev_, x, y, z) || !CommitCompute()) return;
-  vkCmdDispatch(cmd_, x, y, z);
+  vkCmdDispatch(Cmd(), x, y, z);
 }
 
 void ContextImpl::DispatchIndirect(Buffer* args, UINT offset) {
   BufferImpl* b = UseIndirectArgs("DispatchIndirect", args, offset, kDispatchArgsBytes);
   if (!b || !CommitCompute()) return;
-  vkCmdDispatchIndirect(cmd_, b->vkBuffer(), offset);
+  vkCmdDispatchIndirect(Cmd(), b->vkBuffer(), offset);
 }
 
 // ---------------------------------------------------------------------------
@@ -188,14 +188,14 @@ void ContextImpl::ClearUav(UAVImpl* uav, const VkClearColorValue& value, uint32_
   if (v.buf) {
     UseBuffer(v.buf->vkBuffer(), v.buf->sync(), usage::BufferFillDst);
     FlushBarriers();
-    vkCmdFillBuffer(cmd_, v.buf->vkBuffer(), v.bufOffset, v.bufRange, fill);
+    vkCmdFillBuffer(Cmd(), v.buf->vkBuffer(), v.bufOffset, v.bufRange, fill);
     NoteUse(v.buf->use, true);
     return;
   }
   UseTexture(v.tex, OneSubresource(v.baseMip, 0), usage::TransferDst);
   FlushBarriers();
   const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, v.baseMip, 1, 0, 1};
-  vkCmdClearColorImage(cmd_, v.tex->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &value, 1, &range);
+  vkCmdClearColorImage(Cmd(), v.tex->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &value, 1, &range);
   NoteUse(v.tex->use, true);
 }
 

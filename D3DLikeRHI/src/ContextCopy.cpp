@@ -30,7 +30,7 @@ void ContextImpl::CopyBufferRegion(BufferImpl* dst, UINT dstX, BufferImpl* src, 
   UseBuffer(dst->vkBuffer(), dst->sync(), usage::BufferCopyDst);
   FlushBarriers();
   VkBufferCopy region{srcOff, dstX, hi - lo};
-  vkCmdCopyBuffer(cmd_, srcBuf, dst->vkBuffer(), 1, &region);
+  vkCmdCopyBuffer(Cmd(), srcBuf, dst->vkBuffer(), 1, &region);
   const uint64_t s = dev_->CurrentSerial();
   src->use.Read(s);
   dst->use.Write(s);
@@ -67,7 +67,7 @@ void ContextImpl::CopyImageToImage(TextureCore* dst, SubIndex ds, UINT x, UINT y
   region.dstSubresource = {dst->aspect, ds.mip, ds.layer, 1};
   region.dstOffset = {int32_t(x), int32_t(y), 0};
   region.extent = {b.right - b.left, b.bottom - b.top, 1};
-  vkCmdCopyImage(cmd_, src->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst->Cur().image,
+  vkCmdCopyImage(Cmd(), src->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst->Cur().image,
                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
 }
 
@@ -93,7 +93,7 @@ void ContextImpl::CopyImageToStaging(TextureCore* dst, UINT dstSub, UINT x, UINT
   region.imageSubresource = {src->aspect, ss.mip, ss.layer, 1};
   region.imageOffset = {int32_t(b.left), int32_t(b.top), 0};
   region.imageExtent = {b.right - b.left, b.bottom - b.top, 1};
-  vkCmdCopyImageToBuffer(cmd_, src->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst->staging.buffer, 1,
+  vkCmdCopyImageToBuffer(Cmd(), src->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst->staging.buffer, 1,
                          &region);
 }
 
@@ -106,7 +106,7 @@ void ContextImpl::CopyStagingToImage(TextureCore* dst, SubIndex ds, UINT x, UINT
   region.imageSubresource = {dst->aspect, ds.mip, ds.layer, 1};
   region.imageOffset = {int32_t(x), int32_t(y), 0};
   region.imageExtent = {b.right - b.left, b.bottom - b.top, 1};
-  vkCmdCopyBufferToImage(cmd_, src->staging.buffer, dst->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
+  vkCmdCopyBufferToImage(Cmd(), src->staging.buffer, dst->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                          &region);
 }
 
@@ -146,7 +146,7 @@ void ContextImpl::GenerateMips(ShaderResourceView* srv) {
       blit.srcOffsets[1] = {int32_t(t->MipWidth(m - 1)), int32_t(t->MipHeight(m - 1)), 1};
       blit.dstSubresource = {t->aspect, m, l, 1};
       blit.dstOffsets[1] = {int32_t(t->MipWidth(m)), int32_t(t->MipHeight(m)), 1};
-      vkCmdBlitImage(cmd_, t->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, t->Cur().image,
+      vkCmdBlitImage(Cmd(), t->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, t->Cur().image,
                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
     }
   t->use.Write(dev_->CurrentSerial());
@@ -168,7 +168,7 @@ void ContextImpl::ResolveSubresource(Resource* dst, UINT dstSub, Resource* src, 
   region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, ss.mip, ss.layer, 1};
   region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, ds.mip, ds.layer, 1};
   region.extent = {ts->MipWidth(ss.mip), ts->MipHeight(ss.mip), 1};
-  vkCmdResolveImage(cmd_, ts->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, td->Cur().image,
+  vkCmdResolveImage(Cmd(), ts->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, td->Cur().image,
                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
   const uint64_t serial = dev_->CurrentSerial();
   ts->use.Read(serial);

@@ -71,14 +71,16 @@ void DestroyRecording(DeviceImpl* dev, ListRecording& rec) {
 }
 
 DeferredContext::DeferredContext(DeviceImpl* dev)
-    : ContextImpl(dev), listLayoutIndex_(dev->NextDeferredContextIndex()) {
+    : ContextImpl(dev),
+      listLayoutIndex_(dev->NextDeferredContextIndex()),
+      recycler_(std::make_shared<ListRecycler>(dev)) {
   dev_->ChildCreated();
-  BeginRecording();
+  EndList();  // no list yet: the first bind or command takes one
 }
 
 DeferredContext::~DeferredContext() {
   ClearState();
-  DestroyRecording(dev_, *rec_);  // an unfinished list, never submitted
+  if (rec_) DestroyRecording(dev_, *rec_);  // an unfinished list, never submitted
   recycler_->Close();             // its lists may outlive it: they destroy theirs
 }
 
@@ -110,10 +112,10 @@ void DeferredContext::UpdateSubresource(Resource* dst, UINT sub, const BOX* box,
 }
 
 // A new list: its own command pool, secondary buffer, descriptor pools and
-// ring (recycled from an earlier list of this context when one is free);
-// nothing is bound in a new command buffer.
-void DeferredContext::BeginRecording() {
-  if (!recycler_) recycler_ = std::make_shared<ListRecycler>(dev_);
+// ring (recycled from an earlier list of this context when one is free,
+// which resets them here, on this context's thread). The list's state was
+// made dirty when the last one ended (EndList).
+void DeferredContext::OpenList() {
   rec_ = recycler_->Take();
   drawCount_ = &rec_->draws;
   // Executed outside rendering scopes (it begins its own): nothing inherited.
@@ -123,6 +125,13 @@ void DeferredContext::BeginRecording() {
   bi.pInheritanceInfo = &inherit;
   vkBeginCommandBuffer(rec_->cmd, &bi);
   cmd_ = rec_->cmd;
+}
+
+// After a list's end: nothing is bound in the next list's command buffer.
+// Its recording is taken later, by OpenList.
+void DeferredContext::EndList() {
+  cmd_ = VK_NULL_HANDLE;
+  drawCount_ = &closedDraws_;
   rendering_ = false;
   labelDepth_ = 0;
   MarkDirtyAll();
@@ -131,13 +140,14 @@ void DeferredContext::BeginRecording() {
 HRESULT DeferredContext::FinishCommandList(BOOL restoreState, CommandList** out) {
   const HRESULT hr = ValidateFinishCommandList(*dev_, true, out);
   if (FAILED(hr)) return hr;
+  if (!rec_) OpenList();  // an empty list
   EndRendering();
   FlushBarriers();
   while (labelDepth_ > 0) EndEvent();
   vkEndCommandBuffer(cmd_);
   pins_.DropAll([this](const PinTable::Entry& e) { Unpinned(e); });  // the list holds what was bound
   std::unique_ptr<ListRecording> done = std::move(rec_);
-  BeginRecording();
+  EndList();
   if (restoreState)
     PinBoundState();  // the context's own references to the state it keeps
   else
@@ -151,23 +161,24 @@ void DeferredContext::ExecuteCommandList(CommandList* list, BOOL) { ValidateExec
 // ---------------------------------------------------------------------------
 // Recording: synchronisation state local to the list
 ListSyncEntry& DeferredContext::ListEntry(SyncState* global, const Usage& u, bool* first) {
-  auto [it, added] = rec_->syncIndex.emplace(global, static_cast<uint32_t>(rec_->syncs.size()));
+  ListRecording& r = Rec();
+  auto [it, added] = r.syncIndex.emplace(global, static_cast<uint32_t>(r.syncs.size()));
   *first = added;
   if (added) {
     ListSyncEntry e;
     e.global = global;
     e.entry = u;
     e.initial = e.local = StateAfterEntry(u);
-    rec_->syncs.push_back(e);
+    r.syncs.push_back(e);
   }
-  return rec_->syncs[it->second];
+  return r.syncs[it->second];
 }
 
 // The list's entries of every subresource of `img`, made together at the
 // image's first use in the list (unused until touched): one lookup per
 // texture and use, not one per subresource.
 uint32_t DeferredContext::ListImageEntries(TextureCore* t, TextureImage& img) {
-  ListRecording& r = *rec_;
+  ListRecording& r = Rec();
   const auto [it, added] = r.syncIndex.emplace(img.sync.data(), static_cast<uint32_t>(r.syncs.size()));
   if (added) {
     const uint32_t mips = t->desc.MipLevels;
@@ -187,7 +198,7 @@ uint32_t DeferredContext::ListImageEntries(TextureCore* t, TextureImage& img) {
 void DeferredContext::UseTexture(TextureCore* t, const SubresourceRange& r, const Usage& u) {
   if (u.layout != VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) dirty_ |= kSrvLayouts;
   TextureImage& img = t->Cur();
-  ListRecording& rec = *rec_;
+  ListRecording& rec = Rec();
   ListRecording::RepeatedRead& last = rec.repeatedReads[RepeatedReadSlot(img.sync.data())];
   if (!u.write && IsRepeatedRead(last, rec.readEpoch, img.sync.data(), r, u)) return;
   const uint32_t mipCount = t->desc.MipLevels;
@@ -229,13 +240,13 @@ void DeferredContext::UseBuffer(VkBuffer buf, SyncState& s, const Usage& u) {
 }
 
 void DeferredContext::NoteUse(GpuUse& u, bool write) {
-  auto [it, added] = rec_->uses.emplace(&u, write);
+  auto [it, added] = Rec().uses.emplace(&u, write);
   if (!added) it->second = it->second || write;
 }
 
 template <class T>
 void DeferredContext::Retain(T* object) {
-  if (!object || !rec_->retained.Insert(object)) return;
+  if (!object || !Rec().retained.Insert(object)) return;
   object->AddRef();
   rec_->held.push_back({object, [](void* p) { static_cast<T*>(p)->Release(); }});
 }
@@ -253,7 +264,7 @@ void DeferredContext::Unpinned(const PinTable::Entry& e) {
 // Recording: buffer contents in the list's own ring
 ListRecording::Slice* DeferredContext::NewListSlice(BufferImpl* b, bool discarded, bool written) {
   const VkDeviceSize align = b->IsConstantBuffer() ? dev_->uboAlign() : kDynamicAlign;
-  ListRecording& r = *rec_;
+  ListRecording& r = Rec();
   RingAlloc a;
   if (!r.ring.TryAllocate(b->size(), align, &a) && !r.ring.Allocate(b->size(), align, &a)) return nullptr;
   ListRecording::Slice* e = r.lastBuffer == b ? r.lastEntry : nullptr;
@@ -271,7 +282,7 @@ ListRecording::Slice* DeferredContext::NewListSlice(BufferImpl* b, bool discarde
 // The buffer's contents in this list so far (null: not yet), through the
 // single-entry cache (one constant buffer per draw is common).
 ListRecording::Slice* DeferredContext::FindListSlice(const BufferImpl* b) {
-  ListRecording& r = *rec_;
+  ListRecording& r = Rec();
   if (r.lastBuffer == b) return r.lastEntry;
   const auto it = r.slices.find(b);
   if (it == r.slices.end()) return nullptr;

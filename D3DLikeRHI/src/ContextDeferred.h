@@ -55,7 +55,10 @@ class DeferredContext final : public ContextImpl {
   void NoteUse(GpuUse& u, bool write) override;
   void Hold(Unknown* object) override;
   void Unpinned(const PinTable::Entry& e) override;
-  DescriptorPools SetPools() override { return {rec_->descPools, rec_->descPoolCurrent, false}; }
+  DescriptorPools SetPools() override {
+    ListRecording& r = Rec();
+    return {r.descPools, r.descPoolCurrent, false};
+  }
   VkPipelineLayout BindingLayout(const ProgramLayout& p) override {
     return dev_->pipelines().ListLayout(p, listLayoutIndex_);
   }
@@ -66,7 +69,13 @@ class DeferredContext final : public ContextImpl {
   // Logs that `fn` is forbidden here (as in D3D11), or not supported here by
   // this port (`portLimit`).
   void Reject(const char* fn, bool portLimit);
-  void BeginRecording();
+  void OpenList() override;
+  void EndList();
+  // The list being recorded, taken first when none is (OpenList).
+  ListRecording& Rec() {
+    if (!rec_) OpenList();
+    return *rec_;
+  }
   // The list's synchronisation entries (its own view of resource states).
   ListSyncEntry& ListEntry(SyncState* global, const Usage& u, bool* first);
   uint32_t ListImageEntries(TextureCore* t, TextureImage& img);
@@ -83,7 +92,8 @@ class DeferredContext final : public ContextImpl {
   // share one reference count in the driver.
   const uint32_t listLayoutIndex_;
   std::shared_ptr<ListRecycler> recycler_;  // this context's recordings for reuse (ListRecycler.cpp)
-  std::unique_ptr<ListRecording> rec_;      // the list being recorded (cmd_ is its secondary buffer)
+  std::unique_ptr<ListRecording> rec_;      // the list being recorded (cmd_ is its secondary buffer); null: none yet
+  uint64_t closedDraws_ = 0;                // drawCount_'s target while no list is open (never counted: draws open one)
 };
 
 }  // namespace d3dl::impl

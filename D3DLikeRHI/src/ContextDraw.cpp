@@ -81,7 +81,7 @@ uint32_t ContextImpl::TargetSamples() const {
 
 void ContextImpl::EndRendering() {
   if (!rendering_) return;
-  vkCmdEndRendering(cmd_);
+  vkCmdEndRendering(Cmd());
   rendering_ = false;
 }
 
@@ -113,7 +113,7 @@ bool ContextImpl::BeginRendering() {
   ri.pDepthAttachment = om.depthStencilView ? &depth : nullptr;
   const bool stencil = om.depthStencilView && (om.depthStencilView->v.aspect & VK_IMAGE_ASPECT_STENCIL_BIT);
   ri.pStencilAttachment = stencil ? &depth : nullptr;
-  vkCmdBeginRendering(cmd_, &ri);
+  vkCmdBeginRendering(Cmd(), &ri);
   rendering_ = true;
   renderLayers_ = layers;
   if (w != renderW_ || h != renderH_) dirty_ |= kViewport | kScissor;
@@ -170,7 +170,7 @@ bool ContextImpl::CommitSlow(bool indexed) {
   UseDrawResources(indexed);
   if (HasPendingBarriers()) FlushBarriers();
   if (!rendering_ && !BeginRendering()) return false;
-  VkCommandBuffer cmd = cmd_;
+  VkCommandBuffer cmd = Cmd();
   if ((dirty_ & kPipeline) && !BindPipeline(cmd)) return false;
   SetDynamicState(cmd);
   if (dirty_ & kVertexBuffers) BindVertexBuffers(cmd);
@@ -393,22 +393,22 @@ bool ContextImpl::WriteSet(const ProgramLayout& p, BoundDescriptors& d) {
 
 void ContextImpl::Draw(UINT count, UINT start) {
   if (!Commit(false)) return;
-  vkCmdDraw(cmd_, count, 1, start, 0);
+  vkCmdDraw(Cmd(), count, 1, start, 0);
   CountDraw();
 }
 void ContextImpl::DrawInstanced(UINT count, UINT instances, UINT start, UINT startInstance) {
   if (!Commit(false)) return;
-  vkCmdDraw(cmd_, count, instances, start, startInstance);
+  vkCmdDraw(Cmd(), count, instances, start, startInstance);
   CountDraw();
 }
 void ContextImpl::DrawIndexed(UINT count, UINT start, int32_t base) {
   if (!Commit(true)) return;
-  vkCmdDrawIndexed(cmd_, count, 1, start, base, 0);
+  vkCmdDrawIndexed(Cmd(), count, 1, start, base, 0);
   CountDraw();
 }
 void ContextImpl::DrawIndexedInstanced(UINT count, UINT instances, UINT start, int32_t base, UINT startInstance) {
   if (!Commit(true)) return;
-  vkCmdDrawIndexed(cmd_, count, instances, start, base, startInstance);
+  vkCmdDrawIndexed(Cmd(), count, instances, start, base, startInstance);
   CountDraw();
 }
 
@@ -431,13 +431,13 @@ static_assert(sizeof(VkDrawIndexedIndirectCommand) == kDrawIndexedArgsBytes);
 void ContextImpl::DrawInstancedIndirect(Buffer* args, UINT offset) {
   BufferImpl* b = UseIndirectArgs("DrawInstancedIndirect", args, offset, kDrawArgsBytes);
   if (!b || !Commit(false)) return;
-  vkCmdDrawIndirect(cmd_, b->vkBuffer(), offset, 1, kDrawArgsBytes);
+  vkCmdDrawIndirect(Cmd(), b->vkBuffer(), offset, 1, kDrawArgsBytes);
   CountDraw();
 }
 void ContextImpl::DrawIndexedInstancedIndirect(Buffer* args, UINT offset) {
   BufferImpl* b = UseIndirectArgs("DrawIndexedInstancedIndirect", args, offset, kDrawIndexedArgsBytes);
   if (!b || !Commit(true)) return;
-  vkCmdDrawIndexedIndirect(cmd_, b->vkBuffer(), offset, 1, kDrawIndexedArgsBytes);
+  vkCmdDrawIndexedIndirect(Cmd(), b->vkBuffer(), offset, 1, kDrawIndexedArgsBytes);
   CountDraw();
 }
 

@@ -43,7 +43,7 @@ void ImmediateContext::ExecuteCommandList(CommandList* commandList, BOOL restore
       UseBuffer(e.buffer, *e.global, e.entry);
   }
   FlushBarriers();
-  vkCmdExecuteCommands(cmd_, 1, &r.cmd);
+  vkCmdExecuteCommands(Cmd(), 1, &r.cmd);
   for (const ListSyncEntry& e : r.syncs)
     if (e.used && !SameState(e.local, e.initial)) *e.global = e.local;  // the list changed it
   const uint64_t serial = dev_->CurrentSerial();

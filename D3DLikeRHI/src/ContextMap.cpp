@@ -167,7 +167,7 @@ void ContextImpl::CopyFromRing(TextureCore* t, const SubIndex& si, const RingAll
   region.imageSubresource = {t->aspect, si.mip, si.layer, 1};
   region.imageOffset = {int32_t(box.left), int32_t(box.top), 0};
   region.imageExtent = {box.right - box.left, box.bottom - box.top, 1};
-  vkCmdCopyBufferToImage(cmd_, a.buffer, t->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  vkCmdCopyBufferToImage(Cmd(), a.buffer, t->Cur().image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
 }
 
 // ---------------------------------------------------------------------------
@@ -203,7 +203,7 @@ void ContextImpl::UpdateBuffer(BufferImpl* b, UINT lo, UINT hi, const void* data
   UseBuffer(b->vkBuffer(), b->sync(), usage::BufferCopyDst);
   FlushBarriers();
   VkBufferCopy copy{a.offset, lo, hi - lo};
-  vkCmdCopyBuffer(cmd_, a.buffer, b->vkBuffer(), 1, &copy);
+  vkCmdCopyBuffer(Cmd(), a.buffer, b->vkBuffer(), 1, &copy);
   b->use.Write(dev_->CurrentSerial());
 }
 

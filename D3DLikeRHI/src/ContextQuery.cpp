@@ -51,7 +51,7 @@ void ContextImpl::End(Query* query) {
       return;
     }
     q->index = index;
-    vkCmdWriteTimestamp2(cmd_, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, q->pool, index);
+    vkCmdWriteTimestamp2(Cmd(), VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, q->pool, index);
   }
   q->begun = false;
 }
@@ -107,7 +107,7 @@ void ContextImpl::BeginEvent(const char* name) {
   if (!dev_->debugUtils().cmdBeginLabel) return;
   VkDebugUtilsLabelEXT l{VK_STRUCTURE_TYPE_DEBUG_UTILS_LABEL_EXT};
   l.pLabelName = name ? name : "";
-  dev_->debugUtils().cmdBeginLabel(cmd_, &l);
+  dev_->debugUtils().cmdBeginLabel(Cmd(), &l);
 }
 
 void ContextImpl::EndEvent() {
@@ -116,7 +116,7 @@ void ContextImpl::EndEvent() {
     return;
   }
   --labelDepth_;
-  if (dev_->debugUtils().cmdEndLabel) dev_->debugUtils().cmdEndLabel(cmd_);
+  if (dev_->debugUtils().cmdEndLabel) dev_->debugUtils().cmdEndLabel(Cmd());
 }
 
 }  // namespace d3dl::impl

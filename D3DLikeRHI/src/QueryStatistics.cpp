@@ -63,8 +63,8 @@ void ContextImpl::BeginStatistics(QueryImpl* q) {
     return;
   }
   EndRendering();
-  vkCmdResetQueryPool(cmd_, q->statsPool, 0, 1);
-  vkCmdBeginQuery(cmd_, q->statsPool, 0, 0);
+  vkCmdResetQueryPool(Cmd(), q->statsPool, 0, 1);
+  vkCmdBeginQuery(Cmd(), q->statsPool, 0, 0);
   q->begun = true;
   q->statsCut = false;
   q->resolved = false;
@@ -79,7 +79,7 @@ void ContextImpl::EndStatistics(QueryImpl* q) {
     return;
   }
   EndRendering();
-  vkCmdEndQuery(cmd_, q->statsPool, 0);
+  vkCmdEndQuery(Cmd(), q->statsPool, 0);
   q->serial = dev_->CurrentSerial();
   q->begun = false;
   activeStatistics_ = nullptr;

@@ -254,5 +254,49 @@ TEST_F(RhiDeferredCompute, ReleasedListsAreRecycledNotDestroyed) {
   EXPECT_EQ(out[0], 0xffffu);  // 16 read-modify-writes, in order
 }
 
+// A deferred context takes its next list's recording (a released list's,
+// reset for reuse) when that list starts, at its first bind or command, not
+// in FinishCommandList: the reset runs while the application sets up the
+// next list (the scene's workers do it while the main thread builds the draw
+// list). A list finished with nothing in it still executes.
+TEST_F(RhiDeferredCompute, TheNextListTakesItsRecordingAtItsFirstBindNotInFinish) {
+  const UINT n = 64;
+  auto buf = MakeViewBuffer(n * 4, 0, std::vector<uint32_t>(n, 0).data());
+  const auto ud = RawUavDesc(0, n);
+  auto uav = MakeUAV(buf.Get(), &ud);
+  auto cs = LoadCS("rhi_cs_accumulate_cs.spv");
+  auto cb = MakeCB(16);
+  auto deferred = MakeDeferred();
+  const auto resets = [&] {
+    DEVICE_STATS s;
+    device()->GetStats(&s);
+    return s.CommandPoolResets;
+  };
+  const auto recordAfterShader = [&] {
+    deferred->CSSetConstantBuffers(0, 1, cb.GetAddressOf());
+    UnorderedAccessView* u = uav.Get();
+    deferred->CSSetUnorderedAccessViews(0, 1, &u, nullptr);
+    deferred->Dispatch(1, 1, 1);
+    return Finish(deferred.Get());
+  };
+  {  // executed, completed and released: its recording waits for reuse
+    deferred->CSSetShader(cs.Get());
+    auto first = recordAfterShader();
+    context()->ExecuteCommandList(first.Get(), 0);
+    context()->Flush();
+    device()->WaitIdle();
+  }
+  const uint64_t before = resets();
+  deferred->CSSetShader(cs.Get());  // the second list's first bind
+  EXPECT_EQ(resets(), before + 1) << "the first bind takes the released list's recording";
+  auto second = recordAfterShader();
+  EXPECT_EQ(resets(), before + 1) << "FinishCommandList takes no recording";
+  auto empty = Finish(deferred.Get());
+  ASSERT_TRUE(empty);
+  context()->ExecuteCommandList(second.Get(), 0);
+  context()->ExecuteCommandList(empty.Get(), 0);
+  EXPECT_EQ(ReadWords(buf.Get())[0], 0x3u);  // two read-modify-writes
+}
+
 }  // namespace
 }  // namespace rhitest
