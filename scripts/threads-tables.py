@@ -21,8 +21,9 @@ chunk's time beside the other thread to its time alone, and after / before
 paired the same way; where the after build's runs print them, a third: where
 its frames' time goes, per thread count (the medians over the runs of each
 run's median Render, draw-list build, chunk per thread, workers'
-FinishCommandList, wait for the workers and list executions, and the frames
-in which the caller drew a worker's chunk).
+FinishCommandList, wait for the workers and list executions, the frames in
+which the caller drew a worker's chunk and, where the runs print them, the
+units of workers' chunks it drew).
 A verdict is given only where the interval lies wholly on one side of the
 bound; otherwise "cannot decide". With --write DOC the table replaces the one
 between <!-- threads-tables:begin NAME --> and <!-- threads-tables:end NAME -->
@@ -51,7 +52,8 @@ PAIR = re.compile(r"^pair \d+: 1 thread ([\d.]+) ms, (\d+) threads ([\d.]+) ms \
 CHUNK = re.compile(r"^(\d+) thread\(s\): chunk ms per thread \(medians\) ([\d. /]+);")
 FINISH = re.compile(r"^(\d+) thread\(s\): chunk ms .*; FinishCommandList ms ([\d. /]+)$")
 SERIAL = re.compile(r"^(\d+) thread\(s\): Render ([\d.]+) ms, draw list ([\d.]+) ms, wait for the workers ([\d.]+) ms, "
-                    r"list executions ([\d.]+) ms \(medians\); a worker's chunk drawn by the caller in (\d+) of (\d+) frames")
+                    r"list executions ([\d.]+) ms \(medians\); a worker's chunk drawn by the caller in (\d+) of (\d+) frames"
+                    r"(?:, (\d+) units of workers' chunks)?")
 DRAWS = re.compile(r"^draws per thread at \d+ threads: ([\d +]+)")
 CONTENTION = re.compile(r"^chunk (\d+) ratios:((?: [\d.]+)*)$")
 ALONE = re.compile(r"^chunk (\d+) \(([^)]*)\): alone ([\d.]+) ms")
@@ -86,7 +88,8 @@ def parse(path):
             if f := FINISH.match(line.rstrip("\n")):
                 run["finish"][int(f.group(1))] = [float(x) for x in f.group(2).split("/")]
         elif m := SERIAL.match(line):
-            run["serial"][int(m.group(1))] = [float(m.group(k)) for k in range(2, 6)] + [int(m.group(6)), int(m.group(7))]
+            units = int(m.group(8)) if m.group(8) is not None else None
+            run["serial"][int(m.group(1))] = [float(m.group(k)) for k in range(2, 6)] + [int(m.group(6)), int(m.group(7)), units]
         elif m := DRAWS.match(line):
             run["draws"] = m.group(1).strip()
     return run
@@ -186,17 +189,22 @@ def serial_table(runs):
     runs = [r for r in runs if r["serial"]]
     if not runs:
         return ""
+    units = any(v[6] is not None for r in runs for v in r["serial"].values())
     out = ["| threads | runs | Render | draw list | chunk per thread (caller / workers) | workers' FinishCommandList | "
-           "wait for the workers | list executions | frames with a worker's chunk drawn by the caller |",
-           "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"]
+           "wait for the workers | list executions | frames with a worker's chunk drawn by the caller |"
+           + (" units of workers' chunks drawn by the caller |" if units else ""),
+           "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |" + (" ---: |" if units else "")]
     for threads in sorted({t for r in runs for t in r["serial"]}):
         per = [r for r in runs if threads in r["serial"] and threads in r["chunks"]]
         col = [st.median(r["serial"][threads][k] for r in per) for k in range(4)]
         finish = " / ".join(f"{st.median(r['finish'][threads][k] for r in per):.3f}"
                             for k in range(1, len(per[0]["finish"].get(threads, []))))
         taken, frames = sum(r["serial"][threads][4] for r in per), sum(r["serial"][threads][5] for r in per)
-        out.append(f"| {threads} | {len(per)} | {col[0]:.3f} | {col[1]:.3f} | {chunk_text(per, threads)} | "
-                   f"{finish or '-'} | {col[2]:.3f} | {col[3]:.3f} | {taken} of {frames} |")
+        row = (f"| {threads} | {len(per)} | {col[0]:.3f} | {col[1]:.3f} | {chunk_text(per, threads)} | "
+               f"{finish or '-'} | {col[2]:.3f} | {col[3]:.3f} | {taken} of {frames} |")
+        if units:
+            row += f" {sum(r['serial'][threads][6] or 0 for r in per)} |"
+        out.append(row)
     return "\n".join(out) + "\n"
 
 
