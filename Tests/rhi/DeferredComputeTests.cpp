@@ -48,6 +48,26 @@ class RhiDeferredCompute : public ComputeTest {
     EXPECT_EQ(ctx->FinishCommandList(0, list.ReleaseAndGetAddressOf()), S_OK);
     return list;
   }
+  // What the recording-reuse tests record, list after list: a deferred
+  // context, cs_accumulate_cs (every word w = w * 2 + 1 per dispatch) over 64
+  // zeroed words behind a raw UAV, and a 16-byte dynamic constant buffer.
+  struct Accumulate {
+    ComPtr<Buffer> words, cb;
+    ComPtr<UnorderedAccessView> uav;
+    ComPtr<ComputeShader> cs;
+    ComPtr<DeviceContext> deferred;
+  };
+  Accumulate MakeAccumulate() {
+    constexpr UINT kWords = 64;
+    Accumulate a;
+    a.words = MakeViewBuffer(kWords * 4, 0, std::vector<uint32_t>(kWords, 0).data());
+    const auto ud = RawUavDesc(0, kWords);
+    a.uav = MakeUAV(a.words.Get(), &ud);
+    a.cs = LoadCS("rhi_cs_accumulate_cs.spv");
+    a.cb = MakeCB(16);
+    a.deferred = MakeDeferred();
+    return a;
+  }
   // Texels of `tex` that differ from cs_pattern_cs's pattern with `salt`,
   // sampled by a draw into a new target (the read after the UAV write).
   int SampledPatternMismatches(ShaderResourceView* srv, uint32_t w, uint32_t h, uint32_t salt) {
@@ -223,22 +243,17 @@ TEST_F(RhiDeferredCompute, IndirectArgumentsWrittenInAListAreReadByItsDispatchIn
 // after a warm-up, recording, executing and releasing a list per frame hands
 // nothing more to the deferred destruction.
 TEST_F(RhiDeferredCompute, ReleasedListsAreRecycledNotDestroyed) {
-  const UINT n = 64;
-  auto buf = MakeViewBuffer(n * 4, 0, std::vector<uint32_t>(n, 0).data());
-  const auto ud = RawUavDesc(0, n);
-  auto uav = MakeUAV(buf.Get(), &ud);
-  auto cs = LoadCS("rhi_cs_accumulate_cs.spv");
-  auto cb = MakeCB(16);
-  auto deferred = MakeDeferred();
+  const Accumulate a = MakeAccumulate();
+  DeviceContext* deferred = a.deferred.Get();
   auto frame = [&] {
     const uint32_t unused[4] = {};
-    WriteConstants(deferred.Get(), cb.Get(), unused, sizeof(unused));  // a ring slice
-    deferred->CSSetShader(cs.Get());
-    deferred->CSSetConstantBuffers(0, 1, cb.GetAddressOf());  // a descriptor set
-    UnorderedAccessView* u = uav.Get();
+    WriteConstants(deferred, a.cb.Get(), unused, sizeof(unused));  // a ring slice
+    deferred->CSSetShader(a.cs.Get());
+    deferred->CSSetConstantBuffers(0, 1, a.cb.GetAddressOf());  // a descriptor set
+    UnorderedAccessView* u = a.uav.Get();
     deferred->CSSetUnorderedAccessViews(0, 1, &u, nullptr);
     deferred->Dispatch(1, 1, 1);
-    auto list = Finish(deferred.Get());
+    auto list = Finish(deferred);
     context()->ExecuteCommandList(list.Get(), 0);
     context()->Flush();
   };
@@ -250,7 +265,7 @@ TEST_F(RhiDeferredCompute, ReleasedListsAreRecycledNotDestroyed) {
   device()->GetStats(&after);
   EXPECT_EQ(after.ObjectsDestroyed + after.DeferredDestructionsPending,
             before.ObjectsDestroyed + before.DeferredDestructionsPending);
-  const auto out = ReadWords(buf.Get());
+  const auto out = ReadWords(a.words.Get());
   EXPECT_EQ(out[0], 0xffffu);  // 16 read-modify-writes, in order
 }
 
@@ -260,42 +275,37 @@ TEST_F(RhiDeferredCompute, ReleasedListsAreRecycledNotDestroyed) {
 // next list (the scene's workers do it while the main thread builds the draw
 // list). A list finished with nothing in it still executes.
 TEST_F(RhiDeferredCompute, TheNextListTakesItsRecordingAtItsFirstBindNotInFinish) {
-  const UINT n = 64;
-  auto buf = MakeViewBuffer(n * 4, 0, std::vector<uint32_t>(n, 0).data());
-  const auto ud = RawUavDesc(0, n);
-  auto uav = MakeUAV(buf.Get(), &ud);
-  auto cs = LoadCS("rhi_cs_accumulate_cs.spv");
-  auto cb = MakeCB(16);
-  auto deferred = MakeDeferred();
+  const Accumulate a = MakeAccumulate();
+  DeviceContext* deferred = a.deferred.Get();
   const auto resets = [&] {
     DEVICE_STATS s;
     device()->GetStats(&s);
     return s.CommandPoolResets;
   };
   const auto recordAfterShader = [&] {
-    deferred->CSSetConstantBuffers(0, 1, cb.GetAddressOf());
-    UnorderedAccessView* u = uav.Get();
+    deferred->CSSetConstantBuffers(0, 1, a.cb.GetAddressOf());
+    UnorderedAccessView* u = a.uav.Get();
     deferred->CSSetUnorderedAccessViews(0, 1, &u, nullptr);
     deferred->Dispatch(1, 1, 1);
-    return Finish(deferred.Get());
+    return Finish(deferred);
   };
   {  // executed, completed and released: its recording waits for reuse
-    deferred->CSSetShader(cs.Get());
+    deferred->CSSetShader(a.cs.Get());
     auto first = recordAfterShader();
     context()->ExecuteCommandList(first.Get(), 0);
     context()->Flush();
     device()->WaitIdle();
   }
   const uint64_t before = resets();
-  deferred->CSSetShader(cs.Get());  // the second list's first bind
+  deferred->CSSetShader(a.cs.Get());  // the second list's first bind
   EXPECT_EQ(resets(), before + 1) << "the first bind takes the released list's recording";
   auto second = recordAfterShader();
   EXPECT_EQ(resets(), before + 1) << "FinishCommandList takes no recording";
-  auto empty = Finish(deferred.Get());
+  auto empty = Finish(deferred);
   ASSERT_TRUE(empty);
   context()->ExecuteCommandList(second.Get(), 0);
   context()->ExecuteCommandList(empty.Get(), 0);
-  EXPECT_EQ(ReadWords(buf.Get())[0], 0x3u);  // two read-modify-writes
+  EXPECT_EQ(ReadWords(a.words.Get())[0], 0x3u);  // two read-modify-writes
 }
 
 }  // namespace
