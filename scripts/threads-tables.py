@@ -54,6 +54,7 @@ FINISH = re.compile(r"^(\d+) thread\(s\): chunk ms .*; FinishCommandList ms ([\d
 SERIAL = re.compile(r"^(\d+) thread\(s\): Render ([\d.]+) ms, draw list ([\d.]+) ms, wait for the workers ([\d.]+) ms, "
                     r"list executions ([\d.]+) ms \(medians\); a worker's chunk drawn by the caller in (\d+) of (\d+) frames"
                     r"(?:, (\d+) units of workers' chunks)?")
+SERIAL_MS = ("render", "plan", "wait", "execute")  # SERIAL's times, in its group order
 DRAWS = re.compile(r"^draws per thread at \d+ threads: ([\d +]+)")
 CONTENTION = re.compile(r"^chunk (\d+) ratios:((?: [\d.]+)*)$")
 ALONE = re.compile(r"^chunk (\d+) \(([^)]*)\): alone ([\d.]+) ms")
@@ -88,8 +89,10 @@ def parse(path):
             if f := FINISH.match(line.rstrip("\n")):
                 run["finish"][int(f.group(1))] = [float(x) for x in f.group(2).split("/")]
         elif m := SERIAL.match(line):
-            units = int(m.group(8)) if m.group(8) is not None else None
-            run["serial"][int(m.group(1))] = [float(m.group(k)) for k in range(2, 6)] + [int(m.group(6)), int(m.group(7)), units]
+            run["serial"][int(m.group(1))] = {
+                **{key: float(m.group(k)) for k, key in enumerate(SERIAL_MS, start=2)},
+                "taken": int(m.group(6)), "frames": int(m.group(7)),
+                "units": int(m.group(8)) if m.group(8) is not None else None}
         elif m := DRAWS.match(line):
             run["draws"] = m.group(1).strip()
     return run
@@ -189,21 +192,21 @@ def serial_table(runs):
     runs = [r for r in runs if r["serial"]]
     if not runs:
         return ""
-    units = any(v[6] is not None for r in runs for v in r["serial"].values())
+    units = any(v["units"] is not None for r in runs for v in r["serial"].values())
     out = ["| threads | runs | Render | draw list | chunk per thread (caller / workers) | workers' FinishCommandList | "
            "wait for the workers | list executions | frames with a worker's chunk drawn by the caller |"
            + (" units of workers' chunks drawn by the caller |" if units else ""),
            "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |" + (" ---: |" if units else "")]
     for threads in sorted({t for r in runs for t in r["serial"]}):
         per = [r for r in runs if threads in r["serial"] and threads in r["chunks"]]
-        col = [st.median(r["serial"][threads][k] for r in per) for k in range(4)]
+        col = {key: st.median(r["serial"][threads][key] for r in per) for key in SERIAL_MS}
         finish = " / ".join(f"{st.median(r['finish'][threads][k] for r in per):.3f}"
                             for k in range(1, len(per[0]["finish"].get(threads, []))))
-        taken, frames = sum(r["serial"][threads][4] for r in per), sum(r["serial"][threads][5] for r in per)
-        row = (f"| {threads} | {len(per)} | {col[0]:.3f} | {col[1]:.3f} | {chunk_text(per, threads)} | "
-               f"{finish or '-'} | {col[2]:.3f} | {col[3]:.3f} | {taken} of {frames} |")
+        total = {key: sum(r["serial"][threads][key] or 0 for r in per) for key in ("taken", "frames", "units")}
+        row = (f"| {threads} | {len(per)} | {col['render']:.3f} | {col['plan']:.3f} | {chunk_text(per, threads)} | "
+               f"{finish or '-'} | {col['wait']:.3f} | {col['execute']:.3f} | {total['taken']} of {total['frames']} |")
         if units:
-            row += f" {sum(r['serial'][threads][6] or 0 for r in per)} |"
+            row += f" {total['units']} |"
         out.append(row)
     return "\n".join(out) + "\n"
 

@@ -118,10 +118,10 @@ struct SceneStats {
   uint32_t recordingThreads = 1;
   std::vector<uint32_t> drawsPerThread;
   double recordMs = 0.0;
-  // Per thread, wall clock: from its first draw to the end of its chunk
-  // (workers: FinishCommandList included), and from the wake-up call to the
-  // worker running (0 for the caller's thread), and its FinishCommandList
-  // (0 for the caller's thread). Where the time goes.
+  // Per thread, wall clock, where the time goes: from its first draw to the
+  // end of its chunk (workers: FinishCommandList included); and for workers
+  // (0 for the caller's thread) from the wake-up call to the worker running,
+  // and its FinishCommandList.
   std::vector<double> chunkMs, wakeMs, finishMs;
   // The rest of the last Render's serial path, wall clock: building the draw
   // list (frame move, culling), the caller's wait for the workers after its

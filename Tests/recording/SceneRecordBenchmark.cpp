@@ -172,16 +172,32 @@ double Median(std::vector<double> v) {
 
 // Median Render time of the benchmark's frames; the mean goes to the counters.
 std::map<std::string, double> g_medianMs;
-// Every frame's per-thread chunk and wake-up times, by thread count.
-std::map<int, std::vector<std::vector<double>>> g_chunkMs, g_wakeMs, g_finishMs;
-// Every frame's serial parts by thread count: Render, draw-list build, the
-// wait for the workers, the list executions; and the frames in which the
-// caller drew a worker's chunk (the worker had not started).
-struct SerialMs {
-  std::vector<double> render, plan, wait, execute;
+// Where every frame's time went, by thread count: per thread its chunk, its
+// wake-up and its FinishCommandList; the serial parts (Render, draw-list
+// build, the wait for the workers, the list executions); and the frames in
+// which the caller drew a worker's chunk (the worker had not started).
+struct FrameTimes {
+  std::vector<std::vector<double>> chunk, wake, finish;  // [thread][frame]
+  std::vector<double> render, plan, wait, execute;       // [frame]
   size_t takenOver = 0;
+  void Add(double renderMs, const drr::SceneStats& st) {
+    const size_t n = st.chunkMs.size();
+    chunk.resize(n);
+    wake.resize(n);
+    finish.resize(n);
+    for (size_t k = 0; k < n; ++k) {
+      chunk[k].push_back(st.chunkMs[k]);
+      wake[k].push_back(k < st.wakeMs.size() ? st.wakeMs[k] : 0.0);
+      finish[k].push_back(k < st.finishMs.size() ? st.finishMs[k] : 0.0);
+    }
+    render.push_back(renderMs);
+    plan.push_back(st.planMs);
+    wait.push_back(st.waitMs);
+    execute.push_back(st.executeMs);
+    takenOver += st.callerChunks > 1 ? 1 : 0;
+  }
 };
-std::map<int, SerialMs> g_serialMs;
+std::map<int, FrameTimes> g_times;
 
 void RenderFrames(benchmark::State& state, int threads, const std::string& key) {
   std::vector<double> ms;
@@ -189,21 +205,7 @@ void RenderFrames(benchmark::State& state, int threads, const std::string& key) 
     const double t = g_frame->Render(threads);
     state.SetIterationTime(t * 1e-3);
     ms.push_back(t);
-    const drr::SceneStats st = g_frame->Stats();
-    for (size_t k = 0; k < st.chunkMs.size(); ++k) {
-      g_chunkMs[threads].resize(st.chunkMs.size());
-      g_wakeMs[threads].resize(st.chunkMs.size());
-      g_finishMs[threads].resize(st.chunkMs.size());
-      g_chunkMs[threads][k].push_back(st.chunkMs[k]);
-      g_wakeMs[threads][k].push_back(k < st.wakeMs.size() ? st.wakeMs[k] : 0.0);
-      g_finishMs[threads][k].push_back(k < st.finishMs.size() ? st.finishMs[k] : 0.0);
-    }
-    SerialMs& serial = g_serialMs[threads];
-    serial.render.push_back(t);
-    serial.plan.push_back(st.planMs);
-    serial.wait.push_back(st.waitMs);
-    serial.execute.push_back(st.executeMs);
-    serial.takenOver += st.callerChunks > 1 ? 1 : 0;
+    g_times[threads].Add(t, g_frame->Stats());
     g_frame->Finish();
   }
   g_medianMs[key] = Median(ms);
@@ -243,23 +245,25 @@ int Smoke() {
   return ok ? 0 : 1;
 }
 
+// Each thread's median, " / " between threads.
+std::string PerThreadMedians(const std::vector<std::vector<double>>& perThread) {
+  std::string out;
+  for (size_t k = 0; k < perThread.size(); ++k) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%s%.3f", k ? " / " : "", Median(perThread[k]));
+    out += b;
+  }
+  return out;
+}
+
 // Where the time goes: each thread's chunk (first draw to the end of its
-// list) and each worker's wake-up delay, medians over every frame.
+// list), each worker's wake-up delay and FinishCommandList, and the serial
+// parts of the frame, medians over every frame.
 void PrintThreadTimes() {
-  for (const auto& [threads, perThread] : g_chunkMs) {
-    std::string chunks, wakes, finishes;
-    for (size_t k = 0; k < perThread.size(); ++k) {
-      char b[64];
-      std::snprintf(b, sizeof b, "%s%.3f", k ? " / " : "", Median(perThread[k]));
-      chunks += b;
-      std::snprintf(b, sizeof b, "%s%.3f", k ? " / " : "", Median(g_wakeMs[threads][k]));
-      wakes += b;
-      std::snprintf(b, sizeof b, "%s%.3f", k ? " / " : "", Median(g_finishMs[threads][k]));
-      finishes += b;
-    }
+  for (const auto& [threads, serial] : g_times) {
     std::printf("%d thread(s): chunk ms per thread (medians) %s; wake-up ms %s; FinishCommandList ms %s\n", threads,
-                chunks.c_str(), wakes.c_str(), finishes.c_str());
-    const SerialMs& serial = g_serialMs[threads];
+                PerThreadMedians(serial.chunk).c_str(), PerThreadMedians(serial.wake).c_str(),
+                PerThreadMedians(serial.finish).c_str());
     std::printf("%d thread(s): Render %.3f ms, draw list %.3f ms, wait for the workers %.3f ms, list executions "
                 "%.3f ms (medians); a worker's chunk drawn by the caller in %zu of %zu frames\n",
                 threads, Median(serial.render), Median(serial.plan), Median(serial.wait), Median(serial.execute),
