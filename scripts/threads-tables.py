@@ -23,7 +23,10 @@ its frames' time goes, per thread count (the medians over the runs of each
 run's median Render, draw-list build, chunk per thread, workers'
 FinishCommandList, wait for the workers and list executions, the frames in
 which the caller drew a worker's chunk and, where the runs print them, the
-units of workers' chunks it drew).
+units of workers' chunks it drew). Where the runs print it (measure-threads'
+many-object Arena, or the after build), one more: the N-thread frames split
+by whether every worker was running before the draw list was published, each
+part's median Render and its ratio to the run's one-thread median Render.
 A verdict is given only where the interval lies wholly on one side of the
 bound; otherwise "cannot decide". With --write DOC the table replaces the one
 between <!-- threads-tables:begin NAME --> and <!-- threads-tables:end NAME -->
@@ -55,6 +58,8 @@ SERIAL = re.compile(r"^(\d+) thread\(s\): Render ([\d.]+) ms, draw list ([\d.]+)
                     r"list executions ([\d.]+) ms \(medians\); a worker's chunk drawn by the caller in (\d+) of (\d+) frames"
                     r"(?:, (\d+) units of workers' chunks)?")
 SERIAL_MS = ("render", "plan", "wait", "execute")  # SERIAL's times, in its group order
+ON_TIME = re.compile(r"^(\d+) thread\(s\): every worker running before the draw list was published in (\d+) of (\d+) "
+                     r"frames; Render ([\d.]+) ms in those, ([\d.]+) ms in the others")
 DRAWS = re.compile(r"^draws per thread at \d+ threads: ([\d +]+)")
 CONTENTION = re.compile(r"^chunk (\d+) ratios:((?: [\d.]+)*)$")
 ALONE = re.compile(r"^chunk (\d+) \(([^)]*)\): alone ([\d.]+) ms")
@@ -77,7 +82,7 @@ def median_interval(values):
 
 
 def parse(path):
-    run = {"ratios": [], "ms": {1: [], "N": []}, "threads": 0, "chunks": {}, "draws": "", "finish": {}, "serial": {}}
+    run = {"ratios": [], "ms": {1: [], "N": []}, "threads": 0, "chunks": {}, "draws": "", "finish": {}, "serial": {}, "on_time": {}}
     for line in open(path):
         if m := PAIR.match(line):
             run["ratios"].append(float(m.group(4)))
@@ -93,6 +98,9 @@ def parse(path):
                 **{key: float(m.group(k)) for k, key in enumerate(SERIAL_MS, start=2)},
                 "taken": int(m.group(6)), "frames": int(m.group(7)),
                 "units": int(m.group(8)) if m.group(8) is not None else None}
+        elif m := ON_TIME.match(line):
+            run["on_time"][int(m.group(1))] = {"frames": int(m.group(2)), "of": int(m.group(3)),
+                                               "render": float(m.group(4)), "late_render": float(m.group(5))}
         elif m := DRAWS.match(line):
             run["draws"] = m.group(1).strip()
     return run
@@ -211,6 +219,28 @@ def serial_table(runs):
     return "\n".join(out) + "\n"
 
 
+def on_time_table(runs):
+    """N-thread frames split by whether every worker was running before the draw list was published:
+    medians over the runs of each run's medians, and each part's Render over the run's 1-thread Render."""
+    runs = [r for r in runs if r["on_time"] and 1 in r["serial"]]
+    if not runs:
+        return ""
+    out = ["| threads | runs | frames with every worker running before the draw list was published | "
+           "Render in those, ms | / 1 thread | Render in the others, ms | / 1 thread |",
+           "| ---: | ---: | ---: | ---: | ---: | ---: | ---: |"]
+    for threads in sorted({t for r in runs for t in r["on_time"]}):
+        per = [r for r in runs if threads in r["on_time"]]
+        parts = [r["on_time"][threads] for r in per]
+        one = [r["serial"][1]["render"] for r in per]
+        late = [(p, o) for p, o in zip(parts, one) if p["frames"] < p["of"]]
+        late_ms = f"{st.median(p['late_render'] for p, _ in late):.3f}" if late else "-"
+        late_ratio = f"{st.median(p['late_render'] / o for p, o in late):.3f}" if late else "-"
+        out.append(f"| {threads} | {len(per)} | {sum(p['frames'] for p in parts)} of {sum(p['of'] for p in parts)} | "
+                   f"{st.median(p['render'] for p in parts):.3f} | "
+                   f"{st.median(p['render'] / o for p, o in zip(parts, one)):.3f} | {late_ms} | {late_ratio} |")
+    return "\n".join(out) + "\n"
+
+
 def tables(folder):
     groups = {}
     for path in sorted(glob.glob(os.path.join(folder, "*.txt"))):
@@ -219,7 +249,7 @@ def tables(folder):
             continue  # not a run (load.txt)
         groups.setdefault(name, []).append(parse(path))
     if "before" in groups and "after" in groups:
-        extra = [t for t in (contention_table(folder), serial_table(groups["after"])) if t]
+        extra = [t for t in (contention_table(folder), serial_table(groups["after"]), on_time_table(groups["after"])) if t]
         return "\n".join([comparison_table(groups)] + extra)
     order = sorted(groups, key=lambda g: (g != "props", g != "auto", g != "arena2",
                                           int(g.split("-")[1]) if "-" in g else 0))
@@ -238,7 +268,8 @@ def tables(folder):
         out.append(f"| {label} | {runs[0]['draws'] or '-'} | {len(runs)} x {len(ratios) // len(runs)} | "
                    f"{interval_text(med, lo, hi)} | {run_medians} | {chunk_text(runs, 1)} | "
                    f"{chunk_text(runs, many) if many is not None else '-'} | {verdict(lo, hi)} |")
-    return "\n".join(out) + "\n"
+    on_time = on_time_table(groups.get("props", []))
+    return "\n".join(out) + "\n" + ("\nmany-object Arena:\n\n" + on_time if on_time else "")
 
 
 if __name__ == "__main__":

@@ -256,6 +256,21 @@ std::string PerThreadMedians(const std::vector<std::vector<double>>& perThread) 
   return out;
 }
 
+// The frames split by whether every worker was running before the draw list
+// was published (its wake-up delay at most the draw list's time), so that it
+// could start on its chunk at once, and each part's median Render.
+void PrintOnTimeSplit(int threads, const FrameTimes& serial) {
+  std::vector<double> onTime, late;
+  for (size_t i = 0; i < serial.render.size(); ++i) {
+    bool started = true;
+    for (size_t k = 1; k < serial.wake.size(); ++k) started = started && serial.wake[k][i] <= serial.plan[i];
+    (started ? onTime : late).push_back(serial.render[i]);
+  }
+  std::printf("%d thread(s): every worker running before the draw list was published in %zu of %zu frames; "
+              "Render %.3f ms in those, %.3f ms in the others (medians)\n",
+              threads, onTime.size(), serial.render.size(), Median(onTime), Median(late));
+}
+
 // Where the time goes: each thread's chunk (first draw to the end of its
 // list), each worker's wake-up delay and FinishCommandList, and the serial
 // parts of the frame, medians over every frame.
@@ -268,6 +283,7 @@ void PrintThreadTimes() {
                 "%.3f ms (medians); a worker's chunk drawn by the caller in %zu of %zu frames\n",
                 threads, Median(serial.render), Median(serial.plan), Median(serial.wait), Median(serial.execute),
                 serial.takenOver, serial.render.size());
+    if (threads > 1) PrintOnTimeSplit(threads, serial);
   }
 }
 
