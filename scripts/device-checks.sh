@@ -17,7 +17,8 @@
 #      the frame interval of each (a paced run holds 16.7 ms);
 #   c. threads.txt: scene recording on 2 and 4 threads against 1 on the
 #      default and the many-object Arena, and the automatic mode on the
-#      default Arena (drr_scene_record_bench; Docs/Threads.md);
+#      default Arena (drr_scene_record_bench; Docs/Threads.md), with the
+#      frames split by whether the workers started before the draw list;
 #   d. psnr.csv: the frames of Docs/results/lavapipe-frames rendered here,
 #      PSNR against the stored lavapipe render;
 #   e. tests.txt: the RHI, scene and sample render suites (core + sync
@@ -177,7 +178,8 @@ step_threads() {
       DRR_BIN=drr_scene_record_bench bounded --max $per_record_run "$bundle/run.sh" --scene "$(arena_path $arena)" \
         --threads "$t" $record_runs --size "$record_size" >"$out/threads-run.log" 2>&1
       echo "$arena Arena, threads $t (0 = automatic), exit $?:" \
-        "$(grep -E '^ratio|thread\(s\): chunk' "$out/threads-run.log" | tr '\n' ' ')" >>"$out/threads.txt"
+        "$(grep -E '^ratio|thread\(s\): (chunk|every worker running)' "$out/threads-run.log" | tr '\n' ' ')" \
+        >>"$out/threads.txt"
     done
   done
   finish
