@@ -40,7 +40,10 @@ bool Transition(SyncState& s, const Usage& u, BarrierInfo* out) {
     out->oldLayout = out->newLayout = s.layout;
     s.visible |= u.stages;
   }
-  s.readStages |= u.stages;
+  // Stored only when it changes: recording threads read the resource's
+  // other fields at every draw, and a store, even of the same value, would
+  // take the cache line from them.
+  if ((s.readStages & u.stages) != u.stages) s.readStages |= u.stages;
   return need;
 }
 

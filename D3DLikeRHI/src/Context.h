@@ -218,6 +218,8 @@ class ContextImpl : public DeviceContext, public BlitExtension {
   // The pipeline layout sets are bound with (a list binds with its context's
   // twin of it, ProgramLayout::listLayouts).
   virtual VkPipelineLayout BindingLayout(const ProgramLayout& p) = 0;
+  // The set layout its descriptor sets are allocated with (BindingLayout's).
+  virtual VkDescriptorSetLayout SetLayout(const ProgramLayout& p) = 0;
   // The ring slice with a constant buffer's data for this context's commands:
   // the buffer's own (uploaded from its shadow first) or the list's.
   virtual const RingAlloc& CbRing(BufferImpl* b) = 0;

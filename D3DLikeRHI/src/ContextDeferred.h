@@ -62,6 +62,9 @@ class DeferredContext final : public ContextImpl {
   VkPipelineLayout BindingLayout(const ProgramLayout& p) override {
     return dev_->pipelines().ListLayout(p, listLayoutIndex_);
   }
+  VkDescriptorSetLayout SetLayout(const ProgramLayout& p) override {
+    return dev_->pipelines().ListSetLayout(p, listLayoutIndex_);
+  }
   const RingAlloc& CbRing(BufferImpl* b) override;
   const RingAlloc& DynRing(const BufferImpl* b) override;
 

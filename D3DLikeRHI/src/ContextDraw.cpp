@@ -335,7 +335,7 @@ constexpr uint32_t kMaxWrites = kGraphicsStageCount * kStageBindingStride;
 }  // namespace
 
 bool ContextImpl::WriteSet(const ProgramLayout& p, BoundDescriptors& d) {
-  VkDescriptorSet set = AllocateSet(p.setLayout);
+  VkDescriptorSet set = AllocateSet(SetLayout(p));
   if (!set) return ErrorOnce(OnceError::DescriptorSetFailed), false;
   const DummyResources& dummy = dev_->dummies();
   VkDescriptorBufferInfo bufInfo[kMaxWrites];

@@ -34,6 +34,7 @@ class ImmediateContext final : public ContextImpl {
     return {f.descPools, f.descPoolCurrent, true};
   }
   VkPipelineLayout BindingLayout(const ProgramLayout& p) override { return p.layout; }
+  VkDescriptorSetLayout SetLayout(const ProgramLayout& p) override { return p.setLayout; }
   const RingAlloc& CbRing(BufferImpl* b) override {
     b->EnsureUploaded();
     return b->ring();

@@ -85,6 +85,7 @@ bool PipelineCache::CreateLayout(const std::vector<VkDescriptorSetLayoutBinding>
   sci.bindingCount = static_cast<uint32_t>(bindings.size());
   sci.pBindings = bindings.data();
   if (vkCreateDescriptorSetLayout(dev_->vk(), &sci, nullptr, &prog->setLayout) != VK_SUCCESS) return false;
+  prog->bindings = bindings;
   VkPipelineLayoutCreateInfo lci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   lci.setLayoutCount = 1;
   lci.pSetLayouts = &prog->setLayout;
@@ -100,25 +101,43 @@ VkPipelineLayout PipelineCache::ListLayout(const ProgramLayout& prog, uint32_t i
   if (VkPipelineLayout l = twin.load(std::memory_order_acquire)) return l;
   std::lock_guard<std::mutex> lock(mutex_);
   if (VkPipelineLayout l = twin.load(std::memory_order_relaxed)) return l;
+  VkDescriptorSetLayoutCreateInfo sci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  sci.bindingCount = static_cast<uint32_t>(prog.bindings.size());
+  sci.pBindings = prog.bindings.data();
+  VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+  if (vkCreateDescriptorSetLayout(dev_->vk(), &sci, nullptr, &setLayout) != VK_SUCCESS) return prog.layout;
   VkPipelineLayoutCreateInfo lci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   lci.setLayoutCount = 1;
-  lci.pSetLayouts = &prog.setLayout;
+  lci.pSetLayouts = &setLayout;
   VkPipelineLayout l = VK_NULL_HANDLE;
-  if (vkCreatePipelineLayout(dev_->vk(), &lci, nullptr, &l) != VK_SUCCESS) return prog.layout;
+  if (vkCreatePipelineLayout(dev_->vk(), &lci, nullptr, &l) != VK_SUCCESS) {
+    vkDestroyDescriptorSetLayout(dev_->vk(), setLayout, nullptr);
+    return prog.layout;
+  }
+  prog.listSetLayouts[index % ProgramLayout::kListLayouts] = setLayout;
   twin.store(l, std::memory_order_release);
   return l;
+}
+
+VkDescriptorSetLayout PipelineCache::ListSetLayout(const ProgramLayout& prog, uint32_t index) {
+  const uint32_t i = index % ProgramLayout::kListLayouts;
+  if (ListLayout(prog, index) == prog.layout) return prog.setLayout;  // no twin: the shared pair
+  return prog.listSetLayouts[i];  // published by ListLayout's release store, read after its acquire
 }
 
 void PipelineCache::DeferLayouts(const ProgramLayout& prog) {
   dev_->Defer(VK_OBJECT_TYPE_PIPELINE_LAYOUT, reinterpret_cast<uint64_t>(prog.layout));
   for (const auto& twin : prog.listLayouts)
     dev_->Defer(VK_OBJECT_TYPE_PIPELINE_LAYOUT, reinterpret_cast<uint64_t>(twin.load()));
+  for (VkDescriptorSetLayout twin : prog.listSetLayouts)
+    dev_->Defer(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, reinterpret_cast<uint64_t>(twin));
   dev_->Defer(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, reinterpret_cast<uint64_t>(prog.setLayout));
 }
 
 void PipelineCache::DestroyLayouts(const ProgramLayout& prog) {
   vkDestroyPipelineLayout(dev_->vk(), prog.layout, nullptr);
   for (const auto& twin : prog.listLayouts) vkDestroyPipelineLayout(dev_->vk(), twin.load(), nullptr);
+  for (VkDescriptorSetLayout twin : prog.listSetLayouts) vkDestroyDescriptorSetLayout(dev_->vk(), twin, nullptr);
   vkDestroyDescriptorSetLayout(dev_->vk(), prog.setLayout, nullptr);
 }
 

@@ -17,14 +17,17 @@ namespace d3dl::impl {
 struct ProgramLayout {
   VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
   VkPipelineLayout layout = VK_NULL_HANDLE;
-  // Twins of `layout` (the same set layout, so compatible with it) that
-  // deferred contexts bind descriptor sets with, made on first use
-  // (PipelineCache::ListLayout). Mesa's command queue (lavapipe) takes a
-  // reference on the pipeline layout at every vkCmdBindDescriptorSets and
-  // drops it at reset: with one shared layout, two recording threads
-  // increment one counter, the cache line moving between cores at every draw.
+  // Twins of `layout` and `setLayout` (identically defined, so compatible
+  // with them) that deferred contexts allocate and bind descriptor sets with,
+  // made on first use (PipelineCache::ListLayout). Mesa's lavapipe takes a
+  // reference on the pipeline layout at every vkCmdBindDescriptorSets and on
+  // the set layout at every vkAllocateDescriptorSets, and drops them at
+  // reset: with shared layouts, two recording threads increment the same
+  // counters, their cache lines moving between cores at every draw.
   static constexpr uint32_t kListLayouts = 4;
   mutable std::atomic<VkPipelineLayout> listLayouts[kListLayouts] = {};
+  mutable VkDescriptorSetLayout listSetLayouts[kListLayouts] = {};  // written before listLayouts[i]
+  std::vector<VkDescriptorSetLayoutBinding> bindings;                // setLayout's, for the twins
   struct Slot {
     uint16_t binding;
     ShaderStage stage;
@@ -95,6 +98,8 @@ class PipelineCache {
   // The pipeline layout deferred context `index` binds `prog`'s sets with
   // (`prog.layout` itself if its twin cannot be made).
   VkPipelineLayout ListLayout(const ProgramLayout& prog, uint32_t index);
+  // The set layout that ListLayout(prog, index)'s sets are allocated with.
+  VkDescriptorSetLayout ListSetLayout(const ProgramLayout& prog, uint32_t index);
 
  private:
   void DeferLayouts(const ProgramLayout& prog);

@@ -93,15 +93,19 @@ class BufferImpl final : public Child<Buffer> {
 
   BUFFER_DESC desc_;
   Storage storage_;
-  bool shadowStale_ = false;  // `ring_` (this frame) is newer than `shadow_`
-  bool discardListed_ = false;
   std::vector<uint8_t> shadow_;
-  RingAlloc ring_{};
-  uint64_t ringSerial_ = 0;  // frame serial of `ring_` (0 = none)
   VkBuffer buffer_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   uint8_t* mapped_ = nullptr;
   SyncState sync_;
+  // What the immediate context writes at every Map(WRITE_DISCARD) and draw of
+  // a DYNAMIC constant buffer, on a cache line of its own: deferred contexts
+  // on other threads map the same buffer and read its description at every
+  // draw, and a store to their line would take it from them each time.
+  alignas(64) RingAlloc ring_{};
+  uint64_t ringSerial_ = 0;   // frame serial of `ring_` (0 = none)
+  bool shadowStale_ = false;  // `ring_` (this frame) is newer than `shadow_`
+  bool discardListed_ = false;
 };
 
 inline BufferImpl* AsBuffer(Resource* r) {
