@@ -38,8 +38,10 @@ void SceneImpl::ResetHistory(const glm::mat4& view, const glm::mat4& viewProj) {
   history.frameIndex = 0;
   history.view = view;
   history.started = true;
-  for (Entry& e : entries)
-    for (DrawItem& it : e.items) it.wvp[0] = it.wvp[1] = viewProj * e.transform * e.globals[it.node];
+  for (Entry& e : entries) {
+    const glm::mat4 entryViewProj = viewProj * e.transform;  // once per entry: the same products
+    for (DrawItem& it : e.items) it.wvp[0] = it.wvp[1] = entryViewProj * e.globals[it.node];
+  }
 }
 
 // The original's OnFrameMove: the next slot of the ring gets this frame's
@@ -50,8 +52,10 @@ void SceneImpl::FrameMove(const glm::mat4& view, const glm::mat4& viewProj, int 
   history.current = history.frameIndex;
   history.track[target & 1] = history.current;
   history.view = view;
-  for (Entry& e : entries)
-    for (DrawItem& it : e.items) it.wvp[history.current] = viewProj * e.transform * e.globals[it.node];
+  for (Entry& e : entries) {
+    const glm::mat4 entryViewProj = viewProj * e.transform;  // once per entry: the same products
+    for (DrawItem& it : e.items) it.wvp[history.current] = entryViewProj * e.globals[it.node];
+  }
 }
 
 // The original's OnFramePaused: nothing moves; the target is redrawn with the
