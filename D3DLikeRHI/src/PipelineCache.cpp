@@ -80,19 +80,28 @@ ProgramLayout* PipelineCache::GetProgram(const PerStage<ShaderBase*>& shaders) {
   return p;
 }
 
-bool PipelineCache::CreateLayout(const std::vector<VkDescriptorSetLayoutBinding>& bindings, ProgramLayout* prog) {
+// A set layout with `bindings` and a pipeline layout of that one set; on
+// failure neither exists.
+bool PipelineCache::CreateLayoutPair(const std::vector<VkDescriptorSetLayoutBinding>& bindings,
+                                     VkDescriptorSetLayout* setLayout, VkPipelineLayout* layout) {
   VkDescriptorSetLayoutCreateInfo sci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   sci.bindingCount = static_cast<uint32_t>(bindings.size());
   sci.pBindings = bindings.data();
-  if (vkCreateDescriptorSetLayout(dev_->vk(), &sci, nullptr, &prog->setLayout) != VK_SUCCESS) return false;
-  prog->bindings = bindings;
+  if (vkCreateDescriptorSetLayout(dev_->vk(), &sci, nullptr, setLayout) != VK_SUCCESS) return false;
   VkPipelineLayoutCreateInfo lci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   lci.setLayoutCount = 1;
-  lci.pSetLayouts = &prog->setLayout;
-  if (vkCreatePipelineLayout(dev_->vk(), &lci, nullptr, &prog->layout) != VK_SUCCESS) {
-    vkDestroyDescriptorSetLayout(dev_->vk(), prog->setLayout, nullptr);
+  lci.pSetLayouts = setLayout;
+  if (vkCreatePipelineLayout(dev_->vk(), &lci, nullptr, layout) != VK_SUCCESS) {
+    vkDestroyDescriptorSetLayout(dev_->vk(), *setLayout, nullptr);
+    *setLayout = VK_NULL_HANDLE;
     return false;
   }
+  return true;
+}
+
+bool PipelineCache::CreateLayout(const std::vector<VkDescriptorSetLayoutBinding>& bindings, ProgramLayout* prog) {
+  if (!CreateLayoutPair(bindings, &prog->setLayout, &prog->layout)) return false;
+  prog->bindings = bindings;
   return true;
 }
 
@@ -101,28 +110,17 @@ VkPipelineLayout PipelineCache::ListLayout(const ProgramLayout& prog, uint32_t i
   if (VkPipelineLayout l = twin.load(std::memory_order_acquire)) return l;
   std::lock_guard<std::mutex> lock(mutex_);
   if (VkPipelineLayout l = twin.load(std::memory_order_relaxed)) return l;
-  VkDescriptorSetLayoutCreateInfo sci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  sci.bindingCount = static_cast<uint32_t>(prog.bindings.size());
-  sci.pBindings = prog.bindings.data();
   VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
-  if (vkCreateDescriptorSetLayout(dev_->vk(), &sci, nullptr, &setLayout) != VK_SUCCESS) return prog.layout;
-  VkPipelineLayoutCreateInfo lci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  lci.setLayoutCount = 1;
-  lci.pSetLayouts = &setLayout;
   VkPipelineLayout l = VK_NULL_HANDLE;
-  if (vkCreatePipelineLayout(dev_->vk(), &lci, nullptr, &l) != VK_SUCCESS) {
-    vkDestroyDescriptorSetLayout(dev_->vk(), setLayout, nullptr);
-    return prog.layout;
-  }
+  if (!CreateLayoutPair(prog.bindings, &setLayout, &l)) return prog.layout;
   prog.listSetLayouts[index % ProgramLayout::kListLayouts] = setLayout;
   twin.store(l, std::memory_order_release);
   return l;
 }
 
 VkDescriptorSetLayout PipelineCache::ListSetLayout(const ProgramLayout& prog, uint32_t index) {
-  const uint32_t i = index % ProgramLayout::kListLayouts;
   if (ListLayout(prog, index) == prog.layout) return prog.setLayout;  // no twin: the shared pair
-  return prog.listSetLayouts[i];  // published by ListLayout's release store, read after its acquire
+  return prog.listSetLayouts[index % ProgramLayout::kListLayouts];  // published by ListLayout's release store, read after its acquire
 }
 
 void PipelineCache::DeferLayouts(const ProgramLayout& prog) {

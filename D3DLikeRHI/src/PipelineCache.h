@@ -105,6 +105,8 @@ class PipelineCache {
   void DeferLayouts(const ProgramLayout& prog);
   void DestroyLayouts(const ProgramLayout& prog);
   bool CreateLayout(const std::vector<VkDescriptorSetLayoutBinding>& bindings, ProgramLayout* prog);
+  bool CreateLayoutPair(const std::vector<VkDescriptorSetLayoutBinding>& bindings, VkDescriptorSetLayout* setLayout,
+                        VkPipelineLayout* layout);
   DeviceImpl* dev_ = nullptr;
   std::unordered_map<uint64_t, std::unique_ptr<ProgramLayout>> computePrograms_;
   std::unordered_map<uint64_t, VkPipeline> computePipelines_;
