@@ -1,5 +1,6 @@
 #include "ComputeUpscale.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -30,10 +31,31 @@ std::string ComputeName(Filter f) {
   return name.replace(name.size() - 2, 2, "CS");
 }
 
-std::vector<std::string> ComputeShaderNames() {
+// A tiled compute shader's version without the tile: DirectCS for CS
+// (Shaders/CMakeLists.txt compiles one for each tiled filter).
+std::string DirectName(const std::string& name) { return name.substr(0, name.size() - 2) + "DirectCS"; }
+
+// The tiles have room for the texels of 8x8 output pixels at up to this many
+// viewport texels per output pixel (TEMPORAL_TILE_SIDE, SPATIAL_TILE_SIDE).
+constexpr float kTileTexelsPerPixel = 2.0f;
+
+// The dynamic viewport's texels per output pixel on its denser axis
+// (ViewportTexels() / g_OutputSize in the shaders).
+float TexelsPerPixel(const DynamicConstants& dc, const UpscaleConstants& uc) {
+  float r = 0.0f;
+  for (int i = 0; i < 2; ++i) r = std::max(r, dc.ratioCurr[i] * dc.dynSize[i] / uc.outputSize[i]);
+  return r;
+}
+
+// Every compute shader to load: each upscaler's, and the direct version of
+// those the build made one for (the tiled ones).
+std::vector<std::string> ComputeShaderNames(const ShaderLibrary& lib) {
   std::vector<std::string> names = {kSharpenCS, kSecondaryCS};
   for (int f = 0; f < int(Filter::Count); ++f)
     if (HasComputeVersion(Filter(f))) names.push_back(ComputeName(Filter(f)));
+  const size_t count = names.size();
+  for (size_t i = 0; i < count; ++i)
+    if (lib.Has(DirectName(names[i]))) names.push_back(DirectName(names[i]));
   return names;
 }
 
@@ -108,7 +130,7 @@ bool ComputeUpscale::CreateStates(d3dl::Device* device) {
 bool ComputeUpscale::LoadShaders(const ShaderLibrary& lib, bool fromSource, std::string* error, size_t* compiled) {
   std::map<std::string, d3dl::ComPtr<d3dl::ComputeShader>> next;
   *compiled = 0;
-  for (const std::string& name : ComputeShaderNames()) {
+  for (const std::string& name : ComputeShaderNames(lib)) {
     std::vector<uint32_t> code;
     bool c = false;
     if (!lib.Load(name, fromSource, &code, error, &c)) return false;
@@ -175,7 +197,7 @@ void ComputeUpscale::Dispatch(d3dl::DeviceContext* ctx, const char* shader, cons
   ctx->CSSetShaderResources(0, srvCount, srvs);
   d3dl::UnorderedAccessView* uavs[2] = {out[0].scratch->uav.Get(), outCount > 1 ? out[1].scratch->uav.Get() : nullptr};
   ctx->CSSetUnorderedAccessViews(0, outCount, uavs, nullptr);
-  ctx->CSSetShader(m_Shaders.at(shader).Get());
+  ctx->CSSetShader(ShaderFor(shader, s.dc, uc));
   ctx->Dispatch((uint32_t(uc.outputSize[0]) + kTile - 1) / kTile, (uint32_t(uc.outputSize[1]) + kTile - 1) / kTile, 1);
   d3dl::ShaderResourceView* noSrvs[8] = {};
   d3dl::UnorderedAccessView* noUavs[2] = {};
@@ -183,6 +205,15 @@ void ComputeUpscale::Dispatch(d3dl::DeviceContext* ctx, const char* shader, cons
   ctx->CSSetUnorderedAccessViews(0, outCount, noUavs, nullptr);
   for (uint32_t i = 0; i < outCount; ++i)
     if (out[i].written) Deliver(ctx, out[i].target, out[i].scratch->texture.Get());
+}
+
+d3dl::ComputeShader* ComputeUpscale::ShaderFor(const std::string& name, const DynamicConstants& dc,
+                                               const UpscaleConstants& uc) const {
+  if (TexelsPerPixel(dc, uc) > kTileTexelsPerPixel) {
+    const auto direct = m_Shaders.find(DirectName(name));
+    if (direct != m_Shaders.end()) return direct->second.Get();
+  }
+  return m_Shaders.at(name).Get();
 }
 
 bool ComputeUpscale::Record(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,

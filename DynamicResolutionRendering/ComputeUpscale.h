@@ -21,6 +21,7 @@
 
 namespace drr {
 
+struct DynamicConstants;
 struct FrameSetup;
 struct UpscaleConstants;
 
@@ -65,6 +66,10 @@ class ComputeUpscale {
   // scratch is copied into its target.
   void Dispatch(d3dl::DeviceContext* ctx, const char* shader, const FrameSetup& s, const UpscaleConstants& uc,
                 d3dl::ShaderResourceView* const* srvs, uint32_t srvCount, const Destination* out, uint32_t outCount);
+  // The compute shader `name`, or its version without the tile when the
+  // viewport has more texels per output pixel than the tile has room for.
+  d3dl::ComputeShader* ShaderFor(const std::string& name, const DynamicConstants& dc,
+                                 const UpscaleConstants& uc) const;
   void Temporal(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const BackBuffer& bb);
   void Spatial(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const Destination& out);
   void Sharpen(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts, const Destination& out);

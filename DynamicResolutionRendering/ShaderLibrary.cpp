@@ -68,6 +68,11 @@ bool ShaderLibrary::Load(const std::string& name, bool fromSource, std::vector<u
   return d3dl::SUCCEEDED(d3dl::ReadSpirvFile(m_SpvDir + "/" + name + ".spv", code, error));
 }
 
+bool ShaderLibrary::Has(const std::string& name) const {
+  std::error_code ec;
+  return m_Entries.count(name) != 0 || std::filesystem::exists(m_SpvDir + "/" + name + ".spv", ec);
+}
+
 bool ShaderLibrary::CreateVertexShader(d3dl::Device* device, const std::string& name, bool fromSource,
                                        d3dl::VertexShader** shader, std::vector<uint32_t>* code,
                                        std::string* error, bool* compiled) const {

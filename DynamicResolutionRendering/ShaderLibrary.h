@@ -29,6 +29,8 @@ class ShaderLibrary {
   // and the source file exists (then *compiled is set).
   bool Load(const std::string& name, bool fromSource, std::vector<uint32_t>* code, std::string* error,
             bool* compiled = nullptr) const;
+  // Whether the build made `name`: listed in shaders.txt, or its .spv is there.
+  bool Has(const std::string& name) const;
   bool CreateVertexShader(d3dl::Device* device, const std::string& name, bool fromSource,
                           d3dl::VertexShader** shader, std::vector<uint32_t>* code, std::string* error,
                           bool* compiled = nullptr) const;

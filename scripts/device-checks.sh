@@ -8,7 +8,8 @@
 # 3 s of its limit):
 #   a. frame.csv, frame.md: the full frame at 1920x1080 and 3840x2160 on both
 #      Arenas (native, point, TAA, TAAU with pixel and, where the sample has
-#      --upscale-shader, compute passes; scales 0.5 and 0.71), in interleaved
+#      --upscale-shader, compute passes; scales 0.5 and 0.71; at 0.71 also the
+#      compute TAAU without its group-shared tile), in interleaved
 #      rounds, each run's first WARMUP_MS of real time dropped; per-pass
 #      GPU medians (frame, scene, post, upscale pass); frame / native and
 #      TAAU's pass / point's (Docs/Upscaling.md: the goals 0.60 and 2.5);
@@ -111,13 +112,25 @@ frame_configs() {
     if ((compute)); then
       echo "taau-pixel-$s --filter taau --scale $s --upscale-shader pixel"
       echo "taau-compute-$s --filter taau --scale $s --upscale-shader compute"
+      [ "$s" = 0.71 ] && [ -n "$direct_shaders" ] &&
+        echo "taau-direct-$s --filter taau --scale $s --upscale-shader compute --shader-dir $direct_shaders"
     else
       echo "taau-pixel-$s --filter taau --scale $s"
     fi
   done
 }
+# A copy of the bundle's shaders whose compute TAAU is its version without the
+# group-shared tile (taau-direct-0.71: does the tile pay on this device?).
+direct_shaders=""
+make_direct_shaders() {
+  local spv=UpscaleTemporal_TemporalUpsample
+  [ -f "$bundle/shaders/${spv}DirectCS.spv" ] || return 0
+  rm -rf "$out/shaders-direct" && cp -r "$bundle/shaders" "$out/shaders-direct" &&
+    cp "$bundle/shaders/${spv}DirectCS.spv" "$out/shaders-direct/${spv}CS.spv" && direct_shaders="$out/shaders-direct"
+}
 step_frame() {
   begin frame
+  ((compute)) && make_direct_shaders
   local csv="$out/frame.csv" r size arena name args
   echo "round,size,arena,config,frames,frame_ms,scene_ms,postp_ms,scale_ms" >"$csv"
   for ((r = 1; r <= rounds; ++r)); do

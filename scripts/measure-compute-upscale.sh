@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
 # The upscale pass's GPU time on this machine's Vulkan device: point against
 # TAAU with pixel shaders and with compute shaders (Docs/Results.md, "The
-# upscalers as compute passes"), in interleaved rounds. Each run renders
+# upscalers as compute passes"), in interleaved rounds. The compute TAAU runs
+# twice: as the sample runs it at these scales (taau-compute: the 3x3
+# neighbourhoods from a group-shared tile) and as its version without the
+# tile (taau-direct: the build's UpscaleTemporal_TemporalUpsampleDirectCS in
+# its place), which reads them from the textures. Each run renders
 # FRAMES frames of camera 1 at WIDTHxHEIGHT and scale SCALE with the animation
 # time frozen; the first WARM frames are dropped. Per round, the median of the
 # scale pass's timer per configuration and its ratio to point's median of the
@@ -10,9 +14,13 @@
 #   measure-compute-upscale.sh [--decompose] [rounds (default 5)] [output dir]
 # --decompose adds three compute shaders that are not part of the sample
 # (scripts/compute-upscale-variants/), built here with the build's own
-# glslang command, which take the TAAU's cost apart: without the group-shared
-# tile, without the neighbourhood's texel reads, and one texel read only.
-# Environment: BUILD_DIR (default build), WIDTH, HEIGHT, SCALE, FRAMES, WARM.
+# glslang command, which take the direct TAAU's cost apart: without the
+# neighbourhood's texel reads, without those and the history's reads, and one
+# texel read only.
+# Environment: BUILD_DIR (default build), WIDTH, HEIGHT, SCALE, FRAMES, WARM;
+# EXTRA="name=file.hlsl ..." adds compute TAAU shaders built from those files
+# (another commit's UpscaleTemporalCS.hlsl, for one: a before/after in the
+# same rounds).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${BUILD_DIR:-$root/build}"
@@ -21,27 +29,35 @@ decompose=0
 if [ "${1:-}" = --decompose ]; then decompose=1; shift; fi
 rounds="${1:-5}"
 out="${2:-$(mktemp -d)}"
+out="$(mkdir -p "$out" && cd "$out" && pwd)"  # absolute: the build command runs in another folder
 width="${WIDTH:-640}" height="${HEIGHT:-360}" scale="${SCALE:-0.71}" frames="${FRAMES:-36}" warm="${WARM:-12}"
 mkdir -p "$out/reports"
 # name | sample arguments | compute shader replacing UpscaleTemporalCS.hlsl's (variants only)
 configs=("point|--filter point|" "taau-pixel|--filter taau --upscale-shader pixel|"
-         "taau-compute|--filter taau --upscale-shader compute|")
+         "taau-compute|--filter taau --upscale-shader compute|"
+         "taau-direct|--filter taau --upscale-shader compute|UpscaleTemporal_TemporalUpsampleDirectCS.spv")
 if ((decompose)); then
-  configs+=("no-tile|--filter taau --upscale-shader compute|TemporalNoTileCS.hlsl"
-            "no-neighbourhood|--filter taau --upscale-shader compute|TemporalNoNeighbourhoodCS.hlsl"
+  configs+=("no-neighbourhood|--filter taau --upscale-shader compute|TemporalNoNeighbourhoodCS.hlsl"
+            "no-history|--filter taau --upscale-shader compute|TemporalNoHistoryCS.hlsl"
             "one-texel|--filter taau --upscale-shader compute|TemporalOneTexelCS.hlsl")
 fi
+for e in ${EXTRA:-}; do configs+=("${e%%=*}|--filter taau --upscale-shader compute|$(realpath "${e#*=}")"); done
 
-# A copy of the build's shaders with one compute shader replaced by a variant.
+# A copy of the build's shaders with the compute TAAU replaced by a variant:
+# another of the build's shaders (.spv) or one built here (.hlsl).
 spv=UpscaleTemporal_TemporalUpsampleCS.spv
 shader_dir() {
-  local variant="$1" dir="$out/shaders-${1%.hlsl}"
+  local variant="$1" dir
+  dir="$out/shaders-$(basename "${1%.*}")"
   [ -z "$variant" ] && { echo "$build/shaders"; return; }
-  if [ ! -f "$dir/$spv" ]; then
+  if [ "${variant##*.}" = spv ] && [ ! -f "$dir/$spv" ]; then
+    mkdir -p "$dir" && cp "$build/shaders/"*.spv "$dir/" && cp "$build/shaders/$variant" "$dir/$spv"
+  elif [ ! -f "$dir/$spv" ]; then
     mkdir -p "$dir" && cp "$build/shaders/"*.spv "$dir/"
-    local cmd
+    local cmd src="$variant"
+    [[ $src = /* ]] || src="$root/scripts/compute-upscale-variants/$variant"
     cmd="$(ninja -C "$build" -t commands "shaders/$spv" | tail -n 1)"
-    cmd="${cmd//$root\/Shaders\/UpscaleTemporalCS.hlsl/$root/scripts/compute-upscale-variants/$variant}"
+    cmd="${cmd//$root\/Shaders\/UpscaleTemporalCS.hlsl/$src}"
     cmd="${cmd//$build\/shaders\/$spv/$dir/$spv}"
     (eval "$cmd -I$root/Shaders") >/dev/null
   fi

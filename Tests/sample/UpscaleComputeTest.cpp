@@ -46,6 +46,11 @@ const ComputeCase kCases[] = {
     {"CatmullRomThenSecondary", Filter::UpscaleCatmullRom, 83.33, 2},
     {"EdgeAdaptiveThenSecondary", Filter::UpscaleEdgeAdaptive, 75, 2},
     {"TemporalUpsampleThenSecondary", Filter::TAAU, 83.33, 8},
+    // A 25 % secondary target under a 0.71 viewport: 2.84 viewport texels per
+    // output pixel, more than the tiles have room for: the direct versions run.
+    {"TemporalUpsampleDirect", Filter::TAAU, 25, 8},
+    {"Lanczos3Direct", Filter::UpscaleLanczos3, 25, 2},
+    {"EdgeAdaptiveDirect", Filter::UpscaleEdgeAdaptive, 25, 2},
 };
 
 void PrintTo(const ComputeCase& c, std::ostream* os) { *os << c.name; }
@@ -107,13 +112,14 @@ namespace fs = std::filesystem;
 struct EditedShaders {
   Image pixel, compute;
 };
-EditedShaders RenderWithEditedShaders(const char* folder, const std::function<void(const fs::path&)>& change) {
+EditedShaders RenderWithEditedShaders(const char* folder, const std::function<void(const fs::path&)>& change,
+                                      double secondaryPercent = 100) {
   const fs::path from = ShaderLibrary::DefaultSpvDir("");
   const fs::path to = fs::path(testing::TempDir()) / folder;
   fs::remove_all(to);
   fs::copy(from, to);
   change(to);
-  const ComputeCase c{folder, Filter::TAAU, 100, 4};
+  const ComputeCase c{folder, Filter::TAAU, secondaryPercent, 4};
   Options compute = CaseOptions(c, UpscaleShader::Compute);
   compute.shaderDir = to.string();
   EditedShaders r{Render(CaseOptions(c, UpscaleShader::Pixel), c.frames).image, Render(compute, c.frames).image};
@@ -128,6 +134,19 @@ TEST(UpscaleComputeOption, PlantedWrongComputeShaderIsCaught) {
     fs::copy_file(to / "UpscaleSpatial_NearestCS.spv", to / "UpscaleTemporal_TemporalUpsampleCS.spv",
                   fs::copy_options::overwrite_existing);
   });
+  EXPECT_GT(testkit::Compare(r.compute, r.pixel, kBorder).maxAbs, 1);
+}
+
+// The same at 2.84 viewport texels per output pixel with the direct version
+// planted wrong: the comparison sees the version without the tile there.
+TEST(UpscaleComputeOption, PlantedWrongDirectShaderIsCaught) {
+  const EditedShaders r = RenderWithEditedShaders(
+      "drr_planted_direct_shaders",
+      [](const fs::path& to) {
+        fs::copy_file(to / "UpscaleSpatial_NearestCS.spv", to / "UpscaleTemporal_TemporalUpsampleDirectCS.spv",
+                      fs::copy_options::overwrite_existing);
+      },
+      25);
   EXPECT_GT(testkit::Compare(r.compute, r.pixel, kBorder).maxAbs, 1);
 }
 
