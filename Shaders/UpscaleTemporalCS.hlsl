@@ -17,7 +17,6 @@ RWTexture2D<float4> g_Out1 : register(u1);
 float3 NeighbourColour(int2 t) { return g_ColorCurr.Load(int3(t, 0)).rgb; }
 float NeighbourDepth(int2 t) { return g_DepthCurr.Load(int3(t, 0)); }
 float2 NeighbourVelocity(int2 t) { return g_VelocityCurr.Load(int3(t, 0)).xy; }
-void LoadTemporalTile(uint2 groupId, uint threadIndex) {}
 #else
 // Room for the apron around 8x8 centres up to two texels per output pixel
 // (at most 15 centre texels apart, plus the apron: 18).
@@ -62,8 +61,8 @@ void LoadTemporalTile(uint2 groupId, uint threadIndex) {
 
 [numthreads(UPSCALE_TILE, UPSCALE_TILE, 1)]
 void TemporalUpsampleCS(uint3 groupId : SV_GroupID, uint3 px : SV_DispatchThreadID, uint threadIndex : SV_GroupIndex) {
-  LoadTemporalTile(groupId.xy, threadIndex);
 #ifndef UPSCALE_DIRECT
+  LoadTemporalTile(groupId.xy, threadIndex);
   GroupMemoryBarrierWithGroupSync();
 #endif
   if (any(px.xy >= uint2(g_OutputSize))) return;

@@ -50,16 +50,18 @@ shader_dir() {
   local variant="$1" dir
   dir="$out/shaders-$(basename "${1%.*}")"
   [ -z "$variant" ] && { echo "$build/shaders"; return; }
-  if [ "${variant##*.}" = spv ] && [ ! -f "$dir/$spv" ]; then
-    mkdir -p "$dir" && cp "$build/shaders/"*.spv "$dir/" && cp "$build/shaders/$variant" "$dir/$spv"
-  elif [ ! -f "$dir/$spv" ]; then
+  if [ ! -f "$dir/$spv" ]; then
     mkdir -p "$dir" && cp "$build/shaders/"*.spv "$dir/"
-    local cmd src="$variant"
-    [[ $src = /* ]] || src="$root/scripts/compute-upscale-variants/$variant"
-    cmd="$(ninja -C "$build" -t commands "shaders/$spv" | tail -n 1)"
-    cmd="${cmd//$root\/Shaders\/UpscaleTemporalCS.hlsl/$src}"
-    cmd="${cmd//$build\/shaders\/$spv/$dir/$spv}"
-    (eval "$cmd -I$root/Shaders") >/dev/null
+    if [ "${variant##*.}" = spv ]; then
+      cp "$build/shaders/$variant" "$dir/$spv"
+    else
+      local cmd src="$variant"
+      [[ $src = /* ]] || src="$root/scripts/compute-upscale-variants/$variant"
+      cmd="$(ninja -C "$build" -t commands "shaders/$spv" | tail -n 1)"
+      cmd="${cmd//$root\/Shaders\/UpscaleTemporalCS.hlsl/$src}"
+      cmd="${cmd//$build\/shaders\/$spv/$dir/$spv}"
+      (eval "$cmd -I$root/Shaders") >/dev/null
+    fi
   fi
   echo "$dir"
 }

@@ -12,6 +12,18 @@ float3 NeighbourColour(int2 t) { return s_Texel.rgb + float(t.x) * 1e-7; }
 float NeighbourDepth(int2 t) { return s_Texel.a + float(t.y) * 1e-7; }
 float2 NeighbourVelocity(int2 t) { return s_Texel.xy * 1e-3 + float(t.x) * 1e-9; }
 
+#ifdef TEMPORAL_NO_HISTORY
+// Stands in for the history texture in UpscaleTemporalMath.hlsli (the
+// no-history variant, TemporalNoHistoryCS.hlsl): a value that depends on the
+// position, without a read.
+struct NoHistory {
+  float4 SampleLevel(SamplerState s, float2 uv, float lod) { return float4(uv, s_Texel.x, 0.5); }
+};
+static NoHistory s_NoHistory;
+#define CatmullRom5(t, s, p, i, u) float4(p * 1e-4, s_Texel.y, 1.0)
+#define g_ColorPrev s_NoHistory
+#endif
+
 #include "UpscaleTemporalMath.hlsli"
 
 [numthreads(UPSCALE_TILE, UPSCALE_TILE, 1)]
