@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "FrameConstants.h"
-#include "d3dl/BlitExtension.h"
 #include "ResolveFilters.h"
 
 namespace drr {
@@ -19,8 +18,11 @@ constexpr char kSecondaryCS[] = "UpscaleSpatial_SecondaryCS";
 // Constants of Shaders/UpscaleComputeTile.hlsli (cbComputeUpscale at b2).
 struct ComputeConstants {
   uint32_t writeSecond;  // TAAU: the image to u1 too
-  uint32_t pad[3];
+  uint32_t encode[2];    // u0's and u1's kEncode* bits
+  uint32_t pad;
 };
+// ENCODE_* in Shaders/UpscaleComputeTile.hlsli.
+constexpr uint32_t kEncodeSrgb = 1, kEncodeSwapRB = 2;
 
 // The port's upscalers have compute versions; the original's filters stay pixel shaders.
 bool HasComputeVersion(Filter f) { return std::strncmp(GetFilterInfo(f).shader, "Upscale", 7) == 0; }
@@ -59,24 +61,20 @@ std::vector<std::string> ComputeShaderNames(const ShaderLibrary& lib) {
   return names;
 }
 
-// The storage format of a target's scratch: its own texels (copied), or for
-// an sRGB target the shader's float values, which a blit encodes as the
-// target's writes would.
-d3dl::DXGI_FORMAT ScratchFormat(d3dl::DXGI_FORMAT f) {
-  if (f == d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT) return f;
-  return f == d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB || f == d3dl::DXGI_FORMAT_B8G8R8A8_UNORM_SRGB
-             ? d3dl::DXGI_FORMAT_R32G32B32A32_FLOAT
-             : d3dl::DXGI_FORMAT_R8G8B8A8_UNORM;
-}
-
-// The scratch's texels into the target: a copy, or a same-size point blit that converts.
-void Deliver(d3dl::DeviceContext* ctx, d3dl::Texture2D* target, d3dl::Texture2D* scratch) {
-  d3dl::TEXTURE2D_DESC t, s;
-  target->GetDesc(&t);
-  scratch->GetDesc(&s);
-  if (ScratchFormat(t.Format) != d3dl::DXGI_FORMAT_R32G32B32A32_FLOAT) return ctx->CopyResource(target, scratch);
-  const d3dl::RECT all{0, 0, int32_t(s.Width), int32_t(s.Height)};
-  d3dl::GetBlitExtension(ctx)->BlitRegion(target, all, scratch, all, d3dl::FILTER_MIN_MAG_MIP_POINT);
+// How a target without a storage view is written: the scratch's format, and
+// what the shader encodes so that a copy of the scratch's bits leaves in the
+// target what the target's own writes would (an sRGB encoding, BGRA order).
+struct ScratchPlan {
+  d3dl::DXGI_FORMAT format;
+  uint32_t encode;
+};
+ScratchPlan ScratchFor(d3dl::DXGI_FORMAT target) {
+  switch (target) {
+    case d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB: return {d3dl::DXGI_FORMAT_R8G8B8A8_UNORM, kEncodeSrgb};
+    case d3dl::DXGI_FORMAT_B8G8R8A8_UNORM_SRGB: return {d3dl::DXGI_FORMAT_R8G8B8A8_UNORM, kEncodeSrgb | kEncodeSwapRB};
+    case d3dl::DXGI_FORMAT_B8G8R8A8_UNORM: return {d3dl::DXGI_FORMAT_R8G8B8A8_UNORM, kEncodeSwapRB};
+    default: return {target, 0};
+  }
 }
 
 d3dl::HRESULT CreateDynamicCB(d3dl::Device* device, uint32_t bytes, d3dl::Buffer** cb) {
@@ -106,8 +104,7 @@ bool ComputeUpscale::Init(d3dl::Device* device, const ShaderLibrary& shaders, st
   if (!LoadShaders(shaders, false, &error, &compiled)) m_Unavailable = error;
   else if (!CreateStates(device)) m_Unavailable = "cannot create the compute upscalers' constant buffers or sampler";
   // The scratch formats must be storage images.
-  for (d3dl::DXGI_FORMAT f : {d3dl::DXGI_FORMAT_R8G8B8A8_UNORM, d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT,
-                              d3dl::DXGI_FORMAT_R32G32B32A32_FLOAT}) {
+  for (d3dl::DXGI_FORMAT f : {d3dl::DXGI_FORMAT_R8G8B8A8_UNORM, d3dl::DXGI_FORMAT_R16G16B16A16_FLOAT}) {
     Scratch probe;
     if (m_Unavailable.empty() && !MakeScratch(probe, 1, 1, f))
       m_Unavailable = "the device has no storage view of the scratch formats";
@@ -175,18 +172,21 @@ bool ComputeUpscale::MakeScratch(Scratch& slot, uint32_t w, uint32_t h, d3dl::DX
   return true;
 }
 
-bool ComputeUpscale::FitScratch(Scratch& slot, d3dl::Texture2D* target) {
-  d3dl::TEXTURE2D_DESC d;
-  target->GetDesc(&d);
-  return MakeScratch(slot, d.Width, d.Height, ScratchFormat(d.Format));
-}
-
 void ComputeUpscale::Dispatch(d3dl::DeviceContext* ctx, const char* shader, const FrameSetup& s,
                               const UpscaleConstants& uc, d3dl::ShaderResourceView* const* srvs, uint32_t srvCount,
                               const Destination* out, uint32_t outCount) {
-  for (uint32_t i = 0; i < outCount; ++i)
-    if (!FitScratch(*out[i].scratch, out[i].target)) return;  // out of memory: the frame keeps the old image
-  const ComputeConstants cc{outCount > 1 && out[1].written, {}};
+  ComputeConstants cc{outCount > 1 && out[1].written, {0, 0}, 0};
+  d3dl::UnorderedAccessView* uavs[2] = {};
+  for (uint32_t i = 0; i < outCount; ++i) {
+    uavs[i] = out[i].storage;
+    if (uavs[i]) continue;
+    d3dl::TEXTURE2D_DESC t;
+    out[i].target->GetDesc(&t);
+    const ScratchPlan plan = ScratchFor(t.Format);
+    if (!MakeScratch(*out[i].scratch, t.Width, t.Height, plan.format)) return;  // out of memory: the old image stays
+    uavs[i] = out[i].scratch->uav.Get();
+    cc.encode[i] = plan.encode;
+  }
   Upload(ctx, m_DynamicCB.Get(), &s.dc, sizeof s.dc);
   Upload(ctx, m_UpscaleCB.Get(), &uc, sizeof uc);
   Upload(ctx, m_ComputeCB.Get(), &cc, sizeof cc);
@@ -195,7 +195,6 @@ void ComputeUpscale::Dispatch(d3dl::DeviceContext* ctx, const char* shader, cons
   d3dl::SamplerState* samplers[3] = {m_Linear.Get(), m_Linear.Get(), m_Linear.Get()};
   ctx->CSSetSamplers(0, 3, samplers);
   ctx->CSSetShaderResources(0, srvCount, srvs);
-  d3dl::UnorderedAccessView* uavs[2] = {out[0].scratch->uav.Get(), outCount > 1 ? out[1].scratch->uav.Get() : nullptr};
   ctx->CSSetUnorderedAccessViews(0, outCount, uavs, nullptr);
   ctx->CSSetShader(ShaderFor(shader, s.dc, uc));
   ctx->Dispatch((uint32_t(uc.outputSize[0]) + kTile - 1) / kTile, (uint32_t(uc.outputSize[1]) + kTile - 1) / kTile, 1);
@@ -203,8 +202,9 @@ void ComputeUpscale::Dispatch(d3dl::DeviceContext* ctx, const char* shader, cons
   d3dl::UnorderedAccessView* noUavs[2] = {};
   ctx->CSSetShaderResources(0, srvCount, noSrvs);
   ctx->CSSetUnorderedAccessViews(0, outCount, noUavs, nullptr);
+  // A copy of the scratch's bits (its format and the target's are copy-compatible).
   for (uint32_t i = 0; i < outCount; ++i)
-    if (out[i].written) Deliver(ctx, out[i].target, out[i].scratch->texture.Get());
+    if (!out[i].storage && out[i].written) ctx->CopyResource(out[i].target, out[i].scratch->texture.Get());
 }
 
 d3dl::ComputeShader* ComputeUpscale::ShaderFor(const std::string& name, const DynamicConstants& dc,
@@ -216,11 +216,14 @@ d3dl::ComputeShader* ComputeUpscale::ShaderFor(const std::string& name, const Dy
   return m_Shaders.at(name).Get();
 }
 
+ComputeUpscale::Destination ComputeUpscale::ToTarget(RenderTarget& rt, Scratch* scratch) {
+  return {rt.texture.Get(), scratch, rt.uav.Get()};
+}
+
 bool ComputeUpscale::Record(d3dl::DeviceContext* ctx, const FrameSetup& s, RenderTargetSet& rts,
                             const BackBuffer& bb, FrameProfiler* profiler) {
   m_Profiler = profiler;
   if (!s.dynamic || !HasComputeVersion(s.filter)) return false;
-  if (m_Unavailable.empty() && !d3dl::GetBlitExtension(ctx)) m_Unavailable = "the context has no blit for sRGB targets";
   if (!m_Unavailable.empty()) {
     if (!m_NoticePrinted)
       std::fprintf(stderr, "note: compute upscalers unavailable (%s): using the pixel shaders\n", m_Unavailable.c_str());
@@ -229,15 +232,14 @@ bool ComputeUpscale::Record(d3dl::DeviceContext* ctx, const FrameSetup& s, Rende
   }
   ctx->OMSetRenderTargets(0, nullptr, nullptr);  // the scene's and motion blur's targets are read now
   // The primary upscale's output: the secondary upscale's source or the back buffer.
-  d3dl::Texture2D* out = s.secondary ? rts[RT::UpscaleOutput].texture.Get() : bb.texture;
-  Scratch& outScratch = s.secondary ? m_Output : m_Final;
+  const Destination out = s.secondary ? ToTarget(rts[RT::UpscaleOutput], &m_Output) : Destination{bb.texture, &m_Final};
   if (s.TAAU()) {
     Temporal(ctx, s, rts, bb);
   } else if (HasSharpenPass(s.filter)) {
-    Spatial(ctx, s, rts, {rts[RT::UpscaleSharpenInput].texture.Get(), &m_Output});
-    Sharpen(ctx, s, rts, {out, &outScratch});
+    Spatial(ctx, s, rts, ToTarget(rts[RT::UpscaleSharpenInput], &m_Output));
+    Sharpen(ctx, s, rts, out);
   } else {
-    Spatial(ctx, s, rts, {out, &outScratch});
+    Spatial(ctx, s, rts, out);
   }
   if (s.secondary) Secondary(ctx, s, rts, bb);
   return true;
@@ -251,8 +253,8 @@ void ComputeUpscale::Temporal(d3dl::DeviceContext* ctx, const FrameSetup& s, Ren
   d3dl::ShaderResourceView* srv[7] = {rts.Final(s.cur).srv.Get(), rts.UpscaleHistory(s.historyPrev).srv.Get(),
                                       rts.Velocity(0).srv.Get(), nullptr, nullptr, nullptr,
                                       rts[RT::DepthDynamic].srv.Get()};
-  d3dl::Texture2D* history = rts.UpscaleHistory(s.historyCur).texture.Get();
-  const Destination out[2] = {{history, &m_History}, {bb.texture, &m_Final, !s.secondary}};
+  const Destination out[2] = {ToTarget(rts.UpscaleHistory(s.historyCur), &m_History),
+                              {bb.texture, &m_Final, nullptr, !s.secondary}};
   Dispatch(ctx, "UpscaleTemporal_TemporalUpsampleCS", s, s.uc, srv, 7, out, 2);
   m_Profiler->CountPass(GetFilterInfo(s.filter).pass);
   ctx->EndEvent();

@@ -3,11 +3,13 @@
 // edge-adaptive upscale and its sharpening, and the secondary upscale, each
 // a dispatch of 8x8 tiles (Shaders/Upscale*CS.hlsl) whose arithmetic is the
 // pixel shaders' (Shaders/Upscale*Math.hlsli). They read the same targets as
-// the pixel passes and leave the same results in them: the render targets
-// and the sRGB back buffer cannot be storage images, so each dispatch writes
-// a storage scratch texture that is then copied into its target (same texel
-// format), or for an sRGB target holds the float results and is blitted
-// into it (the blit encodes sRGB as the target's own writes do).
+// the pixel passes and leave the same results in them. The upscale targets
+// (TAAU's history, the secondary upscale's and the sharpening's sources)
+// have storage views and are written directly; a target without one (the
+// sRGB back buffer, sRGB colour targets) is written through a storage
+// scratch texture in a copy-compatible UNORM format, the shader encoding
+// what the target's own writes would (sRGB, BGRA order), and the scratch's
+// bits are then copied into it.
 #pragma once
 
 #include <map>
@@ -44,26 +46,27 @@ class ComputeUpscale {
               FrameProfiler* profiler);
 
  private:
-  // A storage texture the dispatches write, copied into its target.
+  // A storage texture a dispatch writes for a target without a storage view.
   struct Scratch {
     d3dl::ComPtr<d3dl::Texture2D> texture;
     d3dl::ComPtr<d3dl::UnorderedAccessView> uav;
   };
-  // Where a dispatch's result goes: the target texture and the scratch slot
-  // that holds it first (re-made at the target's size and texel family).
+  // Where a dispatch's result goes: the target's storage view, or else the
+  // scratch slot that holds it first (re-made at the target's size) and the
+  // target the scratch is copied into.
   struct Destination {
     d3dl::Texture2D* target = nullptr;
     Scratch* scratch = nullptr;
+    d3dl::UnorderedAccessView* storage = nullptr;
     bool written = true;  // false: bound but not written (TAAU's image before the secondary upscale)
   };
+  static Destination ToTarget(RenderTarget& rt, Scratch* scratch);
   bool CreateStates(d3dl::Device* device);
   // slot holds a storage texture of w x h in format (re-created when it differs).
   bool MakeScratch(Scratch& slot, uint32_t w, uint32_t h, d3dl::DXGI_FORMAT format);
-  // slot made a scratch of target's size and texel family; false when it cannot be.
-  bool FitScratch(Scratch& slot, d3dl::Texture2D* target);
   // One dispatch over the first destination's size: constants (the frame's,
-  // uc for the upscale ones), t0.. = srvs, u0.. = the scratches; then each
-  // scratch is copied into its target.
+  // uc for the upscale ones), t0.. = srvs, u0.. = the destinations' storage
+  // views or scratches; then each scratch is copied into its target.
   void Dispatch(d3dl::DeviceContext* ctx, const char* shader, const FrameSetup& s, const UpscaleConstants& uc,
                 d3dl::ShaderResourceView* const* srvs, uint32_t srvCount, const Destination* out, uint32_t outCount);
   // The compute shader `name`, or its version without the tile when the

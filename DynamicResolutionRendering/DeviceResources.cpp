@@ -22,7 +22,7 @@ void LogToStderr(d3dl::LogLevel level, const char* message, void*) {
 }  // namespace
 
 bool DeviceResources::Create(bool validation, AppWindow& window, uint32_t width, uint32_t height,
-                             std::string* error) {
+                             d3dl::DXGI_FORMAT headlessFormat, std::string* error) {
   d3dl::DEVICE_CREATE_DESC dd;
   dd.Validation = validation ? d3dl::ValidationMode::CoreAndSync : d3dl::ValidationMode::FromEnvironment;
   dd.Log = LogToStderr;
@@ -34,7 +34,7 @@ bool DeviceResources::Create(bool validation, AppWindow& window, uint32_t width,
   }
   m_Device->GetAdapterDesc(&m_Adapter);
   d3dl::SWAP_CHAIN_DESC sd;
-  sd.Format = m_Format;
+  sd.Format = window.Headless() ? headlessFormat : m_Format;
   sd.BufferCount = 2;
   sd.Width = width;
   sd.Height = height;

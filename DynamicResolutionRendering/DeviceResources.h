@@ -21,7 +21,9 @@ class DeviceResources {
  public:
   // A window swap chain when the window is not headless (the window is
   // created here at width x height), else a headless one of that size.
-  bool Create(bool validation, AppWindow& window, uint32_t width, uint32_t height, std::string* error);
+  // headlessFormat: the headless back buffer's (a window's follows its surface).
+  bool Create(bool validation, AppWindow& window, uint32_t width, uint32_t height, d3dl::DXGI_FORMAT headlessFormat,
+              std::string* error);
   // Clears the context state and re-creates the back buffer at w x h.
   bool Resize(uint32_t w, uint32_t h);
   // Releases everything; false (with a message on stderr) when the device

@@ -58,7 +58,9 @@ int Sample::Init(const Options& options, std::string* error) {
   if (!m_Log.SetRecords(options.report.empty() ? FrameRecords::Memory : FrameRecords::Stream))
     Warn("cannot create a temporary file for the report's frame records: the report lists none");
 
-  if (!m_Device.Create(options.validation, m_Window, options.width, options.height, error)) return 1;
+  const d3dl::DXGI_FORMAT headless =
+      options.headlessBgra ? d3dl::DXGI_FORMAT_B8G8R8A8_UNORM_SRGB : d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
+  if (!m_Device.Create(options.validation, m_Window, options.width, options.height, headless, error)) return 1;
   if (!m_Profiler.Init(m_Device.Device())) {
     *error = "cannot create the GPU timer queries";
     return 1;

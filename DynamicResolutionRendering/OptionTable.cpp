@@ -213,6 +213,9 @@ const OptionRow kRows[] = {
     Flag("--window-test", &Options::windowTest, true,
          "test aid: resize to 1x1, minimise, full screen while minimised,\n"
          "restore, windowed, full screen and back"),
+    Flag("--headless-bgra", &Options::headlessBgra, true,
+         "test aid: the headless back buffer is BGRA8 sRGB (as many\n"
+         "windows' are) instead of RGBA8 sRGB"),
 };
 // clang-format on
 

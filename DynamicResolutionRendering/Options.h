@@ -82,6 +82,7 @@ struct Options {
   bool debugMarkerOutside = false;
   // Test aid (windowed): resize to 1x1, minimise, restore, fullscreen and back while running.
   bool windowTest = false;
+  bool headlessBgra = false;  // test aid: a BGRA8 sRGB headless back buffer
   // The port's fixes of the original's defects (--fix); none by default.
   FixSet fixes;
   // Upscaling (Docs/Upscaling.md). --upscale-quality Q (the engine's 0..5)

@@ -18,6 +18,9 @@ constexpr d3dl::DXGI_FORMAT kSrgb = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
 // with a depth and a float view.
 constexpr d3dl::DXGI_FORMAT kReadableDepth = d3dl::DXGI_FORMAT_R32_TYPELESS;
 constexpr d3dl::DXGI_FORMAT kBackBuffer = d3dl::DXGI_FORMAT_UNKNOWN;  // the plan's backBufferFormat
+bool IsSrgb(d3dl::DXGI_FORMAT f) {
+  return f == d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB || f == d3dl::DXGI_FORMAT_B8G8R8A8_UNORM_SRGB;
+}
 // One row per target: its name, format, size rule and when the plan needs it
 // (the original's InitDynamicResolution rules, then the port's additions).
 // The fast TAA path reads velocity from the motion-blur alpha: one velocity
@@ -34,10 +37,14 @@ constexpr RenderTargetRow kTargets[] = {
     {"g_ColorFull", kColor, SizeRule::Full, [](Plan p) { return !p.dynamic && p.motionBlur; }},
     {"g_VelocityFull", kVelocity, SizeRule::Full, [](Plan p) { return !p.dynamic && p.motionBlur; }},
     {"g_DepthFull", kDepth, SizeRule::Full, [](Plan p) { return !p.dynamic; }},
-    {"upscale history[0]", kHistory, SizeRule::Output, [](Plan p) { return p.dynamic && p.TAAU(); }},
-    {"upscale history[1]", kHistory, SizeRule::Output, [](Plan p) { return p.dynamic && p.TAAU(); }},
-    {"upscale output", kColor, SizeRule::Output, [](Plan p) { return p.dynamic && p.Secondary() && !p.TAAU(); }},
-    {"upscale sharpen input", kColor, SizeRule::Output, [](Plan p) { return p.dynamic && p.sharpenPass; }},
+    {"upscale history[0]", kHistory, SizeRule::Output, [](Plan p) { return p.dynamic && p.TAAU(); },
+     TargetViews::ColourStorage},
+    {"upscale history[1]", kHistory, SizeRule::Output, [](Plan p) { return p.dynamic && p.TAAU(); },
+     TargetViews::ColourStorage},
+    {"upscale output", kColor, SizeRule::Output, [](Plan p) { return p.dynamic && p.Secondary() && !p.TAAU(); },
+     TargetViews::ColourStorage},
+    {"upscale sharpen input", kColor, SizeRule::Output, [](Plan p) { return p.dynamic && p.sharpenPass; },
+     TargetViews::ColourStorage},
     // Deferred shading: the dynamic RT's size on both paths.
     {"g_GBufferDiffuse", kSrgb, SizeRule::Dynamic, [](Plan p) { return p.deferred; }},
     {"g_GBufferSpecular", kSrgb, SizeRule::Dynamic, [](Plan p) { return p.deferred; }},
@@ -64,6 +71,7 @@ d3dl::HRESULT RenderTarget::Create(d3dl::Device* device, uint32_t w, uint32_t h,
   if (kind == TargetViews::CopyRead) d.BindFlags = d3dl::BIND_SHADER_RESOURCE;
   else d.BindFlags = depth ? d3dl::BIND_DEPTH_STENCIL : (d3dl::BIND_RENDER_TARGET | d3dl::BIND_SHADER_RESOURCE);
   if (fmt == kReadableDepth) d.BindFlags |= d3dl::BIND_SHADER_RESOURCE;
+  if (kind == TargetViews::ColourStorage && !IsSrgb(fmt)) d.BindFlags |= d3dl::BIND_UNORDERED_ACCESS;
   d3dl::HRESULT hr = device->CreateTexture2D(&d, nullptr, texture.ReleaseAndGetAddressOf());
   if (d3dl::FAILED(hr)) return hr;
   texture->SetDebugName(name);
@@ -82,8 +90,11 @@ d3dl::HRESULT RenderTarget::CreateViews(d3dl::Device* device) {
   if (views == TargetViews::CopyRead) return device->CreateShaderResourceView(t, nullptr, srv.ReleaseAndGetAddressOf());
   if (format == d3dl::DXGI_FORMAT_D32_FLOAT) return device->CreateDepthStencilView(t, nullptr, dsv.ReleaseAndGetAddressOf());
   if (format != kReadableDepth) {
-    const d3dl::HRESULT hr = device->CreateRenderTargetView(t, nullptr, rtv.ReleaseAndGetAddressOf());
-    return d3dl::FAILED(hr) ? hr : device->CreateShaderResourceView(t, nullptr, srv.ReleaseAndGetAddressOf());
+    d3dl::HRESULT hr = device->CreateRenderTargetView(t, nullptr, rtv.ReleaseAndGetAddressOf());
+    if (d3dl::SUCCEEDED(hr)) hr = device->CreateShaderResourceView(t, nullptr, srv.ReleaseAndGetAddressOf());
+    if (d3dl::SUCCEEDED(hr) && views == TargetViews::ColourStorage && !IsSrgb(format))
+      hr = device->CreateUnorderedAccessView(t, nullptr, uav.ReleaseAndGetAddressOf());
+    return hr;
   }
   // Readable depth: D32_FLOAT DSVs (one per slice of an array), an R32_FLOAT SRV.
   const bool array = views == TargetViews::DepthArray;
@@ -107,6 +118,7 @@ d3dl::HRESULT RenderTarget::CreateViews(d3dl::Device* device) {
 void RenderTarget::Release() {
   sliceDsv.clear();
   dsv = nullptr;
+  uav = nullptr;
   srv = nullptr;
   rtv = nullptr;
   texture = nullptr;

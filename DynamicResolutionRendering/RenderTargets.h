@@ -15,9 +15,10 @@ namespace drr {
 // How a target is viewed: by its format (colour formats get an RTV and an
 // SRV, D32_FLOAT a DSV, R32_TYPELESS, depth read by a pass, a D32_FLOAT DSV
 // and an R32_FLOAT SRV); as a depth array (R32_TYPELESS: a D32_FLOAT DSV per
-// slice, one R32_FLOAT SRV over the slices); or as a copy destination read
-// by a shader (an SRV only).
-enum class TargetViews { ByFormat, DepthArray, CopyRead };
+// slice, one R32_FLOAT SRV over the slices); as a copy destination read
+// by a shader (an SRV only); or as colour the compute upscalers may also
+// write (an RTV, an SRV and, unless the format is sRGB, a UAV).
+enum class TargetViews { ByFormat, DepthArray, CopyRead, ColourStorage };
 
 // A texture with the views its TargetViews give.
 struct RenderTarget {
@@ -25,6 +26,7 @@ struct RenderTarget {
   d3dl::ComPtr<d3dl::RenderTargetView> rtv;
   d3dl::ComPtr<d3dl::ShaderResourceView> srv;
   d3dl::ComPtr<d3dl::DepthStencilView> dsv;
+  d3dl::ComPtr<d3dl::UnorderedAccessView> uav;  // ColourStorage in a non-sRGB format
   std::vector<d3dl::ComPtr<d3dl::DepthStencilView>> sliceDsv;  // DepthArray: one per slice
   uint32_t width = 0, height = 0;
   uint32_t slices = 0;  // DepthArray: the array's size; 0 otherwise

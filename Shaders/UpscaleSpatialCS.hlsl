@@ -88,5 +88,5 @@ void SpatialCS(uint3 groupId : SV_GroupID, uint3 px : SV_DispatchThreadID, uint 
 #else
   float3 c = SPATIAL_COLOUR(OutputUV(px.xy));
 #endif
-  g_Out0[px.xy] = float4(c, 1.0);
+  g_Out0[px.xy] = EncodeForTarget(float4(c, 1.0), g_Encode0);
 }

@@ -67,6 +67,6 @@ void TemporalUpsampleCS(uint3 groupId : SV_GroupID, uint3 px : SV_DispatchThread
 #endif
   if (any(px.xy >= uint2(g_OutputSize))) return;
   float4 h = TemporalUpsample(OutputUV(px.xy));
-  g_Out0[px.xy] = h;
-  if (g_WriteSecond != 0) g_Out1[px.xy] = float4(h.rgb, 1.0);
+  g_Out0[px.xy] = h;  // the history (RGBA16F)
+  if (g_WriteSecond != 0) g_Out1[px.xy] = EncodeForTarget(float4(h.rgb, 1.0), g_Encode1);
 }

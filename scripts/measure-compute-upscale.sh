@@ -20,7 +20,9 @@
 # Environment: BUILD_DIR (default build), WIDTH, HEIGHT, SCALE, FRAMES, WARM;
 # EXTRA="name=file.hlsl ..." adds compute TAAU shaders built from those files
 # (another commit's UpscaleTemporalCS.hlsl, for one: a before/after in the
-# same rounds).
+# same rounds); BASELINE_BUILD=dir adds another build's compute TAAU and
+# point (baseline-taau-compute, baseline-point: its sample and its shaders,
+# for a change outside the shader).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${BUILD_DIR:-$root/build}"
@@ -33,6 +35,7 @@ out="$(mkdir -p "$out" && cd "$out" && pwd)"  # absolute: the build command runs
 width="${WIDTH:-640}" height="${HEIGHT:-360}" scale="${SCALE:-0.71}" frames="${FRAMES:-36}" warm="${WARM:-12}"
 mkdir -p "$out/reports"
 # name | sample arguments | compute shader replacing UpscaleTemporalCS.hlsl's (variants only)
+# | another build (baselines only)
 configs=("point|--filter point|" "taau-pixel|--filter taau --upscale-shader pixel|"
          "taau-compute|--filter taau --upscale-shader compute|"
          "taau-direct|--filter taau --upscale-shader compute|UpscaleTemporal_TemporalUpsampleDirectCS.spv")
@@ -40,6 +43,11 @@ if ((decompose)); then
   configs+=("no-neighbourhood|--filter taau --upscale-shader compute|TemporalNoNeighbourhoodCS.hlsl"
             "no-history|--filter taau --upscale-shader compute|TemporalNoHistoryCS.hlsl"
             "one-texel|--filter taau --upscale-shader compute|TemporalOneTexelCS.hlsl")
+fi
+if [ -n "${BASELINE_BUILD:-}" ]; then
+  baseline="$(cd "$BASELINE_BUILD" && pwd)"
+  configs+=("baseline-point|--filter point||$baseline"
+            "baseline-taau-compute|--filter taau --upscale-shader compute||$baseline")
 fi
 for e in ${EXTRA:-}; do configs+=("${e%%=*}|--filter taau --upscale-shader compute|$(realpath "${e#*=}")"); done
 
@@ -68,9 +76,11 @@ shader_dir() {
 
 for ((r = 1; r <= rounds; ++r)); do
   for c in "${configs[@]}"; do
-    IFS='|' read -r name args variant <<<"$c"
+    IFS='|' read -r name args variant other <<<"$c"
     read -r -a argv <<<"$args"
-    DRR_SHADER_DIR="$(shader_dir "$variant")" "$sample" --headless --width "$width" --height "$height" \
+    run_sample="$sample" shaders="$(shader_dir "$variant")"
+    [ -n "$other" ] && run_sample="$other/DynamicResolutionRendering/DynamicResolutionRendering" shaders="$other/shaders"
+    DRR_SHADER_DIR="$shaders" "$run_sample" --headless --width "$width" --height "$height" \
       --frames "$frames" --time 3 --scale "$scale" --camera 1 --no-gui --quiet "${argv[@]}" \
       --report "$out/reports/$name-$r.json" 2>/dev/null >/dev/null
   done

@@ -10,6 +10,9 @@
 # that differs fails) and exits non-zero on any difference or failed run.
 #
 # Environment: MATRIX_SIZE (default 320x180), MATRIX_FRAMES (default 20),
+# MATRIX_EXTRA (options added to every mode, e.g. "--upscale-shader compute"),
+# MATRIX_TOLERANCE (idiff's -fail threshold, default 0; 0.004 lets a channel
+# differ by one 8-bit step, 1/255, and no more),
 # MATRIX_ONLY (a regex of mode names to run), MATRIX_VALIDATION=1 adds
 # --validation (slower; a message fails the run), MATRIX_REPORT=1 writes each
 # mode's JSON report beside its screenshot (its render targets and passes run).
@@ -29,6 +32,9 @@ frames="${MATRIX_FRAMES:-20}"
 common=(--headless --width "${size%x*}" --height "${size#*x}" --frames "$frames" --time 5 --fixed-dt 0.02
         --control manual --scale 0.71 --no-gui --quiet)
 [[ "${MATRIX_VALIDATION:-0}" == 1 ]] && common+=(--validation)
+read -r -a matrix_extra <<< "${MATRIX_EXTRA:-}"
+common+=("${matrix_extra[@]}")
+tolerance="${MATRIX_TOLERANCE:-0}"
 
 # name | options (on top of the common ones)
 modes=(
@@ -104,7 +110,7 @@ for m in "${modes[@]}"; do
     continue
   fi
   if [[ -n "$baseline" ]]; then
-    if idiff -fail 0 -warn 0 "$baseline/$name.png" "$out/$name.png" > "$out/$name.idiff" 2>&1; then
+    if idiff -fail "$tolerance" -warn "$tolerance" "$baseline/$name.png" "$out/$name.png" > "$out/$name.idiff" 2>&1; then
       echo "same       $name"
     else
       echo "DIFFERENT  $name ($(grep -m1 -E 'Max error|FAILURE|ERROR' "$out/$name.idiff" || echo see "$out/$name.idiff"))"

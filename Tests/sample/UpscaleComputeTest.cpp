@@ -2,7 +2,9 @@
 // against their pixel shaders: the same frames rendered both ways in this
 // process, under validation, equal within one 8-bit step on interior pixels
 // (a driver may round a compute shader's float arithmetic differently from a
-// pixel shader's; lavapipe gives identical images);
+// pixel shader's, and the compute shaders encode sRGB themselves where the
+// pixel shaders' target does: llvmpipe's encoding is an approximation that
+// differs from the exact curve by one step in some values);
 // the original's filters ignore the option; a planted wrong compute shader
 // is caught (the comparison really sees the compute path); without the
 // compute shaders the pixel shaders run.
@@ -32,6 +34,7 @@ struct ComputeCase {
   Filter filter;
   double secondaryPercent;  // 100: no secondary upscale
   int frames;               // TAAU: enough frames for the history to matter
+  bool bgra = false;        // a BGRA8 sRGB back buffer (--headless-bgra), as many windows have
 };
 
 const ComputeCase kCases[] = {
@@ -51,6 +54,10 @@ const ComputeCase kCases[] = {
     {"TemporalUpsampleDirect", Filter::TAAU, 25, 8},
     {"Lanczos3Direct", Filter::UpscaleLanczos3, 25, 2},
     {"EdgeAdaptiveDirect", Filter::UpscaleEdgeAdaptive, 25, 2},
+    // The back buffer in BGRA order: the shader swaps red and blue for the
+    // scratch whose bits are copied into it.
+    {"TemporalUpsampleBgra", Filter::TAAU, 100, 8, true},
+    {"CatmullRomThenSecondaryBgra", Filter::UpscaleCatmullRom, 83.33, 2, true},
 };
 
 void PrintTo(const ComputeCase& c, std::ostream* os) { *os << c.name; }
@@ -61,6 +68,7 @@ Options CaseOptions(const ComputeCase& c, UpscaleShader shader) {
   o.scaleX = o.scaleY = 0.71f;
   o.secondaryScreenPercentage = c.secondaryPercent;
   o.upscaleShader = shader;
+  o.headlessBgra = c.bgra;
   return o;
 }
 

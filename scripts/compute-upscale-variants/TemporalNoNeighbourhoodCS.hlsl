@@ -33,5 +33,5 @@ void TemporalUpsampleCS(uint3 px : SV_DispatchThreadID) {
   s_Texel = float4(g_ColorCurr.Load(int3(uv * ViewportTexels(), 0)).rgb, 0.5);
   float4 h = TemporalUpsample(uv);
   g_Out0[px.xy] = h;
-  if (g_WriteSecond != 0) g_Out1[px.xy] = float4(h.rgb, 1.0);
+  if (g_WriteSecond != 0) g_Out1[px.xy] = EncodeForTarget(float4(h.rgb, 1.0), g_Encode1);
 }
