@@ -18,8 +18,11 @@ constexpr d3dl::DXGI_FORMAT kSrgb = d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
 // with a depth and a float view.
 constexpr d3dl::DXGI_FORMAT kReadableDepth = d3dl::DXGI_FORMAT_R32_TYPELESS;
 constexpr d3dl::DXGI_FORMAT kBackBuffer = d3dl::DXGI_FORMAT_UNKNOWN;  // the plan's backBufferFormat
-bool IsSrgb(d3dl::DXGI_FORMAT f) {
-  return f == d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB || f == d3dl::DXGI_FORMAT_B8G8R8A8_UNORM_SRGB;
+// ColourStorage targets get a storage view (UAV) unless their format is sRGB,
+// which cannot be a storage image.
+bool HasStorageView(TargetViews views, d3dl::DXGI_FORMAT f) {
+  return views == TargetViews::ColourStorage && f != d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB &&
+         f != d3dl::DXGI_FORMAT_B8G8R8A8_UNORM_SRGB;
 }
 // One row per target: its name, format, size rule and when the plan needs it
 // (the original's InitDynamicResolution rules, then the port's additions).
@@ -71,7 +74,7 @@ d3dl::HRESULT RenderTarget::Create(d3dl::Device* device, uint32_t w, uint32_t h,
   if (kind == TargetViews::CopyRead) d.BindFlags = d3dl::BIND_SHADER_RESOURCE;
   else d.BindFlags = depth ? d3dl::BIND_DEPTH_STENCIL : (d3dl::BIND_RENDER_TARGET | d3dl::BIND_SHADER_RESOURCE);
   if (fmt == kReadableDepth) d.BindFlags |= d3dl::BIND_SHADER_RESOURCE;
-  if (kind == TargetViews::ColourStorage && !IsSrgb(fmt)) d.BindFlags |= d3dl::BIND_UNORDERED_ACCESS;
+  if (HasStorageView(kind, fmt)) d.BindFlags |= d3dl::BIND_UNORDERED_ACCESS;
   d3dl::HRESULT hr = device->CreateTexture2D(&d, nullptr, texture.ReleaseAndGetAddressOf());
   if (d3dl::FAILED(hr)) return hr;
   texture->SetDebugName(name);
@@ -92,7 +95,7 @@ d3dl::HRESULT RenderTarget::CreateViews(d3dl::Device* device) {
   if (format != kReadableDepth) {
     d3dl::HRESULT hr = device->CreateRenderTargetView(t, nullptr, rtv.ReleaseAndGetAddressOf());
     if (d3dl::SUCCEEDED(hr)) hr = device->CreateShaderResourceView(t, nullptr, srv.ReleaseAndGetAddressOf());
-    if (d3dl::SUCCEEDED(hr) && views == TargetViews::ColourStorage && !IsSrgb(format))
+    if (d3dl::SUCCEEDED(hr) && HasStorageView(views, format))
       hr = device->CreateUnorderedAccessView(t, nullptr, uav.ReleaseAndGetAddressOf());
     return hr;
   }
