@@ -22,7 +22,8 @@
 # (another commit's UpscaleTemporalCS.hlsl, for one: a before/after in the
 # same rounds); BASELINE_BUILD=dir adds another build's compute TAAU and
 # point (baseline-taau-compute, baseline-point: its sample and its shaders,
-# for a change outside the shader).
+# for a change outside the shader). ONLY="name ..." runs only those
+# configurations (and point, the reference of every ratio).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${BUILD_DIR:-$root/build}"
@@ -50,6 +51,13 @@ if [ -n "${BASELINE_BUILD:-}" ]; then
             "baseline-taau-compute|--filter taau --upscale-shader compute||$baseline")
 fi
 for e in ${EXTRA:-}; do configs+=("${e%%=*}|--filter taau --upscale-shader compute|$(realpath "${e#*=}")"); done
+if [ -n "${ONLY:-}" ]; then
+  kept=()
+  for c in "${configs[@]}"; do
+    [[ " point $ONLY " = *" ${c%%|*} "* ]] && kept+=("$c")
+  done
+  configs=("${kept[@]}")
+fi
 
 # A copy of the build's shaders with the compute TAAU replaced by a variant:
 # another of the build's shaders (.spv) or one built here (.hlsl).
