@@ -69,12 +69,10 @@ struct ScratchPlan {
   uint32_t encode;
 };
 ScratchPlan ScratchFor(d3dl::DXGI_FORMAT target) {
-  switch (target) {
-    case d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB: return {d3dl::DXGI_FORMAT_R8G8B8A8_UNORM, kEncodeSrgb};
-    case d3dl::DXGI_FORMAT_B8G8R8A8_UNORM_SRGB: return {d3dl::DXGI_FORMAT_R8G8B8A8_UNORM, kEncodeSrgb | kEncodeSwapRB};
-    case d3dl::DXGI_FORMAT_B8G8R8A8_UNORM: return {d3dl::DXGI_FORMAT_R8G8B8A8_UNORM, kEncodeSwapRB};
-    default: return {target, 0};
-  }
+  const d3dl::DXGI_FORMAT bits = d3dl::FormatLinearOf(target);
+  const uint32_t encode = bits != target ? kEncodeSrgb : 0u;
+  if (bits == d3dl::DXGI_FORMAT_B8G8R8A8_UNORM) return {d3dl::DXGI_FORMAT_R8G8B8A8_UNORM, encode | kEncodeSwapRB};
+  return {bits, encode};
 }
 
 d3dl::HRESULT CreateDynamicCB(d3dl::Device* device, uint32_t bytes, d3dl::Buffer** cb) {

@@ -21,8 +21,7 @@ constexpr d3dl::DXGI_FORMAT kBackBuffer = d3dl::DXGI_FORMAT_UNKNOWN;  // the pla
 // ColourStorage targets get a storage view (UAV) unless their format is sRGB,
 // which cannot be a storage image.
 bool HasStorageView(TargetViews views, d3dl::DXGI_FORMAT f) {
-  return views == TargetViews::ColourStorage && f != d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB &&
-         f != d3dl::DXGI_FORMAT_B8G8R8A8_UNORM_SRGB;
+  return views == TargetViews::ColourStorage && !d3dl::FormatIsSrgb(f);
 }
 // One row per target: its name, format, size rule and when the plan needs it
 // (the original's InitDynamicResolution rules, then the port's additions).

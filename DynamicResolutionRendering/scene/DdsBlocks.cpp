@@ -54,28 +54,6 @@ uint64_t TextureMipBytes(DXGI_FORMAT format, uint32_t width, uint32_t height) {
   return TextureRowPitch(format, width) * rows;
 }
 
-DXGI_FORMAT SrgbFormatOf(DXGI_FORMAT format) {
-  switch (format) {
-    case DXGI_FORMAT_R8G8B8A8_UNORM: return DXGI_FORMAT_R8G8B8A8_UNORM_SRGB;
-    case DXGI_FORMAT_BC1_UNORM: return DXGI_FORMAT_BC1_UNORM_SRGB;
-    case DXGI_FORMAT_BC2_UNORM: return DXGI_FORMAT_BC2_UNORM_SRGB;
-    case DXGI_FORMAT_BC3_UNORM: return DXGI_FORMAT_BC3_UNORM_SRGB;
-    default: return format;
-  }
-}
-
-DXGI_FORMAT LinearFormatOf(DXGI_FORMAT format) {
-  switch (format) {
-    case DXGI_FORMAT_R8G8B8A8_UNORM_SRGB: return DXGI_FORMAT_R8G8B8A8_UNORM;
-    case DXGI_FORMAT_BC1_UNORM_SRGB: return DXGI_FORMAT_BC1_UNORM;
-    case DXGI_FORMAT_BC2_UNORM_SRGB: return DXGI_FORMAT_BC2_UNORM;
-    case DXGI_FORMAT_BC3_UNORM_SRGB: return DXGI_FORMAT_BC3_UNORM;
-    default: return format;
-  }
-}
-
-bool IsSrgbFormat(DXGI_FORMAT format) { return LinearFormatOf(format) != format; }
-
 namespace {
 
 using Texels = std::array<std::array<uint8_t, 4>, 16>;  // one block, row by row
@@ -130,7 +108,7 @@ std::array<uint8_t, 16> DecodeChannel(const uint8_t* p) {
 }
 
 bool DecodeBlock(DXGI_FORMAT format, const uint8_t* p, Texels* t) {
-  switch (LinearFormatOf(format)) {
+  switch (d3dl::FormatLinearOf(format)) {
     case DXGI_FORMAT_BC1_UNORM: DecodeColour(p, true, t); return true;
     case DXGI_FORMAT_BC2_UNORM:
       DecodeColour(p + 8, false, t);

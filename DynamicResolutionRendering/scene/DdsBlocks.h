@@ -24,11 +24,6 @@ const char* TextureFormatName(d3dl::DXGI_FORMAT format);
 uint64_t TextureRowPitch(d3dl::DXGI_FORMAT format, uint32_t width);
 // Bytes of a width x height mip (whole blocks for BC); 0 for other formats.
 uint64_t TextureMipBytes(d3dl::DXGI_FORMAT format, uint32_t width, uint32_t height);
-// The same format in its sRGB form where one exists (R8G8B8A8, BC1, BC2, BC3),
-// otherwise `format` itself; and the reverse.
-d3dl::DXGI_FORMAT SrgbFormatOf(d3dl::DXGI_FORMAT format);
-d3dl::DXGI_FORMAT LinearFormatOf(d3dl::DXGI_FORMAT format);
-bool IsSrgbFormat(d3dl::DXGI_FORMAT format);
 
 // Decodes a width x height mip of BC1..BC5 (UNORM or SRGB: the stored values,
 // no colour-space conversion) into RGBA8, rows top to bottom, as a D3D11

@@ -32,7 +32,7 @@ void TextureFromDds(DdsImage image, const std::string& name, TextureKind kind, c
   TextureData t;
   t.source = name;
   t.kind = kind;
-  t.format = kind == TextureKind::Color ? SrgbFormatOf(image.format) : image.format;
+  t.format = kind == TextureKind::Color ? FormatSrgbOf(image.format) : image.format;
   t.mipsFromFile = BcBlockBytes(image.format) != 0 || image.mips.size() > 1;
   t.mips = std::move(image.mips);
   t.hasAlpha = AnyAlphaBelowOpaque(t);
@@ -50,7 +50,7 @@ bool ExpandToRgba8(const TextureData& texture, TextureData* out, std::string* er
   t.kind = texture.kind;
   t.hasAlpha = texture.hasAlpha;
   t.mipsFromFile = texture.mipsFromFile;
-  t.format = IsSrgbFormat(texture.format) ? DXGI_FORMAT_R8G8B8A8_UNORM_SRGB : DXGI_FORMAT_R8G8B8A8_UNORM;
+  t.format = FormatIsSrgb(texture.format) ? DXGI_FORMAT_R8G8B8A8_UNORM_SRGB : DXGI_FORMAT_R8G8B8A8_UNORM;
   for (const TextureMip& m : texture.mips) {
     TextureMip e;
     e.width = m.width, e.height = m.height;

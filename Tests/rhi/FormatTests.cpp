@@ -308,5 +308,37 @@ TEST_F(RhiFormats, D24S8StencilMasksASecondDraw) {
   EXPECT_EQ(wrong, 0);
 }
 
+// The header-only sRGB pairs against the RHI's format table, by name: a
+// format is sRGB exactly when its name ends in _SRGB, its linear twin is the
+// table's format of the name without it, and every UNORM format with an _SRGB
+// twin in the table maps to it.
+TEST(RhiFormatNames, SrgbPairsAgreeWithTheFormatTable) {
+  const std::string suffix = "_SRGB";
+  auto inTable = [](DXGI_FORMAT f) { return std::string(FormatName(f)) != "UNSUPPORTED_FORMAT"; };
+  auto byName = [&](const std::string& name) {
+    for (uint32_t v = 1; v < 256; ++v)
+      if (inTable(DXGI_FORMAT(v)) && name == FormatName(DXGI_FORMAT(v))) return DXGI_FORMAT(v);
+    return DXGI_FORMAT_UNKNOWN;
+  };
+  int srgbFormats = 0;
+  for (uint32_t v = 1; v < 256; ++v) {
+    const auto f = DXGI_FORMAT(v);
+    if (!inTable(f)) continue;
+    const std::string name = FormatName(f);
+    const bool named = name.size() > suffix.size() && name.ends_with(suffix);
+    EXPECT_EQ(FormatIsSrgb(f), named) << name;
+    if (named) {
+      ++srgbFormats;
+      EXPECT_EQ(FormatLinearOf(f), byName(name.substr(0, name.size() - suffix.size()))) << name;
+      EXPECT_EQ(FormatSrgbOf(FormatLinearOf(f)), f) << name;
+    } else {
+      EXPECT_EQ(FormatLinearOf(f), f) << name;
+      const DXGI_FORMAT twin = byName(name + suffix);
+      EXPECT_EQ(FormatSrgbOf(f), twin == DXGI_FORMAT_UNKNOWN ? f : twin) << name;
+    }
+  }
+  EXPECT_EQ(srgbFormats, 5);
+}
+
 }  // namespace
 }  // namespace rhitest

@@ -47,6 +47,36 @@ enum DXGI_FORMAT : uint32_t {
   DXGI_FORMAT_B8G8R8A8_UNORM_SRGB = 91,
 };
 
+// The sRGB formats and the UNORM formats with the same bits: views of one may
+// read or write the other, a copy keeps the bits. Header-only, so that code
+// without the RHI's library (the scene's CPU side) can use it.
+struct FormatSrgbPair {
+  DXGI_FORMAT srgb;
+  DXGI_FORMAT linear;
+};
+inline constexpr FormatSrgbPair kFormatSrgbPairs[] = {
+    {DXGI_FORMAT_R8G8B8A8_UNORM_SRGB, DXGI_FORMAT_R8G8B8A8_UNORM},
+    {DXGI_FORMAT_B8G8R8A8_UNORM_SRGB, DXGI_FORMAT_B8G8R8A8_UNORM},
+    {DXGI_FORMAT_BC1_UNORM_SRGB, DXGI_FORMAT_BC1_UNORM},
+    {DXGI_FORMAT_BC2_UNORM_SRGB, DXGI_FORMAT_BC2_UNORM},
+    {DXGI_FORMAT_BC3_UNORM_SRGB, DXGI_FORMAT_BC3_UNORM},
+};
+// The UNORM format with an sRGB format's bits (BC1_UNORM_SRGB: BC1_UNORM);
+// any other format itself.
+constexpr DXGI_FORMAT FormatLinearOf(DXGI_FORMAT format) {
+  for (const FormatSrgbPair& p : kFormatSrgbPairs)
+    if (p.srgb == format) return p.linear;
+  return format;
+}
+// The sRGB format with a UNORM format's bits, where there is one; any other
+// format itself.
+constexpr DXGI_FORMAT FormatSrgbOf(DXGI_FORMAT format) {
+  for (const FormatSrgbPair& p : kFormatSrgbPairs)
+    if (p.linear == format) return p.srgb;
+  return format;
+}
+constexpr bool FormatIsSrgb(DXGI_FORMAT format) { return FormatLinearOf(format) != format; }
+
 // Bytes per texel (or per 4x4 block for BC formats); 0 for unknown formats.
 UINT FormatBytesPerElement(DXGI_FORMAT format);
 bool FormatIsBlockCompressed(DXGI_FORMAT format);
