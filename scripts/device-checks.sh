@@ -234,7 +234,7 @@ step_tests() {
   count=$#
   for suite; do
     (($(left) >= 3)) || break
-    DRR_TEST_OUT="$out/tests-$suite-files" DRR_BIN="$suite" bounded --max $(($(left) / count)) "${linebuf[@]}" "$bundle/run.sh" >"$out/tests-$suite.log" 2>&1
+    D3DL_VALIDATION=sync DRR_TEST_OUT="$out/tests-$suite-files" DRR_BIN="$suite" bounded --max $(($(left) / count)) "${linebuf[@]}" "$bundle/run.sh" >"$out/tests-$suite.log" 2>&1
     local rc=$?
     echo "$suite: exit $rc, $(grep -c '^\[       OK \]' "$out/tests-$suite.log") passed," \
       "$(grep -c '^\[  FAILED  \].*ms)$' "$out/tests-$suite.log") failed:" \

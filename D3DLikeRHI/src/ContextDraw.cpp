@@ -109,7 +109,7 @@ bool ContextImpl::BeginRendering() {
   ri.renderArea = {{0, 0}, {w, h}};
   ri.layerCount = layers;
   ri.colorAttachmentCount = om.numRenderTargets;
-  ri.pColorAttachments = color;
+  ri.pColorAttachments = om.numRenderTargets ? color : nullptr;
   ri.pDepthAttachment = om.depthStencilView ? &depth : nullptr;
   const bool stencil = om.depthStencilView && (om.depthStencilView->v.aspect & VK_IMAGE_ASPECT_STENCIL_BIT);
   ri.pStencilAttachment = stencil ? &depth : nullptr;
