@@ -32,6 +32,10 @@ bool DeviceResources::Create(bool validation, AppWindow& window, uint32_t width,
     *error = "cannot create the Vulkan device (see the messages above)";
     return false;
   }
+  if (validation && ValidationInForce() == d3dl::ValidationMode::Off) {
+    *error = "--validation: VK_LAYER_KHRONOS_validation is not installed (Debian package vulkan-validationlayers)";
+    return false;
+  }
   m_Device->GetAdapterDesc(&m_Adapter);
   d3dl::SWAP_CHAIN_DESC sd;
   sd.Format = window.Headless() ? headlessFormat : m_Format;
@@ -102,6 +106,13 @@ uint64_t DeviceResources::ValidationMessages() const {
   d3dl::DEVICE_STATS st;
   m_Device->GetStats(&st);
   return st.ValidationMessages;
+}
+
+d3dl::ValidationMode DeviceResources::ValidationInForce() const {
+  if (!m_Device) return d3dl::ValidationMode::Off;
+  d3dl::DEVICE_STATS st;
+  m_Device->GetStats(&st);
+  return st.Validation;
 }
 
 }  // namespace drr

@@ -203,7 +203,7 @@ const OptionRow kRows[] = {
     Path("--screenshot", "PATH", &Options::screenshot, "PNG/EXR of the back buffer after the last frame"),
     Flag("--screenshot-no-gui", &Options::screenshotNoGui, true, "the screenshot excludes the GUI"),
     Path("--report", "PATH", &Options::report, "JSON report (options, adapter, GPU times, scales, RT bytes)"),
-    Flag("--validation", &Options::validation, true, "Vulkan core + sync validation; exit code 3 on any message")
+    Flag("--validation", &Options::validation, true, "Vulkan core + sync validation, layer required; exit code 3 on any message")
         .Json("validation"),
     Flag("--stats", &Options::stats, true, "print the scene statistics and the warnings"),
     Flag("--quiet", &Options::quiet, true, "no warnings on the console (--stats and the report keep them)"),

@@ -116,6 +116,9 @@ struct ADAPTER_DESC {
 };
 
 struct DEVICE_STATS {
+  // The validation in force: what DEVICE_CREATE_DESC asked for, or Off when
+  // VK_LAYER_KHRONOS_validation is not installed (a warning says so).
+  ValidationMode Validation = ValidationMode::Off;
   UINT64 ValidationMessages = 0;  // since device creation
   UINT64 PipelinesCreated = 0;
   UINT64 DescriptorSetsAllocated = 0;
