@@ -32,7 +32,7 @@ bool DeviceResources::Create(bool validation, AppWindow& window, uint32_t width,
     *error = "cannot create the Vulkan device (see the messages above)";
     return false;
   }
-  if (validation && ValidationInForce() == d3dl::ValidationMode::Off) {
+  if (validation && ValidationLayerMissing()) {
     *error = "--validation: VK_LAYER_KHRONOS_validation is not installed (Debian package vulkan-validationlayers)";
     return false;
   }
@@ -108,11 +108,11 @@ uint64_t DeviceResources::ValidationMessages() const {
   return st.ValidationMessages;
 }
 
-d3dl::ValidationMode DeviceResources::ValidationInForce() const {
-  if (!m_Device) return d3dl::ValidationMode::Off;
+bool DeviceResources::ValidationLayerMissing() const {
+  if (!m_Device) return false;
   d3dl::DEVICE_STATS st;
   m_Device->GetStats(&st);
-  return st.Validation;
+  return st.Validation != st.ValidationRequested;
 }
 
 }  // namespace drr

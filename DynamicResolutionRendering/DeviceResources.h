@@ -39,8 +39,9 @@ class DeviceResources {
   d3dl::DXGI_FORMAT Format() const { return m_Format; }  // the back buffer's
   const d3dl::ADAPTER_DESC& Adapter() const { return m_Adapter; }
   uint64_t ValidationMessages() const;
-  // Off when no validation was asked for or the layer is not installed.
-  d3dl::ValidationMode ValidationInForce() const;
+  // Validation was asked for (--validation or D3DL_VALIDATION), but the
+  // layer is not installed: the device runs without it.
+  bool ValidationLayerMissing() const;
 
  private:
   bool CreateBackBufferViews();

@@ -76,7 +76,7 @@ class Sample {
   const Image& CapturedSceneColor() const { return m_Log.Captured(Capture::SceneColor); }  // whole RT
   const Image& CapturedVelocity() const { return m_Log.Captured(Capture::Velocity); }      // may be empty
   uint64_t ValidationMessages() const;
-  d3dl::ValidationMode ValidationInForce() const;
+  bool ValidationLayerMissing() const;
   const DynamicResolution& GetDynamicResolution() const { return m_DynamicResolution; }
   uint64_t RenderTargetBytes() const;
   const std::map<std::string, uint64_t>& PassesRun() const { return m_Profiler.PassesRun(); }

@@ -191,7 +191,7 @@ void Sample::RunGuiActions() {
 
 
 uint64_t Sample::ValidationMessages() const { return m_Device.ValidationMessages(); }
-d3dl::ValidationMode Sample::ValidationInForce() const { return m_Device.ValidationInForce(); }
+bool Sample::ValidationLayerMissing() const { return m_Device.ValidationLayerMissing(); }
 
 bool Sample::WriteReport(const std::string& path, std::string* error) const {
   ReportInfo info;

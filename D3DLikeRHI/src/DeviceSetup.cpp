@@ -81,6 +81,7 @@ bool DeviceImpl::CreateInstance(const DEVICE_CREATE_DESC& desc, ValidationMode m
     validation = false;
   }
   if (validation) layers.push_back("VK_LAYER_KHRONOS_validation");
+  stats.ValidationRequested = mode;
   stats.Validation = validation ? mode : ValidationMode::Off;
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = desc.ApplicationName ? desc.ApplicationName : "D3DLikeRHI";

@@ -105,9 +105,9 @@ bool Dx10Layout(const uint8_t* data, size_t size, const std::string& name, Layou
   const auto f = DXGI_FORMAT(format);
   l->dataOffset += dds::kDx10HeaderSize;
   l->srgb = FormatIsSrgb(f);
-  if (f == DXGI_FORMAT_R8G8B8A8_UNORM || f == DXGI_FORMAT_R8G8B8A8_UNORM_SRGB) {
+  if (FormatLinearOf(f) == DXGI_FORMAT_R8G8B8A8_UNORM) {
     l->plain = Plain::Rgba8;
-  } else if (f == DXGI_FORMAT_B8G8R8A8_UNORM || f == DXGI_FORMAT_B8G8R8A8_UNORM_SRGB) {
+  } else if (FormatLinearOf(f) == DXGI_FORMAT_B8G8R8A8_UNORM) {
     l->plain = Plain::Bgra8;
   } else if (BcBlockBytes(f)) {
     l->bc = f;

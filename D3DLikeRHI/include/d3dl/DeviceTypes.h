@@ -116,8 +116,10 @@ struct ADAPTER_DESC {
 };
 
 struct DEVICE_STATS {
-  // The validation in force: what DEVICE_CREATE_DESC asked for, or Off when
-  // VK_LAYER_KHRONOS_validation is not installed (a warning says so).
+  // The validation DEVICE_CREATE_DESC asked for (D3DL_VALIDATION resolved),
+  // and the one in force: Off when VK_LAYER_KHRONOS_validation is not
+  // installed (a warning says so).
+  ValidationMode ValidationRequested = ValidationMode::Off;
   ValidationMode Validation = ValidationMode::Off;
   UINT64 ValidationMessages = 0;  // since device creation
   UINT64 PipelinesCreated = 0;
