@@ -253,7 +253,7 @@ void ComputeUpscale::Temporal(d3dl::DeviceContext* ctx, const FrameSetup& s, Ren
                                       rts[RT::DepthDynamic].srv.Get()};
   const Destination out[2] = {ToTarget(rts.UpscaleHistory(s.historyCur), &m_History),
                               {bb.texture, &m_Final, nullptr, !s.secondary}};
-  Dispatch(ctx, "UpscaleTemporal_TemporalUpsampleCS", s, s.uc, srv, 7, out, 2);
+  Dispatch(ctx, ComputeName(s.filter).c_str(), s, s.uc, srv, 7, out, 2);
   m_Profiler->CountPass(GetFilterInfo(s.filter).pass);
   ctx->EndEvent();
 }

@@ -70,6 +70,8 @@ inline constexpr FilterInfo kFilters[] = {
      "TemporalUpsample", false, kTAAU},
     {"Edge-adaptive + sharpen", "upscale-edge-adaptive", "UpscaleSpatial_EdgeAdaptivePS", nullptr,
      "UpscaleEdgeAdaptive", "UpscaleEdgeAdaptive", false, kSharpen},
+    {"Temporal Upsample (fast)", "taau-fast", "UpscaleTemporal_TemporalUpsampleFastPS", nullptr,
+     "TemporalUpsampleFast", "TemporalUpsampleFast", false, kTAAU},
 };
 }  // namespace filter_row
 using filter_row::kFilters;
@@ -96,10 +98,13 @@ enum class Filter : int {
   UpscaleGaussianUnsharp,
   TAAU,  // temporal upsample: output-resolution history (passes/TemporalUpsamplePass.cpp)
   UpscaleEdgeAdaptive,  // port design: edge-adaptive upscale + contrast-limited sharpening (two passes)
+  // TAAU's faster permutation (the document's r.PostProcessAAQuality 3): a
+  // cross neighbourhood and a bilinear history (Docs/Upscaling.md).
+  TAAUFast,
   // A row after these needs no name here: the table decides the count.
   Count = int(std::size(kFilters))
 };
-static_assert(int(Filter::UpscaleEdgeAdaptive) < int(Filter::Count));
+static_assert(int(Filter::TAAUFast) < int(Filter::Count));
 
 const FilterInfo& GetFilterInfo(Filter f);
 inline const char* FilterName(Filter f) { return GetFilterInfo(f).name; }

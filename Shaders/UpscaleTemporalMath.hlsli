@@ -6,6 +6,10 @@
 //   float3 NeighbourColour(int2 t);    this frame's colour (t0)
 //   float  NeighbourDepth(int2 t);     the dynamic depth (t6)
 //   float2 NeighbourVelocity(int2 t);  the velocity (t2, viewport fractions, y down)
+// TEMPORAL_FAST=1 compiles the faster permutation (--filter taau-fast, the
+// document's r.PostProcessAAQuality 3): the neighbourhood is the five texels
+// of a cross instead of the 3x3, and the history one bilinear tap instead of
+// the 5-tap Catmull-Rom and its separate weight tap.
 #ifndef UPSCALE_TEMPORAL_MATH_HLSLI
 #define UPSCALE_TEMPORAL_MATH_HLSLI
 
@@ -20,6 +24,21 @@ float3 ClipToNeighbourhood(float3 history, float3 mean, float3 sigma, float gamm
   float m = max(ratio.x, max(ratio.y, ratio.z));
   return m > 1.0 ? mean + d / m : history;
 }
+
+#ifndef TEMPORAL_FAST
+#define TEMPORAL_FAST 0
+#endif
+#if TEMPORAL_FAST
+#define TEMPORAL_SAMPLES 5
+#define TEMPORAL_CENTRE 2
+// The cross: above, left, centre, right, below.
+int2 TemporalSampleOffset(int n) { return int2(n == 1 ? -1 : (n == 3 ? 1 : 0), n == 0 ? -1 : (n == 4 ? 1 : 0)); }
+#else
+#define TEMPORAL_SAMPLES 9
+#define TEMPORAL_CENTRE 4
+// Row by row from the top left.
+int2 TemporalSampleOffset(int n) { return int2(n % 3 - 1, n / 3 - 1); }
+#endif
 
 // The texel of the jittered frame under an output pixel's centre (uv in the
 // output, 0..1), clamped to the viewport: the centre of its 3x3.
@@ -37,13 +56,13 @@ float4 TemporalUpsample(float2 uv) {
   float2 q = uv * vp;
   int2 k = TemporalCentreTexel(uv);
 
-  // The 3x3 neighbourhood: its colours, their offsets and the closest depth.
-  float3 colour[9];
-  float2 offset[9];  // each sample's distance to the pixel centre, output pixels
+  // The neighbourhood (3x3, or the cross): its colours, their offsets and the closest depth.
+  float3 colour[TEMPORAL_SAMPLES];
+  float2 offset[TEMPORAL_SAMPLES];  // each sample's distance to the pixel centre, output pixels
   float closest = 2.0;
   int2 closestTexel = k;
-  [unroll] for (int n = 0; n < 9; ++n) {
-    int2 t = clamp(k + int2(n % 3 - 1, n / 3 - 1), int2(0, 0), last);
+  [unroll] for (int n = 0; n < TEMPORAL_SAMPLES; ++n) {
+    int2 t = clamp(k + TemporalSampleOffset(n), int2(0, 0), last);
     colour[n] = NeighbourColour(t);
     offset[n] = (float2(t) + 0.5 - g_JitterPx - q) * outPerTexel;
     float z = NeighbourDepth(t);
@@ -68,7 +87,7 @@ float4 TemporalUpsample(float2 uv) {
   float invR2 = 1.0 / (4.84 * s * s);
   float3 sum = 0.0, m1 = 0.0, m2 = 0.0;
   float wsum = 0.0, msum = 0.0;
-  [unroll] for (int j = 0; j < 9; ++j) {
+  [unroll] for (int j = 0; j < TEMPORAL_SAMPLES; ++j) {
     float x = saturate(1.0 - dot(offset[j], offset[j]) * invR2);
     float w = x * x;
     sum += w * colour[j];
@@ -79,7 +98,7 @@ float4 TemporalUpsample(float2 uv) {
     m2 += wm * ycc * ycc;
     msum += wm;
   }
-  float3 current = wsum > 1e-4 ? sum / wsum : colour[4];  // no sample near: the nearest one
+  float3 current = wsum > 1e-4 ? sum / wsum : colour[TEMPORAL_CENTRE];  // no sample near: the nearest one
   float3 mean = m1 / msum;
   float3 sigma = sqrt(max(m2 / msum - mean * mean, 0.0));
 
@@ -87,12 +106,17 @@ float4 TemporalUpsample(float2 uv) {
   float3 history = current;
   bool inside = all(prevUV > 0.0) && all(prevUV < 1.0);
   if (g_HistoryValid > 0.5 && inside) {
+#if TEMPORAL_FAST
+    float4 h = g_ColorPrev.SampleLevel(g_LinearClamp, prevUV, 0);  // rgb and weight from one tap
+    float accumulated = h.a;
+#else
     float2 hp = prevUV * g_OutputSize - 0.5;
     float4 h = CatmullRom5(g_ColorPrev, g_LinearClamp, hp, g_InvOutputSize, g_OutputSize);
+    float accumulated = g_ColorPrev.SampleLevel(g_LinearClamp, prevUV, 0).a;
+#endif
     float gamma = lerp(g_TemporalParams.z, g_TemporalParams.w, motion);
     history = YCoCgToRgb(ClipToNeighbourhood(RgbToYCoCg(max(h.rgb, 0.0)), mean, sigma, gamma));
-    historyWeight = min(g_ColorPrev.SampleLevel(g_LinearClamp, prevUV, 0).a,
-                        lerp(g_TemporalParams.x, g_TemporalParams.y, motion));
+    historyWeight = min(accumulated, lerp(g_TemporalParams.x, g_TemporalParams.y, motion));
   }
   // A running average weighted by each frame's coverage of the pixel.
   float frameWeight = max(wsum, 1e-3);

@@ -5,7 +5,9 @@
 # twice: as the sample runs it at these scales (taau-compute: the 3x3
 # neighbourhoods from a group-shared tile) and as its version without the
 # tile (taau-direct: the build's UpscaleTemporal_TemporalUpsampleDirectCS in
-# its place), which reads them from the textures. Each run renders
+# its place), which reads them from the textures. taau-fast-pixel and
+# taau-fast-compute are TAAU's faster permutation (--filter taau-fast: a cross
+# neighbourhood and a bilinear history). Each run renders
 # FRAMES frames of camera 1 at WIDTHxHEIGHT and scale SCALE with the animation
 # time frozen; the first WARM frames are dropped. Per round, the median of the
 # scale pass's timer per configuration and its ratio to point's median of the
@@ -39,7 +41,9 @@ mkdir -p "$out/reports"
 # | another build (baselines only)
 configs=("point|--filter point|" "taau-pixel|--filter taau --upscale-shader pixel|"
          "taau-compute|--filter taau --upscale-shader compute|"
-         "taau-direct|--filter taau --upscale-shader compute|UpscaleTemporal_TemporalUpsampleDirectCS.spv")
+         "taau-direct|--filter taau --upscale-shader compute|UpscaleTemporal_TemporalUpsampleDirectCS.spv"
+         "taau-fast-pixel|--filter taau-fast --upscale-shader pixel|"
+         "taau-fast-compute|--filter taau-fast --upscale-shader compute|")
 if ((decompose)); then
   configs+=("no-neighbourhood|--filter taau --upscale-shader compute|TemporalNoNeighbourhoodCS.hlsl"
             "no-history|--filter taau --upscale-shader compute|TemporalNoHistoryCS.hlsl"

@@ -56,6 +56,7 @@ modes=(
   "upscale-q5|--upscale-quality 5"
   "taau|--temporal-upsampling"
   "edge-adaptive|--filter upscale-edge-adaptive"
+  "taau-fast|--filter taau-fast"
   "none-nomb|--filter none --no-motion-blur"
   "bicubic-nomb|--filter bicubic --no-motion-blur"
   "taa-nomb|--filter taa --no-motion-blur"

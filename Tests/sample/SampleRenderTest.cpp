@@ -574,7 +574,7 @@ TEST_F(SampleFixture, ReloadShadersCompilesSourcesAndKeepsOldShadersOnError) {
 
   // Real sources: compiled, same SPIR-V as the build, so the same image.
   ASSERT_TRUE(sample.ReloadShaders()) << sample.LastMessage();
-  EXPECT_NE(sample.LastMessage().find("43 post-processing shaders and the GUI's compiled from"), std::string::npos)
+  EXPECT_NE(sample.LastMessage().find("46 post-processing shaders and the GUI's compiled from"), std::string::npos)
       << sample.LastMessage();
   RenderFrames(sample, 1);
   Diff d = Compare(before, sample.CapturedBackBufferNoGui());

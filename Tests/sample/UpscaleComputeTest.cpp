@@ -46,12 +46,14 @@ const ComputeCase kCases[] = {
     {"GaussianUnsharp", Filter::UpscaleGaussianUnsharp, 100, 2},
     {"EdgeAdaptiveAndSharpen", Filter::UpscaleEdgeAdaptive, 100, 2},
     {"TemporalUpsample", Filter::TAAU, 100, 8},
+    {"TemporalUpsampleFast", Filter::TAAUFast, 100, 8},
     {"CatmullRomThenSecondary", Filter::UpscaleCatmullRom, 83.33, 2},
     {"EdgeAdaptiveThenSecondary", Filter::UpscaleEdgeAdaptive, 75, 2},
     {"TemporalUpsampleThenSecondary", Filter::TAAU, 83.33, 8},
     // A 25 % secondary target under a 0.71 viewport: 2.84 viewport texels per
     // output pixel, more than the tiles have room for: the direct versions run.
     {"TemporalUpsampleDirect", Filter::TAAU, 25, 8},
+    {"TemporalUpsampleFastDirect", Filter::TAAUFast, 25, 8},
     {"Lanczos3Direct", Filter::UpscaleLanczos3, 25, 2},
     {"EdgeAdaptiveDirect", Filter::UpscaleEdgeAdaptive, 25, 2},
     // The back buffer in BGRA order: the shader swaps red and blue for the
