@@ -11,7 +11,8 @@
 #   a. frame.csv, frame.md: the full frame at 1920x1080 and 3840x2160 on both
 #      Arenas (native, point, TAA, TAAU with pixel and, where the sample has
 #      --upscale-shader, compute passes; scales 0.5 and 0.71; at 0.71 also the
-#      compute TAAU without its group-shared tile), in interleaved
+#      compute TAAU without its group-shared tile and the compute taau-fast,
+#      TAAU's faster permutation), in interleaved
 #      rounds, each run's first WARMUP_MS of real time dropped; per-pass
 #      GPU medians (frame, scene, post, upscale pass); frame / native and
 #      TAAU's pass / point's (Docs/Upscaling.md: the goals 0.60 and 2.5);
@@ -116,6 +117,9 @@ frame_configs() {
       echo "taau-compute-$s --filter taau --scale $s --upscale-shader compute"
       [ "$s" = 0.71 ] && [ -n "$direct_shaders" ] &&
         echo "taau-direct-$s --filter taau --scale $s --upscale-shader compute --shader-dir $direct_shaders"
+      # TAAU's faster permutation, where the bundle's sample has it.
+      [ "$s" = 0.71 ] && [ -f "$bundle/shaders/UpscaleTemporal_TemporalUpsampleFastCS.spv" ] &&
+        echo "taau-fast-compute-$s --filter taau-fast --scale $s --upscale-shader compute"
     else
       echo "taau-pixel-$s --filter taau --scale $s"
     fi
