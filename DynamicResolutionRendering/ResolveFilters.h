@@ -98,8 +98,9 @@ enum class Filter : int {
   UpscaleGaussianUnsharp,
   TAAU,  // temporal upsample: output-resolution history (passes/TemporalUpsamplePass.cpp)
   UpscaleEdgeAdaptive,  // port design: edge-adaptive upscale + contrast-limited sharpening (two passes)
-  // TAAU's faster permutation (the document's r.PostProcessAAQuality 3): a
-  // cross neighbourhood and a bilinear history (Docs/Upscaling.md).
+  // TAAU's faster permutation (the document names faster TAAU shaders for
+  // r.PostProcessAAQuality 3 and 4): a cross neighbourhood and a bilinear
+  // history (Docs/Upscaling.md).
   TAAUFast,
   // A row after these needs no name here: the table decides the count.
   Count = int(std::size(kFilters))

@@ -6,8 +6,9 @@
 //   float3 NeighbourColour(int2 t);    this frame's colour (t0)
 //   float  NeighbourDepth(int2 t);     the dynamic depth (t6)
 //   float2 NeighbourVelocity(int2 t);  the velocity (t2, viewport fractions, y down)
-// TEMPORAL_FAST=1 compiles the faster permutation (--filter taau-fast, the
-// document's r.PostProcessAAQuality 3): the neighbourhood is the five texels
+// TEMPORAL_FAST=1 compiles the faster permutation (--filter taau-fast; the
+// document names faster TAAU shaders for r.PostProcessAAQuality 3 and 4, the
+// port has this one, of its own design): the neighbourhood is the five texels
 // of a cross instead of the 3x3, and the history one bilinear tap instead of
 // the 5-tap Catmull-Rom and its separate weight tap.
 #ifndef UPSCALE_TEMPORAL_MATH_HLSLI
