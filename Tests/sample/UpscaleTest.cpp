@@ -266,9 +266,8 @@ TEST_P(UpscaleTaauCut, CameraCutEqualsAResetFrame) {
 INSTANTIATE_TEST_SUITE_P(Shaders, UpscaleTaauCut, kTemporalCases, TemporalCaseName);
 
 // --filter taau-fast runs its own pass and shader in both implementations:
-// its frames differ from the full permutation's once the history is used
-// (the cross and the bilinear history), and not from the first (reset) frame
-// alone.
+// after six frames its image differs from the full permutation's (the cross
+// neighbourhood and the bilinear history).
 class UpscaleTaauFast : public ::testing::TestWithParam<UpscaleShader> {};
 TEST_P(UpscaleTaauFast, RunsItsOwnPermutation) {
   Image images[2];
