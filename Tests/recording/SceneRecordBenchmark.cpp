@@ -6,8 +6,11 @@
 // ExecuteCommandList calls; not timed: Flush and the wait for the GPU.
 //
 //   drr_scene_record_bench [--scene PATH] [--threads N] [--pairs K] [--frames F]
-//                          [--size WxH] [--no-take-over] [google benchmark flags]
+//                          [--size WxH] [--no-take-over] [--idle-ms MS] [google benchmark flags]
 // --no-take-over: every chunk on its worker, however late the worker starts.
+// --idle-ms: after each frame's (untimed) wait for the GPU, sleep MS more
+//   milliseconds (0 to 100, default 0), so that every timed Render begins
+//   after both CPUs had nothing to do, as a frame held back by VSync does.
 //   drr_scene_record_bench --smoke [--scene PATH]   1, 2 and 3 threads give the same
 //                                                  image, validation-clean
 //   drr_scene_record_bench --contention [--scene PATH] [--threads N] [--pairs K] [--frames F]
@@ -17,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -119,12 +123,14 @@ class SceneFrame {
     return std::chrono::duration<double, std::milli>(stop - start).count();
   }
   // Not timed: submit and wait, so that the GPU (a CPU rasteriser here) does
-  // not run beside the next recording.
+  // not run beside the next recording; then the idle pause, if any.
   void Finish() {
     context_->OMSetRenderTargets(0, nullptr, nullptr);
     context_->Flush();
     device_->WaitIdle();
+    if (idleMs_ > 0) std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(idleMs_));
   }
+  void SetIdleMs(double ms) { idleMs_ = ms; }
   std::vector<uint8_t> ReadColour() {
     context_->OMSetRenderTargets(0, nullptr, nullptr);
     context_->CopyResource(colour_.staging.Get(), colour_.texture.Get());
@@ -159,6 +165,7 @@ class SceneFrame {
   std::unique_ptr<drr::Scene> scene_;
   drr::SceneRenderParams params_;
   uint32_t w_ = 0, h_ = 0;
+  double idleMs_ = 0;
 };
 
 std::unique_ptr<SceneFrame> g_frame;  // reset before main returns (drivers unload first)
@@ -364,6 +371,7 @@ int Contention(int threads, int pairs, int frames) {
 int main(int argc, char** argv) {
   std::string scene = DRR_ARENA_LARGE_DIR "/scene_description.txt";
   int threads = 2, pairs = 10, frames = 30;
+  double idleMs = 0;
   uint32_t w = 320, h = 180;
   bool smoke = false, takeOver = true, contention = false;
   std::vector<char*> args{argv[0]};
@@ -376,13 +384,15 @@ int main(int argc, char** argv) {
     else if (std::strcmp(argv[i], "--threads") == 0) threads = std::atoi(value());
     else if (std::strcmp(argv[i], "--pairs") == 0) pairs = std::atoi(value());
     else if (std::strcmp(argv[i], "--frames") == 0) frames = std::atoi(value());
+    else if (std::strcmp(argv[i], "--idle-ms") == 0) idleMs = std::strtod(value(), nullptr);
     else if (std::strcmp(argv[i], "--size") == 0) {
       if (std::sscanf(value(), "%ux%u", &w, &h) != 2) w = 0;
     } else args.push_back(argv[i]);
   }
   if ((threads < 2 && threads != 0) || threads > 8 || pairs < 1 || pairs > 1000 || frames < 1 || frames > 100000 || w < 1 ||
-      h < 1 || w > 4096 || h > 4096) {
-    std::fprintf(stderr, "--threads expects [2, 8] or 0 (automatic), --pairs [1, 1000], --frames [1, 100000], --size WxH up to 4096\n");
+      h < 1 || w > 4096 || h > 4096 || !(idleMs >= 0 && idleMs <= 100)) {
+    std::fprintf(stderr, "--threads expects [2, 8] or 0 (automatic), --pairs [1, 1000], --frames [1, 100000], --size WxH "
+                         "up to 4096, --idle-ms [0, 100]\n");
     return 2;
   }
   g_frame = std::make_unique<SceneFrame>();
@@ -392,6 +402,7 @@ int main(int argc, char** argv) {
     return 1;
   }
   g_frame->SetWorkersAlways(!takeOver);
+  g_frame->SetIdleMs(idleMs);
   int rc = 0;
   if (smoke) {
     rc = Smoke();
