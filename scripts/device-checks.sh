@@ -20,8 +20,9 @@
 #      board power (nvidia-smi power.draw every 100 ms) sampled through each;
 #      the frame interval of each (a paced run holds 16.7 ms);
 #   c. threads.txt: scene recording on 2 and 4 threads against 1 on the
-#      default and the many-object Arena, and the automatic mode on the
-#      default Arena (drr_scene_record_bench; Docs/Threads.md), with the
+#      default and the many-object Arena, 2 threads also with a 2 ms idle
+#      pause before each frame (as behind VSync), and the automatic mode on
+#      the default Arena (drr_scene_record_bench; Docs/Threads.md), with the
 #      frames split by whether the workers started before the draw list;
 #   d. psnr.csv: the frames of Docs/results/lavapipe-frames rendered here,
 #      PSNR against the stored lavapipe render;
@@ -187,19 +188,20 @@ step_power() {
 }
 
 # --- c. recording threads -----------------------------------------------------
+# Each run: ARENA:THREADS:IDLE_MS (0 threads = automatic; an idle pause before
+# each timed frame, as behind VSync: Docs/Threads.md, "2026-12-07").
 step_threads() {
   begin threads
-  local arena t
-  for arena in props default; do
-    for t in 2 4 $([ $arena = default ] && echo 0); do
-      (($(left) >= 3)) || break 2
-      # shellcheck disable=SC2086
-      DRR_BIN=drr_scene_record_bench bounded --max $per_record_run "$bundle/run.sh" --scene "$(arena_path $arena)" \
-        --threads "$t" $record_runs --size "$record_size" >"$out/threads-run.log" 2>&1
-      echo "$arena Arena, threads $t (0 = automatic), exit $?:" \
-        "$(grep -E '^ratio|thread\(s\): (chunk|every worker running)' "$out/threads-run.log" | tr '\n' ' ')" \
-        >>"$out/threads.txt"
-    done
+  local run arena t idle
+  for run in props:2:0 props:2:2 props:4:0 default:2:0 default:4:0 default:0:0; do
+    IFS=: read -r arena t idle <<<"$run"
+    (($(left) >= 3)) || break
+    # shellcheck disable=SC2086
+    DRR_BIN=drr_scene_record_bench bounded --max $per_record_run "$bundle/run.sh" --scene "$(arena_path $arena)" \
+      --threads "$t" --idle-ms "$idle" $record_runs --size "$record_size" >"$out/threads-run.log" 2>&1
+    echo "$arena Arena, threads $t (0 = automatic), idle pause $idle ms, exit $?:" \
+      "$(grep -E '^ratio|thread\(s\): (chunk|every worker running)' "$out/threads-run.log" | tr '\n' ' ')" \
+      >>"$out/threads.txt"
   done
   finish
 }
