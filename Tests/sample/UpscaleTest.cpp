@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <string>
 #include <tuple>
 
@@ -174,6 +175,26 @@ INSTANTIATE_TEST_SUITE_P(Qualities, UpscaleSpatial, ::testing::Range(0, kUpscale
 
 ImageF ToF(const Image& img) { return ImageFromRGBA8(img.pixels.data(), img.width, img.height, img.width * 4); }
 
+// A sample of its own for one run: N frames, then its back buffer and the
+// passes it ran; no validation message. A failed Init fails the test and
+// returns an empty image.
+struct FreshRun {
+  Image image;
+  std::map<std::string, uint64_t> passes;
+};
+FreshRun RenderFresh(const Options& o, int frames) {
+  Sample s;
+  std::string err;
+  if (s.Init(o, &err) != 0) {
+    ADD_FAILURE() << "Sample::Init: " << err;
+    return {};
+  }
+  FreshRun run{RenderAndCapture(s, frames), s.PassesRun()};
+  EXPECT_EQ(s.ValidationMessages(), 0u);
+  s.Shutdown();
+  return run;
+}
+
 // The 4x4 super-sampled reference (full-resolution path, no AA, no motion
 // blur), box-filtered down: as the bench's.
 ImageF Reference(int camera) {
@@ -182,23 +203,11 @@ ImageF Reference(int camera) {
   o.height = kH * 4;
   o.dynamicResolution = false;
   o.camera = camera;
-  Sample s;
-  std::string err;
-  EXPECT_EQ(s.Init(o, &err), 0) << err;
-  const Image img = RenderAndCapture(s, 2);
-  EXPECT_EQ(s.ValidationMessages(), 0u);
-  s.Shutdown();
-  return Downsample(ToF(img), 4);
+  return Downsample(ToF(RenderFresh(o, 2).image), 4);
 }
 
 double Psnr(const Options& o, int frames, const ImageF& ref) {
-  Sample s;
-  std::string err;
-  EXPECT_EQ(s.Init(o, &err), 0) << err;
-  const Image img = RenderAndCapture(s, frames);
-  EXPECT_EQ(s.ValidationMessages(), 0u);
-  s.Shutdown();
-  return CompareImages(ToF(img), ref).psnr;
+  return CompareImages(ToF(RenderFresh(o, frames).image), ref).psnr;
 }
 
 // TAAU's two permutations (--filter taau and taau-fast), each with both
@@ -276,13 +285,10 @@ TEST_P(UpscaleTaauFast, RunsItsOwnPermutation) {
     Options o = Base(filters[i], 0.71f);
     o.upscaleShader = GetParam();
     o.camera = 1;
-    Sample s;
-    std::string err;
-    ASSERT_EQ(s.Init(o, &err), 0) << err;
-    images[i] = testkit::RenderAndCapture(s, 6);
-    EXPECT_EQ(s.ValidationMessages(), 0u);
-    EXPECT_EQ(s.PassesRun().count(GetFilterInfo(filters[i]).pass), 1u) << FilterOption(filters[i]);
-    s.Shutdown();
+    FreshRun run = RenderFresh(o, 6);
+    ASSERT_FALSE(run.image.pixels.empty()) << FilterOption(filters[i]);
+    images[i] = std::move(run.image);
+    EXPECT_EQ(run.passes.count(GetFilterInfo(filters[i]).pass), 1u) << FilterOption(filters[i]);
   }
   const testkit::Diff d = testkit::Compare(images[0], images[1]);
   std::printf("[taau-fast] %s, 6 frames at 0.71: %zu pixels differ from taau, at most %d steps\n",
