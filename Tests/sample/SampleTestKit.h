@@ -1,5 +1,6 @@
 // Small helpers shared by the whole-sample render tests: render n frames and
-// capture the last, and compare two captured back buffers pixel by pixel.
+// capture the last (on a given sample, or on one of its own), and compare two
+// captured back buffers pixel by pixel.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <map>
 #include <string>
 
 #include "DynamicResolutionRendering.h"
@@ -34,6 +36,26 @@ inline Image RenderAndCapture(Sample& s, int n) {
     EXPECT_TRUE(s.RenderFrame());
   }
   return s.CapturedBackBuffer();
+}
+
+// A sample of its own for one run: n frames, then its back buffer and the
+// passes it ran; no validation message. A failed Init fails the test and
+// returns an empty image.
+struct FreshRun {
+  Image image;
+  std::map<std::string, uint64_t> passes;
+};
+inline FreshRun RenderFresh(const Options& o, int n) {
+  Sample s;
+  std::string err;
+  if (s.Init(o, &err) != 0) {
+    ADD_FAILURE() << "Sample::Init: " << err;
+    return {};
+  }
+  FreshRun run{RenderAndCapture(s, n), s.PassesRun()};
+  EXPECT_EQ(s.ValidationMessages(), 0u) << "validation messages were reported";
+  s.Shutdown();
+  return run;
 }
 
 // Largest RGB difference, pixels that differ and the mean of the per-pixel

@@ -13,7 +13,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
-#include <map>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -24,7 +23,8 @@
 namespace drr {
 namespace {
 
-using testkit::RenderAndCapture;
+using testkit::FreshRun;
+using testkit::RenderFresh;
 
 constexpr uint32_t kW = 256, kH = 144;
 constexpr uint32_t kBorder = 2;  // the edge pixels' clamped taps are compared too, but not asserted
@@ -74,27 +74,12 @@ Options CaseOptions(const ComputeCase& c, UpscaleShader shader) {
   return o;
 }
 
-struct Rendered {
-  Image image;
-  std::map<std::string, uint64_t> passes;
-};
-
-Rendered Render(const Options& o, int frames) {
-  Sample s;
-  std::string err;
-  EXPECT_EQ(s.Init(o, &err), 0) << err;
-  Rendered r{RenderAndCapture(s, frames), s.PassesRun()};
-  EXPECT_EQ(s.ValidationMessages(), 0u) << "validation messages were reported";
-  s.Shutdown();
-  return r;
-}
-
 class UpscaleCompute : public ::testing::TestWithParam<ComputeCase> {};
 
 TEST_P(UpscaleCompute, EqualsThePixelShaderWithinOneStep) {
   const ComputeCase& c = GetParam();
-  const Rendered pixel = Render(CaseOptions(c, UpscaleShader::Pixel), c.frames);
-  const Rendered compute = Render(CaseOptions(c, UpscaleShader::Compute), c.frames);
+  const FreshRun pixel = RenderFresh(CaseOptions(c, UpscaleShader::Pixel), c.frames);
+  const FreshRun compute = RenderFresh(CaseOptions(c, UpscaleShader::Compute), c.frames);
   const testkit::Diff d = testkit::Compare(compute.image, pixel.image, kBorder);
   std::printf("[compute] %s: max %d, %llu interior pixels differ\n", c.name, d.maxAbs,
               static_cast<unsigned long long>(d.differing));
@@ -109,8 +94,8 @@ INSTANTIATE_TEST_SUITE_P(Upscalers, UpscaleCompute, ::testing::ValuesIn(kCases),
 TEST(UpscaleComputeOption, OriginalFiltersIgnoreIt) {
   for (Filter f : {Filter::Point, Filter::TAA}) {
     const ComputeCase c{"original", f, 100, 4};
-    const Image pixel = Render(CaseOptions(c, UpscaleShader::Pixel), c.frames).image;
-    const Image compute = Render(CaseOptions(c, UpscaleShader::Compute), c.frames).image;
+    const Image pixel = RenderFresh(CaseOptions(c, UpscaleShader::Pixel), c.frames).image;
+    const Image compute = RenderFresh(CaseOptions(c, UpscaleShader::Compute), c.frames).image;
     EXPECT_EQ(testkit::Compare(compute, pixel).maxAbs, 0) << GetFilterInfo(f).option;
   }
 }
@@ -132,7 +117,8 @@ EditedShaders RenderWithEditedShaders(const char* folder, const std::function<vo
   const ComputeCase c{folder, Filter::TAAU, secondaryPercent, 4};
   Options compute = CaseOptions(c, UpscaleShader::Compute);
   compute.shaderDir = to.string();
-  EditedShaders r{Render(CaseOptions(c, UpscaleShader::Pixel), c.frames).image, Render(compute, c.frames).image};
+  EditedShaders r{RenderFresh(CaseOptions(c, UpscaleShader::Pixel), c.frames).image,
+                  RenderFresh(compute, c.frames).image};
   fs::remove_all(to);
   return r;
 }

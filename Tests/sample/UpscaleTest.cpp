@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <map>
 #include <string>
 #include <tuple>
 
@@ -18,7 +17,9 @@
 namespace drr {
 namespace {
 
+using testkit::FreshRun;
 using testkit::RenderAndCapture;
+using testkit::RenderFresh;
 using testkit::SampleTest;
 
 constexpr uint32_t kW = 256, kH = 144;
@@ -174,26 +175,6 @@ TEST_P(UpscaleSpatial, MatchesItsCpuKernelAtHalfScale) {
 INSTANTIATE_TEST_SUITE_P(Qualities, UpscaleSpatial, ::testing::Range(0, kUpscaleQualities));
 
 ImageF ToF(const Image& img) { return ImageFromRGBA8(img.pixels.data(), img.width, img.height, img.width * 4); }
-
-// A sample of its own for one run: N frames, then its back buffer and the
-// passes it ran; no validation message. A failed Init fails the test and
-// returns an empty image.
-struct FreshRun {
-  Image image;
-  std::map<std::string, uint64_t> passes;
-};
-FreshRun RenderFresh(const Options& o, int frames) {
-  Sample s;
-  std::string err;
-  if (s.Init(o, &err) != 0) {
-    ADD_FAILURE() << "Sample::Init: " << err;
-    return {};
-  }
-  FreshRun run{RenderAndCapture(s, frames), s.PassesRun()};
-  EXPECT_EQ(s.ValidationMessages(), 0u);
-  s.Shutdown();
-  return run;
-}
 
 // The 4x4 super-sampled reference (full-resolution path, no AA, no motion
 // blur), box-filtered down: as the bench's.
