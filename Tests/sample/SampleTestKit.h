@@ -39,8 +39,8 @@ inline Image RenderAndCapture(Sample& s, int n) {
 }
 
 // A sample of its own for one run: n frames, then its back buffer and the
-// passes it ran; no validation message. A failed Init fails the test and
-// returns an empty image.
+// passes it ran; validation in force where it was asked for, and no message.
+// A failed Init fails the test and returns an empty image.
 struct FreshRun {
   Image image;
   std::map<std::string, uint64_t> passes;
@@ -52,6 +52,8 @@ inline FreshRun RenderFresh(const Options& o, int n) {
     ADD_FAILURE() << "Sample::Init: " << err;
     return {};
   }
+  EXPECT_FALSE(s.ValidationLayerMissing())
+      << "D3DL_VALIDATION asks for validation, but VK_LAYER_KHRONOS_validation is not installed";
   FreshRun run{RenderAndCapture(s, n), s.PassesRun()};
   EXPECT_EQ(s.ValidationMessages(), 0u) << "validation messages were reported";
   s.Shutdown();
