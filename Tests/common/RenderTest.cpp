@@ -1,5 +1,7 @@
 #include "RenderTest.h"
 
+#include "ValidationInForce.h"
+
 #include "d3dl/ShaderCompiler.h"
 
 #include <cmath>
@@ -31,8 +33,7 @@ void RenderTest::SetUp() {
   // without anything checked.
   DEVICE_STATS stats;
   device_->GetStats(&stats);
-  ASSERT_EQ(stats.Validation, stats.ValidationRequested)
-      << "D3DL_VALIDATION asks for validation, but VK_LAYER_KHRONOS_validation is not installed";
+  ASSERT_EQ(stats.Validation, stats.ValidationRequested) << kValidationLayerMissing;
 }
 
 void RenderTest::TearDown() {

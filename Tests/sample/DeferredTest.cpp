@@ -17,7 +17,7 @@
 namespace drr {
 namespace {
 
-using testkit::RenderAndCapture;
+using testkit::RenderFresh;
 using testkit::SampleTest;
 
 constexpr uint32_t kW = 256, kH = 144;
@@ -59,13 +59,7 @@ Change Compare(const Image& a, const Image& b) {
 
 class DeferredTest : public SampleTest {
  protected:
-  Image Render(const Options& o) {
-    StartSample(o);
-    Image img = RenderAndCapture(sample, kFrames);
-    EXPECT_EQ(sample.ValidationMessages(), 0u);
-    sample.Shutdown();
-    return img;
-  }
+  static Image Render(const Options& o) { return RenderFresh(o, kFrames).image; }
   // The Arena's description with light lines appended (the model paths made absolute).
   static std::string LitScene(const std::string& lights) {
     const std::filesystem::path& dir = drrtest::ProcessScratchDir();

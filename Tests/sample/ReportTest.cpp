@@ -37,10 +37,9 @@ Json RunWithReport(Options o, const std::string& name) {
   o.report = std::filesystem::absolute(OutDir()).string() + "/" + name + ".json";
   std::filesystem::remove(o.report);
   Sample s;
-  std::string err;
-  EXPECT_EQ(s.Init(o, &err), 0) << err;
+  if (!testkit::Start(s, o)) return Json();
   EXPECT_EQ(s.Run(), 0);
-  s.Shutdown();
+  testkit::Finish(s);
   std::ifstream f(o.report);
   std::stringstream text;
   text << f.rdbuf();
@@ -133,8 +132,7 @@ TEST(SampleReport, JsonIsStrictAndConsistent) {
   o.report = std::filesystem::absolute(OutDir()).string() + "/report_test.json";
   std::filesystem::remove(o.report);
   Sample s;
-  std::string err;
-  ASSERT_EQ(s.Init(o, &err), 0) << err;
+  if (!testkit::Start(s, o)) return;
   ASSERT_EQ(s.Run(), 0);
   std::ifstream f(o.report);
   std::stringstream text;
@@ -174,7 +172,7 @@ TEST(SampleReport, JsonIsStrictAndConsistent) {
   EXPECT_EQ(j["final_scale"].size(), 2u);
   std::printf("[report] %zu bytes of JSON, %d GPU results, gpu frame avg %.2f ms, RT bytes %.0f\n",
               text.str().size(), gpuResults, j["averages_ms"]["gpu_frame"].get<double>(), targetBytes);
-  s.Shutdown();
+  testkit::Finish(s);
 }
 
 // The panel fits the two window sizes a user starts with: its last section's

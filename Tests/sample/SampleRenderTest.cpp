@@ -52,14 +52,6 @@ Options TinyOptions(uint32_t w = 160, uint32_t h = 90) {
 
 float SrgbToLinear(uint8_t v) { return drr::SrgbToLinear(v / 255.0f); }
 
-// Renders n frames, capturing the last.
-void RenderFrames(Sample& s, int n) {
-  for (int i = 0; i < n; ++i) {
-    if (i == n - 1) s.RequestCapture();
-    ASSERT_TRUE(s.RenderFrame());
-  }
-}
-
 using SampleFixture = SampleTest;
 
 }  // namespace
@@ -76,8 +68,8 @@ TEST_P(SampleMatrix, AllScalesMotionBlurSymmetric) {
   base.fixedDt = 1.0 / 30.0;  // the scene moves: velocities are non-zero
   base.camera = 1;            // cinematic camera
   Sample s;
+  if (!Start(s, base)) return;
   std::string err;
-  ASSERT_EQ(s.Init(base, &err), 0) << err;
   const std::string dir = OutDir() + "/matrix";
   std::filesystem::create_directories(dir);
   int runs = 0;
@@ -90,8 +82,7 @@ TEST_P(SampleMatrix, AllScalesMotionBlurSymmetric) {
         o.motionBlur = mb;
         o.symmetricTAA = sym;
         s.ApplySettings(o);
-        RenderFrames(s, 3);
-        const Image& img = s.CapturedBackBuffer();
+        const Image img = RenderAndCapture(s, 3);
         ASSERT_EQ(img.width, 160u);
         ASSERT_EQ(img.height, 90u);
         // Not blank: the scene is visible.
@@ -125,10 +116,9 @@ TEST_P(SampleMatrix, AllScalesMotionBlurSymmetric) {
     }
   }
   EXPECT_EQ(runs, 24);
-  EXPECT_EQ(s.ValidationMessages(), 0u);
   std::printf("[matrix] filter %s: %d runs, %llu validation messages\n", FilterOption(filter), runs,
               (unsigned long long)s.ValidationMessages());
-  s.Shutdown();
+  Finish(s);
 }
 
 INSTANTIATE_TEST_SUITE_P(Filters, SampleMatrix, ::testing::Range(0, static_cast<int>(Filter::Count)),
@@ -151,12 +141,10 @@ TEST_F(SampleFixture, PointAtScale1EqualsDynamicResolutionOff) {
     o.motionBlur = mb;
     o.dynamicResolution = true;
     if (!mb) StartSample(o); else sample.ApplySettings(o);
-    RenderFrames(sample, 3);
-    const Image dyn = sample.CapturedBackBuffer();
+    const Image dyn = RenderAndCapture(sample, 3);
     o.dynamicResolution = false;
     sample.ApplySettings(o);
-    RenderFrames(sample, 3);
-    const Image full = sample.CapturedBackBuffer();
+    const Image full = RenderAndCapture(sample, 3);
     const Diff d = Compare(dyn, full);
     std::printf("[image] point@1.0 vs no dynamic resolution (motion blur %d): max diff %d, %llu px differ\n",
                 int(mb), d.maxAbs, (unsigned long long)d.differing);
@@ -182,7 +170,7 @@ TEST_F(SampleFixture, PointAtHalfEqualsNearestNeighbourUpscale) {
   o.motionBlur = false;  // the scene draws straight into the final target
   o.scaleX = o.scaleY = 0.5f;
   StartSample(o);
-  RenderFrames(sample, 3);
+  RenderAndCapture(sample, 3);
   // The final target holds linear values (the original's UNORM); the back buffer encodes them to sRGB.
   const Image rt = EncodeSrgb(sample.CapturedSceneColor());
   const Image& bb = sample.CapturedBackBuffer();
@@ -233,12 +221,12 @@ TEST_F(SampleFixture, WithFixesNothingReadsOutsideTheViewport) {
       o.filter = f;
       o.scaleX = o.scaleY = scale;
       sample.ApplySettings(o);
-      RenderFrames(sample, 4);
+      RenderAndCapture(sample, 4);
       const uint64_t marker = CountMarkerPixels(sample.CapturedBackBuffer());
       // The scene's own colours may contain magenta-ish pixels: compare with the run without markers.
       o.debugMarkerOutside = false;
       sample.ApplySettings(o);
-      RenderFrames(sample, 4);
+      RenderAndCapture(sample, 4);
       const uint64_t refMarker = CountMarkerPixels(sample.CapturedBackBuffer());
       o.debugMarkerOutside = true;
       EXPECT_LE(marker, refMarker) << FilterOption(f) << " at " << scale;
@@ -304,31 +292,24 @@ TEST(SampleImage, TAAConvergesAndReducesEdgeError) {
     Options o = TinyOptions(w * f, h * f);
     o.dynamicResolution = false;
     o.motionBlur = false;
-    Sample s;
-    std::string err;
-    ASSERT_EQ(s.Init(o, &err), 0) << err;
-    RenderFrames(s, 2);
-    reference = DownsampleLinear(s.CapturedBackBuffer(), int(f));
-    EXPECT_EQ(s.ValidationMessages(), 0u);
-    s.Shutdown();
+    const Image big = RenderFresh(o, 2).image;
+    ASSERT_FALSE(big.pixels.empty());
+    reference = DownsampleLinear(big, int(f));
   }
   Options o = TinyOptions(w, h);
   o.motionBlur = false;
   o.filter = Filter::Point;
   Sample s;
-  std::string err;
-  ASSERT_EQ(s.Init(o, &err), 0) << err;
-  RenderFrames(s, 3);
+  if (!Start(s, o)) return;
+  RenderAndCapture(s, 3);
   size_t edges = 0;
   const double pointErr = EdgeError(ToLinear(s.CapturedBackBuffer()), reference, w, h, &edges);
   for (bool sym : {true, false}) {
     o.filter = Filter::TAA;
     o.symmetricTAA = sym;
     s.ApplySettings(o);
-    RenderFrames(s, 8);
-    const Image a = s.CapturedBackBuffer();
-    RenderFrames(s, 2);
-    const Image b = s.CapturedBackBuffer();
+    const Image a = RenderAndCapture(s, 8);
+    const Image b = RenderAndCapture(s, 2);
     const Diff conv = Compare(a, b);
     const double taaErr = EdgeError(ToLinear(b), reference, w, h, &edges);
     std::printf("[image] TAA (%s jitter) @1.0: edge error %.4f vs point %.4f (%zu edge px); "
@@ -349,8 +330,7 @@ TEST(SampleImage, TAAConvergesAndReducesEdgeError) {
       EXPECT_NEAR(taaErr, pointErr, pointErr * 0.05) << "asymmetric TAA at 1.0 should match point";
     }
   }
-  EXPECT_EQ(s.ValidationMessages(), 0u);
-  s.Shutdown();
+  Finish(s);
 }
 
 TEST_F(SampleFixture, GuiPixelsIndependentOfScale) {
@@ -360,13 +340,11 @@ TEST_F(SampleFixture, GuiPixelsIndependentOfScale) {
   o.filter = Filter::Bilinear;
   o.scaleX = o.scaleY = 0.3f;
   StartSample(o);
-  RenderFrames(sample, 3);
-  const Image low = sample.CapturedBackBuffer();
+  const Image low = RenderAndCapture(sample, 3);
   const auto rect = sample.GuiStaticRect();
   o.scaleX = o.scaleY = 1.0f;
   sample.ApplySettings(o);
-  RenderFrames(sample, 3);
-  const Image high = sample.CapturedBackBuffer();
+  const Image high = RenderAndCapture(sample, 3);
   ASSERT_GT(rect[2] - rect[0], 100.f);
   ASSERT_GT(rect[3] - rect[1], 100.f);
   uint64_t differing = 0, total = 0;
@@ -569,14 +547,14 @@ TEST_F(SampleFixture, ReloadShadersCompilesSourcesAndKeepsOldShadersOnError) {
   o.motionBlur = true;
   o.gui = true;  // the message goes to the GUI text; images are compared without the GUI
   StartSample(o);
-  RenderFrames(sample, 3);
+  RenderAndCapture(sample, 3);
   const Image before = sample.CapturedBackBufferNoGui();
 
   // Real sources: compiled, same SPIR-V as the build, so the same image.
   ASSERT_TRUE(sample.ReloadShaders()) << sample.LastMessage();
   EXPECT_NE(sample.LastMessage().find("46 post-processing shaders and the GUI's compiled from"), std::string::npos)
       << sample.LastMessage();
-  RenderFrames(sample, 1);
+  RenderAndCapture(sample, 1);
   Diff d = Compare(before, sample.CapturedBackBufferNoGui());
   std::printf("[reload] from %s: %s; next frame: %llu px differ\n", ShaderLibrary::DefaultSourceDir().c_str(),
               sample.LastMessage().c_str(), (unsigned long long)d.differing);
@@ -600,7 +578,7 @@ TEST_F(SampleFixture, ReloadShadersCompilesSourcesAndKeepsOldShadersOnError) {
   std::printf("[reload] broken copy: %s\n", msg.substr(0, msg.find('\n')).c_str());
   EXPECT_NE(msg.find("failed"), std::string::npos) << msg;
   EXPECT_NE(msg.find("PostProcessDynamic.hlsl"), std::string::npos) << msg;
-  RenderFrames(sample, 1);
+  RenderAndCapture(sample, 1);
   d = Compare(before, sample.CapturedBackBufferNoGui());
   EXPECT_EQ(d.differing, 0u) << "rendering changed after a failed reload";
   EXPECT_EQ(sample.LastMessage(), msg);  // still shown
@@ -611,7 +589,7 @@ TEST_F(SampleFixture, ReloadShadersCompilesSourcesAndKeepsOldShadersOnError) {
   SetShaderSourceDir(empty.c_str());
   EXPECT_TRUE(sample.ReloadShaders()) << sample.LastMessage();
   EXPECT_NE(sample.LastMessage().find("no HLSL sources"), std::string::npos) << sample.LastMessage();
-  RenderFrames(sample, 1);
+  RenderAndCapture(sample, 1);
   EXPECT_EQ(Compare(before, sample.CapturedBackBufferNoGui()).differing, 0u);
   SetShaderSourceDir(nullptr);
 }
@@ -639,12 +617,9 @@ TEST_F(SampleFixture, PausedTAAImageIsStable) {
     sample.ApplySettings(o);
     // First paused frame: its history (and velocity) still holds the moving frame.
     ASSERT_TRUE(sample.RenderFrame());
-    RenderFrames(sample, 1);
-    const Image a = sample.CapturedBackBuffer();
-    RenderFrames(sample, 1);
-    const Image b = sample.CapturedBackBuffer();
-    RenderFrames(sample, 1);
-    const Image c3 = sample.CapturedBackBuffer();
+    const Image a = RenderAndCapture(sample, 1);
+    const Image b = RenderAndCapture(sample, 1);
+    const Image c3 = RenderAndCapture(sample, 1);
     const Diff ab = Compare(a, b), bc = Compare(b, c3);
     std::printf("[pause] %s mb %d sym %d: consecutive paused frames differ in %llu / %llu px (max %d / %d)\n",
                 FilterOption(c.filter), int(c.mb), int(c.sym), (unsigned long long)ab.differing,
@@ -681,11 +656,11 @@ TEST_F(SampleFixture, ZoomBoxAsTheOriginal) {
   StartSample(o);
   const float cu = 0.3f, cv = 0.7f;  // off-centre: a flipped axis would show
   sample.SetZoomCentre(cu, cv);
-  RenderFrames(sample, 2);
+  RenderAndCapture(sample, 2);
   const Image plain = sample.CapturedBackBufferNoGui();
   o.zoom = true;
   sample.ApplySettings(o);
-  RenderFrames(sample, 2);
+  RenderAndCapture(sample, 2);
   const Image zoomed = sample.CapturedBackBufferNoGui();
   ASSERT_EQ(plain.width, 320u);
   ASSERT_EQ(zoomed.width, 320u);
@@ -756,18 +731,18 @@ TEST_F(SampleFixture, F10TogglesPanelF11TogglesText) {
       for (int x = int(r[0]); x < int(r[2]); ++x) differ += !SameRgb(Px(full, x, y), Px(bare, x, y));
     return differ > 1000;
   };
-  RenderFrames(sample, 2);
+  RenderAndCapture(sample, 2);
   EXPECT_TRUE(panelDrawn());
   EXPECT_GT(yellowTopLeft(sample.CapturedBackBuffer()), 50);
   sample.OnKey(GLFW_KEY_F10, GLFW_PRESS, 0);
-  RenderFrames(sample, 1);
+  RenderAndCapture(sample, 1);
   EXPECT_FALSE(panelDrawn());
   EXPECT_GT(yellowTopLeft(sample.CapturedBackBuffer()), 50) << "F10 leaves the text";
   sample.OnKey(GLFW_KEY_F11, GLFW_PRESS, 0);
-  RenderFrames(sample, 1);
+  RenderAndCapture(sample, 1);
   EXPECT_EQ(Compare(sample.CapturedBackBuffer(), sample.CapturedBackBufferNoGui()).differing, 0u);
   sample.OnKey(GLFW_KEY_F10, GLFW_PRESS, 0);
-  RenderFrames(sample, 1);
+  RenderAndCapture(sample, 1);
   EXPECT_TRUE(panelDrawn());
   EXPECT_EQ(yellowTopLeft(sample.CapturedBackBuffer()), 0) << "F11 hid the text";
 }

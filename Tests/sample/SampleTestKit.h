@@ -1,6 +1,7 @@
-// Small helpers shared by the whole-sample render tests: render n frames and
-// capture the last (on a given sample, or on one of its own), and compare two
-// captured back buffers pixel by pixel.
+// Small helpers shared by the whole-sample render tests: start a sample with
+// validation in force and end it with no validation message, render n frames
+// and capture the last (on a given sample, or on one of its own), and compare
+// two captured back buffers pixel by pixel.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 #include <string>
 
 #include "DynamicResolutionRendering.h"
+#include "ValidationInForce.h"
 
 namespace drr::testkit {
 
@@ -27,6 +29,30 @@ inline Options HeadlessOptions(uint32_t width, uint32_t height, double time) {
   o.control = ControlMode::Manual;
   o.time = time;
   return o;
+}
+
+// Starts a sample for a test: Init succeeds and, where D3DL_VALIDATION asks
+// for validation, the layer is in force. Otherwise the test fails here and
+// the result is false; a test ends then (`if (!Start(s, o)) return;`),
+// as an ASSERT would, rather than render on a sample that did not start.
+inline bool Start(Sample& s, const Options& o) {
+  std::string err;
+  if (s.Init(o, &err) != 0) {
+    ADD_FAILURE() << "Sample::Init: " << err;
+    return false;
+  }
+  if (s.ValidationLayerMissing()) {
+    ADD_FAILURE() << drrtest::kValidationLayerMissing;
+    return false;
+  }
+  return true;
+}
+
+// Ends a sample started by Start: no validation message came (the count
+// covers the whole run), then Shutdown.
+inline void Finish(Sample& s) {
+  EXPECT_EQ(s.ValidationMessages(), 0u) << "validation messages were reported";
+  s.Shutdown();
 }
 
 // Renders n frames and returns the back buffer of the last (with the GUI, if on).
@@ -47,16 +73,9 @@ struct FreshRun {
 };
 inline FreshRun RenderFresh(const Options& o, int n) {
   Sample s;
-  std::string err;
-  if (s.Init(o, &err) != 0) {
-    ADD_FAILURE() << "Sample::Init: " << err;
-    return {};
-  }
-  EXPECT_FALSE(s.ValidationLayerMissing())
-      << "D3DL_VALIDATION asks for validation, but VK_LAYER_KHRONOS_validation is not installed";
+  if (!Start(s, o)) return {};
   FreshRun run{RenderAndCapture(s, n), s.PassesRun()};
-  EXPECT_EQ(s.ValidationMessages(), 0u) << "validation messages were reported";
-  s.Shutdown();
+  Finish(s);
   return run;
 }
 
@@ -91,18 +110,8 @@ inline Diff Compare(const Image& a, const Image& b, uint32_t border = 0) {
 // validation message fails the test.
 class SampleTest : public ::testing::Test {
  protected:
-  void StartSample(const Options& o) {
-    std::string err;
-    ASSERT_EQ(sample.Init(o, &err), 0) << err;
-    // Without the layer a test asked to run under validation would pass
-    // without anything checked.
-    ASSERT_FALSE(sample.ValidationLayerMissing())
-        << "D3DL_VALIDATION asks for validation, but VK_LAYER_KHRONOS_validation is not installed";
-  }
-  void TearDown() override {
-    EXPECT_EQ(sample.ValidationMessages(), 0u) << "validation messages were reported";
-    sample.Shutdown();
-  }
+  void StartSample(const Options& o) { ASSERT_TRUE(Start(sample, o)); }
+  void TearDown() override { Finish(sample); }
   Sample sample;
 };
 

@@ -28,25 +28,13 @@ float MaxVelocity(const Image& v) {
   return m;
 }
 
-class SceneFrame : public ::testing::Test {
- protected:
-  void Start(Sample& s, const Options& o) {
-    std::string err;
-    ASSERT_EQ(s.Init(o, &err), 0) << err;
-  }
-  void Finish(Sample& s) {
-    EXPECT_EQ(s.ValidationMessages(), 0u) << "validation messages were reported";
-    s.Shutdown();
-  }
-};
-
 }  // namespace
 
 // The original's camera list: 0 First Person, 1.. the CAMERA entries in file
 // order; its default, 1, is the Arena's animated cinematic camera.
-TEST_F(SceneFrame, DefaultCameraIsTheMovingCinematicCamera) {
+TEST(SceneFrame, DefaultCameraIsTheMovingCinematicCamera) {
   Sample s;
-  Start(s, SmallOptions());
+  if (!Start(s, SmallOptions())) return;
   EXPECT_EQ(s.GetCameras().Current(), 1);
   EXPECT_EQ(s.GetCameras().Name(0), "First Person");
   EXPECT_EQ(s.GetCameras().Name(1), "camera_cinematic");
@@ -64,12 +52,12 @@ TEST_F(SceneFrame, DefaultCameraIsTheMovingCinematicCamera) {
 }
 
 // frustum-cull: fewer draws, the same pixels (culling is conservative).
-TEST_F(SceneFrame, FrustumCullFixDrawsLessAndChangesNoPixel) {
+TEST(SceneFrame, FrustumCullFixDrawsLessAndChangesNoPixel) {
   for (int camera : {1, 2}) {
     Options o = SmallOptions();
     o.camera = camera;
     Sample s;
-    Start(s, o);
+    if (!Start(s, o)) return;
     const Image original = RenderAndCapture(s, 2);
     const SceneStats before = s.GetScene()->Stats();
     o.fixes.Set(Fix::FrustumCull, true);
@@ -90,12 +78,12 @@ TEST_F(SceneFrame, FrustumCullFixDrawsLessAndChangesNoPixel) {
 
 // camera-eye: specular lighting moves with the viewing camera; from the
 // first-person camera (whose eye the original uses anyway) nothing changes.
-TEST_F(SceneFrame, CameraEyeFixChangesSpecularOfSceneCamerasOnly) {
+TEST(SceneFrame, CameraEyeFixChangesSpecularOfSceneCamerasOnly) {
   for (int camera : {0, 2}) {
     Options o = SmallOptions();
     o.camera = camera;
     Sample s;
-    Start(s, o);
+    if (!Start(s, o)) return;
     const Image original = RenderAndCapture(s, 2);
     o.fixes.Set(Fix::CameraEye, true);
     s.ApplySettings(o);
@@ -110,7 +98,7 @@ TEST_F(SceneFrame, CameraEyeFixChangesSpecularOfSceneCamerasOnly) {
 // camera-cut: the original's first frame after a camera change has the
 // velocity of the jump between the cameras; the fix starts from zero. The
 // frame after is the same either way.
-TEST_F(SceneFrame, CameraCutFixRestartsVelocityForOneFrame) {
+TEST(SceneFrame, CameraCutFixRestartsVelocityForOneFrame) {
   Image afterCut[2];
   for (bool fix : {false, true}) {
     Options o = SmallOptions();
@@ -119,7 +107,7 @@ TEST_F(SceneFrame, CameraCutFixRestartsVelocityForOneFrame) {
     o.filter = Filter::Bilinear;  // no TAA history: the frame after the cut depends on that frame only
     o.fixes.Set(Fix::CameraCut, fix);
     Sample s;
-    Start(s, o);
+    if (!Start(s, o)) return;
     RenderAndCapture(s, 3);
     o.camera = 3;
     s.ApplySettings(o);
@@ -140,7 +128,7 @@ TEST_F(SceneFrame, CameraCutFixRestartsVelocityForOneFrame) {
 // taa-flip: with dynamic resolution off the original still flips its targets
 // for TAA Basic, so a paused scene alternates between its last two frames; the
 // fix holds it. With dynamic resolution on the fix changes nothing.
-TEST_F(SceneFrame, TaaFlipFixStopsThePausedFlickerWithDynamicResolutionOff) {
+TEST(SceneFrame, TaaFlipFixStopsThePausedFlickerWithDynamicResolutionOff) {
   Image last[2][2];  // [dynamic][fix]
   for (bool dynamic : {false, true})
     for (bool fix : {false, true}) {
@@ -151,7 +139,7 @@ TEST_F(SceneFrame, TaaFlipFixStopsThePausedFlickerWithDynamicResolutionOff) {
       o.dynamicResolution = dynamic;
       o.fixes.Set(Fix::TaaFlip, fix);
       Sample s;
-      Start(s, o);
+      if (!Start(s, o)) return;
       RenderAndCapture(s, 4);
       o.pause = true;
       s.ApplySettings(o);
@@ -169,7 +157,7 @@ TEST_F(SceneFrame, TaaFlipFixStopsThePausedFlickerWithDynamicResolutionOff) {
 
 // srgb-targets: the colour targets become sRGB (same size), the image changes
 // only by 8-bit quantisation.
-TEST_F(SceneFrame, SrgbTargetsFixChangesOnlyTheColourFormat) {
+TEST(SceneFrame, SrgbTargetsFixChangesOnlyTheColourFormat) {
   Image frame[2];
   uint64_t bytes[2] = {};
   for (bool fix : {false, true}) {
@@ -177,7 +165,7 @@ TEST_F(SceneFrame, SrgbTargetsFixChangesOnlyTheColourFormat) {
     o.camera = 2;
     o.fixes.Set(Fix::SrgbTargets, fix);
     Sample s;
-    Start(s, o);
+    if (!Start(s, o)) return;
     frame[fix] = RenderAndCapture(s, 2);
     EXPECT_EQ(s.CapturedSceneColor().format,
               fix ? d3dl::DXGI_FORMAT_R8G8B8A8_UNORM_SRGB : d3dl::DXGI_FORMAT_R8G8B8A8_UNORM);
@@ -193,12 +181,12 @@ TEST_F(SceneFrame, SrgbTargetsFixChangesOnlyTheColourFormat) {
 
 // The original's pause: the matrices freeze with the frame before the pause,
 // so the velocity (and the motion blur) stays, and the image is still.
-TEST_F(SceneFrame, PauseFreezesTheFrameWithItsVelocity) {
+TEST(SceneFrame, PauseFreezesTheFrameWithItsVelocity) {
   Options o = SmallOptions();
   o.fixedDt = 1.0 / 15.0;
   o.motionBlur = true;
   Sample s;
-  Start(s, o);
+  if (!Start(s, o)) return;
   RenderAndCapture(s, 3);
   const float moving = MaxVelocity(s.CapturedVelocity());
   o.pause = true;

@@ -36,14 +36,12 @@ struct Frame {
 
 Frame RenderArena(const Options& o) {
   Sample s;
-  std::string err;
-  EXPECT_EQ(s.Init(o, &err), 0) << err;
+  if (!Start(s, o)) return {};
   Frame f;
   f.colour = RenderAndCapture(s, 3);
   f.velocity = s.CapturedVelocity();
   f.stats = s.GetScene()->Stats();
-  EXPECT_EQ(s.ValidationMessages(), 0u) << "validation messages were reported";
-  s.Shutdown();
+  Finish(s);
   return f;
 }
 
@@ -235,8 +233,7 @@ TEST(RecordingThreads, DefaultIsOneThreadAndTheCountChangesAtRunTime) {
   EXPECT_EQ(o.threads, 1);
   o.pause = true;
   Sample s;
-  std::string err;
-  ASSERT_EQ(s.Init(o, &err), 0) << err;
+  if (!Start(s, o)) return;
   const Image first = RenderAndCapture(s, 2);
   const SceneStats initial = s.GetScene()->Stats();
   EXPECT_EQ(initial.recordingThreads, 1u);
@@ -250,8 +247,7 @@ TEST(RecordingThreads, DefaultIsOneThreadAndTheCountChangesAtRunTime) {
     EXPECT_TRUE(SamePixels(first, again)) << threads << " threads";
     EXPECT_EQ(s.GetScene()->Stats().recordingThreads, threads == 0 ? automatic : uint32_t(threads));
   }
-  EXPECT_EQ(s.ValidationMessages(), 0u) << "validation messages were reported";
-  s.Shutdown();
+  Finish(s);
 }
 
 // The default (1 thread, the immediate context) and --threads 4 render the

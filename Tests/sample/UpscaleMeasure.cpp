@@ -43,14 +43,12 @@ struct Result {
 
 Result Measure(Options o, const ImageF& ref) {
   Sample s;
-  std::string err;
-  EXPECT_EQ(s.Init(o, &err), 0) << err;
+  if (!testkit::Start(s, o)) return {};
   const Image img = testkit::RenderAndCapture(s, kFrames);
   std::vector<double> ms;
   for (const FrameRecord& r : s.Frames())
     if (r.frame >= 8 && r.gpuFrameNew) ms.push_back(r.gpuFrame);
-  EXPECT_EQ(s.ValidationMessages(), 0u);
-  s.Shutdown();
+  testkit::Finish(s);
   std::sort(ms.begin(), ms.end());
   return {CompareImages(ToF(img), ref).psnr, ms.empty() ? 0.0 : ms[ms.size() / 2]};
 }
@@ -62,11 +60,9 @@ TEST(UpscaleMeasure, ArenaCinematic) {
   ro.height = kH * 4;
   ro.dynamicResolution = false;
   ro.filter = Filter::Point;
-  Sample rs;
-  std::string err;
-  ASSERT_EQ(rs.Init(ro, &err), 0) << err;
-  const ImageF ref = Downsample(ToF(testkit::RenderAndCapture(rs, 2)), 4);
-  rs.Shutdown();
+  const Image refImage = testkit::RenderFresh(ro, 2).image;
+  ASSERT_FALSE(refImage.pixels.empty());
+  const ImageF ref = Downsample(ToF(refImage), 4);
   struct Config {
     const char* name;
     Filter filter;

@@ -244,12 +244,7 @@ TEST_P(UpscaleTaauCut, CameraCutEqualsAResetFrame) {
 
   Options fresh = o;
   fresh.camera = 2;
-  Sample other;
-  std::string err;
-  ASSERT_EQ(other.Init(fresh, &err), 0) << err;
-  const Image reset = RenderAndCapture(other, 1);
-  EXPECT_EQ(other.ValidationMessages(), 0u);
-  other.Shutdown();
+  const Image reset = testkit::RenderFresh(fresh, 1).image;
   const testkit::Diff d = testkit::Compare(afterCut, reset);
   EXPECT_EQ(d.maxAbs, 0) << d.differing << " pixels differ";
 }
@@ -304,12 +299,10 @@ namespace {
 // validation-clean.
 Image FirstSceneColour(const Options& o) {
   Sample s;
-  std::string err;
-  EXPECT_EQ(s.Init(o, &err), 0) << err;
+  if (!testkit::Start(s, o)) return {};
   testkit::RenderAndCapture(s, 1);
   Image img = s.CapturedSceneColor();
-  EXPECT_EQ(s.ValidationMessages(), 0u);
-  s.Shutdown();
+  testkit::Finish(s);
   return img;
 }
 
@@ -364,20 +357,14 @@ double Detail(const ImageF& img) {
 TEST(UpscaleEdgeAdaptive, RunsBothPassesSharperThanBilinear) {
   const ImageF ref = Reference(1);
   Options o = Base(Filter::UpscaleEdgeAdaptive, 0.5f);
-  Sample s;
-  std::string err;
-  ASSERT_EQ(s.Init(o, &err), 0) << err;
-  const Image img = testkit::RenderAndCapture(s, 2);
-  EXPECT_EQ(s.ValidationMessages(), 0u);
-  EXPECT_EQ(s.PassesRun().count("UpscaleEdgeAdaptive"), 1u);
-  EXPECT_EQ(s.PassesRun().count("Sharpen"), 1u);
-  s.Shutdown();
+  const testkit::FreshRun run = testkit::RenderFresh(o, 2);
+  ASSERT_FALSE(run.image.pixels.empty());
+  const Image& img = run.image;
+  EXPECT_EQ(run.passes.count("UpscaleEdgeAdaptive"), 1u);
+  EXPECT_EQ(run.passes.count("Sharpen"), 1u);
   const double edge = CompareImages(ToF(img), ref).psnr;
   const double nearest = Psnr(Base(Filter::UpscaleNearest, 0.5f), 2, ref);
-  Sample b;
-  ASSERT_EQ(b.Init(Base(Filter::UpscaleBilinear, 0.5f), &err), 0) << err;
-  const ImageF bilinear = ToF(testkit::RenderAndCapture(b, 2));
-  b.Shutdown();
+  const ImageF bilinear = ToF(testkit::RenderFresh(Base(Filter::UpscaleBilinear, 0.5f), 2).image);
   std::printf("[edge-adaptive] scale 0.5: %.2f dB (nearest %.2f dB, bilinear %.2f dB); detail %.4f, bilinear %.4f\n",
               edge, nearest, CompareImages(bilinear, ref).psnr, Detail(ToF(img)), Detail(bilinear));
   EXPECT_GT(edge, nearest);
