@@ -12,9 +12,8 @@ set -euo pipefail
 [[ $# -ge 3 ]] || { sed -n '2,10p' "$0" >&2; exit 2; }
 before=$1 after=$2 out=$3 runs=${4:-4}
 scene=${5:-build/Media/ArenaProps/scene_description.txt}
-[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "compare-recording.sh: RUNS must be a positive integer, got '$runs'" >&2; exit 2; }
-for b in "$before" "$after"; do [[ -x "$b" ]] || { echo "compare-recording.sh: $b is not an executable" >&2; exit 2; }; done
-[[ -f "$scene" ]] || { echo "compare-recording.sh: no scene description $scene" >&2; exit 2; }
+source "$(dirname "$0")/recording-args.sh"
+check_recording_args compare-recording.sh "$runs" "$scene" "$before" "$after"
 mkdir -p "$out"
 { date -u; uptime; } > "$out/load.txt"
 for r in $(seq 1 "$runs"); do

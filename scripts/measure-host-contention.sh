@@ -12,9 +12,8 @@ set -euo pipefail
 [[ $# -ge 2 ]] || { sed -n '2,10p' "$0" >&2; exit 2; }
 bench=$1 out=$2 runs=${3:-8}
 scene=${4:-build/Media/ArenaProps/scene_description.txt}
-[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "measure-host-contention.sh: RUNS must be a positive integer, got '$runs'" >&2; exit 2; }
-[[ -x "$bench" ]] || { echo "measure-host-contention.sh: $bench is not an executable" >&2; exit 2; }
-[[ -f "$scene" ]] || { echo "measure-host-contention.sh: no scene description $scene" >&2; exit 2; }
+source "$(dirname "$0")/recording-args.sh"
+check_recording_args measure-host-contention.sh "$runs" "$scene" "$bench"
 [[ $(nproc) -ge 2 ]] || { echo "measure-host-contention.sh: needs 2 CPUs, this machine has $(nproc)" >&2; exit 2; }
 command -v taskset > /dev/null || { echo "measure-host-contention.sh: needs taskset (util-linux)" >&2; exit 2; }
 mkdir -p "$out"

@@ -4,10 +4,15 @@
 // every rendering fixture fails it with this text.
 #pragma once
 
+// The text itself comes from Tests/common/CMakeLists.txt, which the
+// layer-guard ctests match against a test's output.
+#ifndef DRR_VALIDATION_LAYER_MISSING
+#error "DRR_VALIDATION_LAYER_MISSING is defined by the drr_test_headers target"
+#endif
+
 namespace drrtest {
 
 inline constexpr char kValidationLayerMissing[] =
-    "D3DL_VALIDATION asks for validation, but VK_LAYER_KHRONOS_validation is not installed "
-    "(Debian package vulkan-validationlayers)";
+    DRR_VALIDATION_LAYER_MISSING " (Debian package vulkan-validationlayers)";
 
 }  // namespace drrtest

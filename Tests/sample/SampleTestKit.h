@@ -11,6 +11,8 @@
 #include <cstdlib>
 #include <map>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include "DynamicResolutionRendering.h"
 #include "ValidationInForce.h"
@@ -64,19 +66,28 @@ inline Image RenderAndCapture(Sample& s, int n) {
   return s.CapturedBackBuffer();
 }
 
-// A sample of its own for one run: n frames, then its back buffer and the
-// passes it ran; validation in force where it was asked for, and no message.
-// A failed Init fails the test and returns an empty image.
+// A sample of its own for one run: Start, n frames with the last captured,
+// then `readBack(sample, backBuffer)` while the sample still lives (for what a
+// test needs besides the back buffer: other targets, stats, frame records),
+// then Finish. Returns what readBack returns; a failed start fails the test
+// and returns a value-initialised result (empty images).
+template <class ReadBack>
+auto RunFresh(const Options& o, int n, ReadBack&& readBack) {
+  using Result = std::invoke_result_t<ReadBack&, Sample&, Image&&>;
+  Sample s;
+  if (!Start(s, o)) return Result{};
+  Result result = readBack(s, RenderAndCapture(s, n));
+  Finish(s);
+  return result;
+}
+
+// The common case: the last back buffer and the passes the run ran.
 struct FreshRun {
   Image image;
   std::map<std::string, uint64_t> passes;
 };
 inline FreshRun RenderFresh(const Options& o, int n) {
-  Sample s;
-  if (!Start(s, o)) return {};
-  FreshRun run{RenderAndCapture(s, n), s.PassesRun()};
-  Finish(s);
-  return run;
+  return RunFresh(o, n, [](Sample& s, Image&& backBuffer) { return FreshRun{std::move(backBuffer), s.PassesRun()}; });
 }
 
 // Largest RGB difference, pixels that differ and the mean of the per-pixel

@@ -35,14 +35,9 @@ struct Frame {
 };
 
 Frame RenderArena(const Options& o) {
-  Sample s;
-  if (!Start(s, o)) return {};
-  Frame f;
-  f.colour = RenderAndCapture(s, 3);
-  f.velocity = s.CapturedVelocity();
-  f.stats = s.GetScene()->Stats();
-  Finish(s);
-  return f;
+  return RunFresh(o, 3, [](Sample& s, Image&& colour) {
+    return Frame{std::move(colour), s.CapturedVelocity(), s.GetScene()->Stats()};
+  });
 }
 
 bool SamePixels(const Image& a, const Image& b) {

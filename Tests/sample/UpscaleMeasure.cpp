@@ -41,16 +41,14 @@ struct Result {
   double psnr = 0, gpuMs = 0;
 };
 
-Result Measure(Options o, const ImageF& ref) {
-  Sample s;
-  if (!testkit::Start(s, o)) return {};
-  const Image img = testkit::RenderAndCapture(s, kFrames);
-  std::vector<double> ms;
-  for (const FrameRecord& r : s.Frames())
-    if (r.frame >= 8 && r.gpuFrameNew) ms.push_back(r.gpuFrame);
-  testkit::Finish(s);
-  std::sort(ms.begin(), ms.end());
-  return {CompareImages(ToF(img), ref).psnr, ms.empty() ? 0.0 : ms[ms.size() / 2]};
+Result Measure(const Options& o, const ImageF& ref) {
+  return testkit::RunFresh(o, kFrames, [&ref](Sample& s, Image&& img) {
+    std::vector<double> ms;
+    for (const FrameRecord& r : s.Frames())
+      if (r.frame >= 8 && r.gpuFrameNew) ms.push_back(r.gpuFrame);
+    std::sort(ms.begin(), ms.end());
+    return Result{CompareImages(ToF(img), ref).psnr, ms.empty() ? 0.0 : ms[ms.size() / 2]};
+  });
 }
 
 TEST(UpscaleMeasure, ArenaCinematic) {

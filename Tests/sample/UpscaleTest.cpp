@@ -298,12 +298,7 @@ namespace {
 // The scene colour of the first frame (for TAAU: jitter 0 of its sequence),
 // validation-clean.
 Image FirstSceneColour(const Options& o) {
-  Sample s;
-  if (!testkit::Start(s, o)) return {};
-  testkit::RenderAndCapture(s, 1);
-  Image img = s.CapturedSceneColor();
-  testkit::Finish(s);
-  return img;
+  return testkit::RunFresh(o, 1, [](Sample& s, Image&&) { return s.CapturedSceneColor(); });
 }
 
 // TAAU's first scene colour with the automatic mip bias on or off.
