@@ -2,9 +2,11 @@
 # Builds a self-contained bundle of the sample for a Linux x86-64 machine that
 # has a Vulkan driver but none of the project's Debian packages (for example a
 # bare GPU server): the binaries, their non-system shared libraries (Debian's),
-# the compiled shaders, the Arenas (default and many-object; large as a
-# .tar.xz), the benches, the RHI, scene and sample render test suites with
-# their shaders, and run.sh: what scripts/device-checks.sh runs.
+# the compiled shaders, the Arenas (default, many-object and large), the
+# benches, the RHI, scene and sample render test suites with their shaders,
+# and run.sh: what scripts/device-checks.sh runs. All but run.sh, unpack.sh
+# and the validation layer travel packed (payload.tar.xz; the large Arena in
+# a .tar.xz of its own) and are expanded on the target on first use.
 #
 #   scripts/make-bundle.sh [OUT_DIR] [--with-validation] [--from-build DIR]
 #
@@ -66,11 +68,14 @@ done | sort -u | while read -r lib; do
   name="$(basename "$lib")"
   [[ "$name" =~ $system ]] || cp -L "$lib" "$out/lib/$name"
 done
-# The test suites travel compressed (a carried bundle must stay small);
-# run.sh unpacks one on first use.
-for suite in "${suites[@]}"; do xz -6 -T0 "$out/bin/${suite##*/}"; done
 # The RHI suite reads copies of a few sources beside itself.
 cp -r "$build/Tests/rhi/rhi-test-sources" "$out/bin/"
+# The programs, libraries, shaders and the two small Arenas travel as one
+# .tar.xz (a fifth of their size: a bundle carried to a GPU machine must stay
+# small), which unpack.sh expands beside itself on first use.
+payload=(bin lib shaders test-shaders bench-shaders Media/Arena Media/ArenaProps)
+tar -C "$out" -cf - "${payload[@]}" | xz -9 -T0 >"$out/payload.tar.xz"
+(cd "$out" && rm -rf "${payload[@]}")
 if ((validation)); then
   # The layer is large (22 MB); it travels compressed and run.sh unpacks it.
   mkdir -p "$out/layers"
@@ -79,12 +84,27 @@ if ((validation)); then
     /usr/share/vulkan/explicit_layer.d/VkLayer_khronos_validation.json >"$out/layers/VkLayer_khronos_validation.json"
 fi
 
+cat >"$out/unpack.sh" <<'UNPACK'
+#!/usr/bin/env bash
+# Expands payload.tar.xz beside this script once; later calls return at once.
+# Calls that overlap wait for the first (flock, where the machine has it).
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+[ -f "$here/.unpacked" ] && exit 0
+exec 9>"$here/.unpack.lock"
+if command -v flock >/dev/null; then flock 9; fi
+[ -f "$here/.unpacked" ] && exit 0
+tar -C "$here" -xJf "$here/payload.tar.xz" || { echo "bundle: cannot unpack $here/payload.tar.xz" >&2; exit 1; }
+touch "$here/.unpacked"
+UNPACK
+chmod +x "$out/unpack.sh"
+
 cat >"$out/run.sh" <<'RUN'
 #!/usr/bin/env bash
 # Runs the bundled sample (arguments as for DynamicResolutionRendering --help),
 # or DRR_BIN (a bench or a test suite of bin/). DRR_ARENA=large uses the
 # large Arena (unpacked on first use).
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+"$here/unpack.sh" || exit 1
 export LD_LIBRARY_PATH="$here/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 if [ -d "$here/layers" ]; then
   [ -f "$here/layers/libVkLayer_khronos_validation.so" ] ||
@@ -100,9 +120,17 @@ else
   export DRR_MEDIA_DIR="$here/Media"
 fi
 export DRR_BENCH_SHADER_DIR="$here/bench-shaders"
-bin="$here/bin/${DRR_BIN:-DynamicResolutionRendering}"
-[ -e "$bin" ] || [ ! -f "$bin.xz" ] || { xz -dc "$bin.xz" >"$bin" && chmod +x "$bin"; }
-exec "$bin" "$@"
+exec "$here/bin/${DRR_BIN:-DynamicResolutionRendering}" "$@"
 RUN
 chmod +x "$out/run.sh"
-du -sh "$out"
+
+# A run on a GPU machine carries the repository's tracked files and the bundle
+# together, at most 64 MiB: say so here rather than there.
+bundle_bytes=$(du -sb "$out" | cut -f1)
+tree_bytes=$(git -C "$root" ls-files -z | (cd "$root" && xargs -0 du -cb 2>/dev/null) | awk 'END {print $1}')
+mib() { awk -v b="$1" 'BEGIN {printf "%.1f MiB", b / 1048576}'; }
+echo "bundle $(mib "$bundle_bytes"), with the tracked files $(mib $((bundle_bytes + tree_bytes)))"
+if ((bundle_bytes + tree_bytes > 64 * 1048576)); then
+  echo "make-bundle: the bundle and the tracked files exceed the 64 MiB a GPU machine's run carries" >&2
+  ((from_build)) || exit 1  # a --from-build bundle checks the layout only
+fi
