@@ -33,6 +33,8 @@
 # ICD file written for it (as Docs/results/h100-controller/run.sh does).
 #
 # Here, once: scripts/make-bundle.sh .devcarry/bundle --with-validation
+# (the bundle unpacks in place when it runs: check this script here on a copy
+# of it, or make it again before carrying it)
 # On the GPU machine, from the repository root, with .devcarry/bundle carried:
 #   OUT=/some/dir scripts/device-checks.sh [BUNDLE] [--small]
 # --small: 320x180 and 640x360, fewer frames (a check of the script itself on

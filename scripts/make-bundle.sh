@@ -4,9 +4,10 @@
 # bare GPU server): the binaries, their non-system shared libraries (Debian's),
 # the compiled shaders, the Arenas (default, many-object and large), the
 # benches, the RHI, scene and sample render test suites with their shaders,
-# and run.sh: what scripts/device-checks.sh runs. All but run.sh, unpack.sh
-# and the validation layer travel packed (payload.tar.xz; the large Arena in
-# a .tar.xz of its own) and are expanded on the target on first use.
+# and run.sh: what scripts/device-checks.sh runs. All but run.sh and
+# unpack.sh travel packed (payload.tar.xz; the large Arena and the validation
+# layer each in an .xz of their own) and are expanded on first use, in place:
+# a bundle that has run here is no longer small, so try one out on a copy.
 #
 #   scripts/make-bundle.sh [OUT_DIR] [--with-validation] [--from-build DIR]
 #
