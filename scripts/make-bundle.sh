@@ -128,7 +128,7 @@ chmod +x "$out/run.sh"
 # A run on a GPU machine carries the repository's tracked files and the bundle
 # together, at most 64 MiB: say so here rather than there.
 bundle_bytes=$(du -sb "$out" | cut -f1)
-tree_bytes=$(git -C "$root" ls-files -z | (cd "$root" && xargs -0 du -cb 2>/dev/null) | awk 'END {print $1}')
+tree_bytes=$(cd "$root" && git ls-files -z | xargs -0 stat -c %s | awk '{n += $1} END {print n + 0}')
 mib() { awk -v b="$1" 'BEGIN {printf "%.1f MiB", b / 1048576}'; }
 echo "bundle $(mib "$bundle_bytes"), with the tracked files $(mib $((bundle_bytes + tree_bytes)))"
 if ((bundle_bytes + tree_bytes > 64 * 1048576)); then
