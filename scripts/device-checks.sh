@@ -104,7 +104,7 @@ arena_path() {
     default) echo "$bundle/Media/Arena/scene_description.txt" ;;
     props) echo "$bundle/Media/ArenaProps/scene_description.txt" ;;
     large)
-      [ -d "$bundle/Media/ArenaLarge" ] || tar -C "$bundle/Media" -xJf "$bundle/Media/ArenaLarge.tar.xz"
+      "$bundle/unpack.sh" large >&2
       echo "$bundle/Media/ArenaLarge/scene_description.txt" ;;
   esac
 }

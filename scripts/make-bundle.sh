@@ -78,7 +78,7 @@ payload=(bin lib shaders test-shaders bench-shaders Media/Arena Media/ArenaProps
 tar -C "$out" -cf - "${payload[@]}" | xz -9 -T0 >"$out/payload.tar.xz"
 (cd "$out" && rm -rf "${payload[@]}")
 if ((validation)); then
-  # The layer is large (22 MB); it travels compressed and run.sh unpacks it.
+  # The layer is large (22 MB); it travels compressed and unpack.sh expands it.
   mkdir -p "$out/layers"
   xz -9 -c /usr/lib/x86_64-linux-gnu/libVkLayer_khronos_validation.so >"$out/layers/libVkLayer_khronos_validation.so.xz"
   sed 's|"library_path": *"[^"]*"|"library_path": "./libVkLayer_khronos_validation.so"|' \
@@ -87,15 +87,29 @@ fi
 
 cat >"$out/unpack.sh" <<'UNPACK'
 #!/usr/bin/env bash
-# Expands payload.tar.xz beside this script once; later calls return at once.
-# Calls that overlap wait for the first (flock, where the machine has it).
+# Expands what the bundle carries packed, once each, beside this script:
+# payload.tar.xz and the validation layer always, the large Arena when called
+# as `unpack.sh large`. A part is marked done only once it is whole; calls
+# that overlap wait for the first (flock, where the machine has it).
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-[ -f "$here/.unpacked" ] && exit 0
+large=0
+[ "${1:-}" = large ] && large=1
+done_all() { [ -f "$here/.unpacked" ] && { ((!large)) || [ -f "$here/Media/.large-unpacked" ]; }; }
+done_all && exit 0
 exec 9>"$here/.unpack.lock"
 if command -v flock >/dev/null; then flock 9; fi
-[ -f "$here/.unpacked" ] && exit 0
-tar -C "$here" -xJf "$here/payload.tar.xz" || { echo "bundle: cannot unpack $here/payload.tar.xz" >&2; exit 1; }
-touch "$here/.unpacked"
+fail() { echo "bundle: cannot unpack $1" >&2; exit 1; }
+if [ ! -f "$here/.unpacked" ]; then
+  tar -C "$here" -xJf "$here/payload.tar.xz" || fail "$here/payload.tar.xz"
+  layer="$here/layers/libVkLayer_khronos_validation.so"
+  if [ -f "$layer.xz" ]; then xz -dc "$layer.xz" >"$layer" || fail "$layer.xz"; fi
+  touch "$here/.unpacked"
+fi
+if ((large)) && [ ! -f "$here/Media/.large-unpacked" ]; then
+  tar -C "$here/Media" -xJf "$here/Media/ArenaLarge.tar.xz" || fail "$here/Media/ArenaLarge.tar.xz"
+  mkdir -p "$here/Media/large" && ln -sfn ../ArenaLarge "$here/Media/large/Arena" || fail "the large Arena's link"
+  touch "$here/Media/.large-unpacked"
+fi
 UNPACK
 chmod +x "$out/unpack.sh"
 
@@ -105,17 +119,11 @@ cat >"$out/run.sh" <<'RUN'
 # or DRR_BIN (a bench or a test suite of bin/). DRR_ARENA=large uses the
 # large Arena (unpacked on first use).
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-"$here/unpack.sh" || exit 1
+if [ "${DRR_ARENA:-small}" = large ]; then "$here/unpack.sh" large; else "$here/unpack.sh"; fi || exit 1
 export LD_LIBRARY_PATH="$here/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
-if [ -d "$here/layers" ]; then
-  [ -f "$here/layers/libVkLayer_khronos_validation.so" ] ||
-    xz -dc "$here/layers/libVkLayer_khronos_validation.so.xz" >"$here/layers/libVkLayer_khronos_validation.so"
-  export VK_LAYER_PATH="$here/layers"
-fi
+[ -d "$here/layers" ] && export VK_LAYER_PATH="$here/layers"
 export DRR_SHADER_DIR="$here/shaders"
 if [ "${DRR_ARENA:-small}" = large ]; then
-  [ -d "$here/Media/ArenaLarge" ] || tar -C "$here/Media" -xJf "$here/Media/ArenaLarge.tar.xz"
-  [ -e "$here/Media/large/Arena" ] || { mkdir -p "$here/Media/large" && ln -s ../ArenaLarge "$here/Media/large/Arena"; }
   export DRR_MEDIA_DIR="$here/Media/large"
 else
   export DRR_MEDIA_DIR="$here/Media"
