@@ -191,9 +191,11 @@ bool ContextImpl::BindPipeline(VkCommandBuffer cmd) {
   PipelineKey& k = nextKey_;
   for (ShaderStage s : kGraphicsStages) k.shaders.ids[StageIndex(s)] = in.shaders[s] ? in.shaders[s]->cacheId : 0;
   k.il = in.il ? in.il->uid() : 0;
-  k.blend = in.blend->uid();
-  k.depth = in.depth->uid();
-  k.raster = in.raster->uid();
+  // 0 stands for the context's own default state object: every context's
+  // has the default description, so all contexts share those pipelines.
+  k.blend = om.blend ? in.blend->uid() : 0;
+  k.depth = om.depthStencil ? in.depth->uid() : 0;
+  k.raster = state_.rs.state ? in.raster->uid() : 0;
   k.topologyClass = TopologyClass(state_.ia.topology);
   k.patchControlPoints = PatchControlPoints(state_.ia.topology);
   k.numRT = om.numRenderTargets;

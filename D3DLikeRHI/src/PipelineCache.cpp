@@ -248,6 +248,7 @@ struct FixedFunction {
 
 VkPipeline PipelineCache::GetPipeline(const PipelineKey& key, const PipelineInputs& in, ProgramLayout* prog) {
   std::lock_guard<std::mutex> lock(mutex_);
+  ++dev_->stats.PipelineCacheLookups;
   auto it = pipelines_.find(key);
   if (it != pipelines_.end()) return it->second;
   VkPipelineShaderStageCreateInfo stages[kGraphicsStageCount]{};
@@ -334,19 +335,19 @@ void PipelineCache::Destroy() {
 
 ProgramLayout* PipelineCacheFront::GetProgram(PipelineCache& cache, const PerStage<ShaderBase*>& shaders) {
   const ShaderIds key = IdsOf(shaders);
-  auto& e = programs_.At(WordHash{}(key));
-  if (e.value && e.key == key) return e.value;
+  const size_t hash = WordHash{}(key);
+  if (ProgramLayout* hit = programs_.Find(hash, key)) return hit;
   ProgramLayout* p = cache.GetProgram(shaders);
-  if (p) e = {key, p};
+  if (p) programs_.Insert(hash, key, p);
   return p;
 }
 
 VkPipeline PipelineCacheFront::GetPipeline(PipelineCache& cache, const PipelineKey& key, const PipelineInputs& in,
                                            ProgramLayout* prog) {
-  auto& e = pipelines_.At(WordHash{}(key));
-  if (e.value && e.key == key) return e.value;
+  const size_t hash = WordHash{}(key);
+  if (VkPipeline hit = pipelines_.Find(hash, key)) return hit;
   VkPipeline p = cache.GetPipeline(key, in, prog);
-  if (p) e = {key, p};
+  if (p) pipelines_.Insert(hash, key, p);
   return p;
 }
 

@@ -58,7 +58,7 @@ struct ShaderIds {
 
 struct PipelineKey {
   ShaderIds shaders;
-  uint64_t il, blend, depth, raster;
+  uint64_t il, blend, depth, raster;  // uids; 0: none (il) or the context's default state object
   uint32_t topologyClass, numRT;
   VkFormat rt[SIMULTANEOUS_RENDER_TARGET_COUNT];
   VkFormat ds;
@@ -120,27 +120,45 @@ class PipelineCache {
 // mutex on every lookup; with two recording threads that mutex's cache line
 // moves between the cores at each draw that changes its program or pipeline
 // (Docs/Threads.md measures it). A context asks its own memo first: a
-// direct-mapped table it alone reads and writes, filled from the shared cache
-// on a miss. It can never return a destroyed object: every key is made of
-// object uids, which are never reused, and the shared cache destroys a
-// pipeline or layout only with a shader whose uid is then in no live key.
+// two-way set-associative table it alone reads and writes, filled from the
+// shared cache on a miss. Two ways, because with one a pair of keys that
+// share a slot and alternate draw by draw (two materials scattered over a
+// scene) missed at every change and took the mutex each time. It can never
+// return a destroyed object: every key is made of object uids, which are
+// never reused (or of 0 for a default state, whose description never
+// changes), and the shared cache destroys a pipeline or layout only with a
+// shader whose uid is then in no live key.
 class PipelineCacheFront {
  public:
   ProgramLayout* GetProgram(PipelineCache& cache, const PerStage<ShaderBase*>& shaders);
   VkPipeline GetPipeline(PipelineCache& cache, const PipelineKey& key, const PipelineInputs& in, ProgramLayout* prog);
 
  private:
-  template <class Key, class Value, size_t N>
-  struct DirectMapped {
+  template <class Key, class Value, size_t Sets>
+  struct TwoWay {
     struct Entry {
       Key key{};
-      Value value{};
+      Value value{};  // null: an empty entry
     };
-    Entry entries[N];  // a null value marks an empty entry
-    Entry& At(size_t hash) { return entries[hash % N]; }
+    struct Set {
+      Entry ways[2];
+      uint8_t victim = 0;  // the way the next miss replaces (round robin)
+    };
+    Set sets[Sets];
+    // The entry holding key, or null.
+    Value Find(size_t hash, const Key& key) const {
+      for (const Entry& e : sets[hash % Sets].ways)
+        if (e.value && e.key == key) return e.value;
+      return Value{};
+    }
+    void Insert(size_t hash, const Key& key, Value value) {
+      Set& s = sets[hash % Sets];
+      s.ways[s.victim] = {key, value};
+      s.victim ^= 1;
+    }
   };
-  DirectMapped<ShaderIds, ProgramLayout*, 32> programs_;
-  DirectMapped<PipelineKey, VkPipeline, 64> pipelines_;
+  TwoWay<ShaderIds, ProgramLayout*, 16> programs_;
+  TwoWay<PipelineKey, VkPipeline, 32> pipelines_;
 };
 
 }  // namespace d3dl::impl

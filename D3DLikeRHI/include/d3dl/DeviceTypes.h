@@ -123,6 +123,9 @@ struct DEVICE_STATS {
   ValidationMode Validation = ValidationMode::Off;
   UINT64 ValidationMessages = 0;  // since device creation
   UINT64 PipelinesCreated = 0;
+  // Graphics pipeline lookups that a context's own memo could not answer, so
+  // that they took the shared cache's lock (each graphics pipeline created is one of them).
+  UINT64 PipelineCacheLookups = 0;
   UINT64 DescriptorSetsAllocated = 0;
   UINT64 DrawCalls = 0;
   UINT64 RingBytesAllocated = 0;
